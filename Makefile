@@ -1,0 +1,74 @@
+# slipwave build. `make run` and `make test` install missing Debian packages first
+# (scripts/install-deps.sh), then re-enter make so pkg-config sees the installed PETSc.
+BUILD    ?= build
+CXX      := mpicxx
+PETSC_CFLAGS := $(shell pkg-config --cflags PETSc 2>/dev/null) $(shell pkg-config --cflags hdf5-openmpi 2>/dev/null)
+PETSC_LIBS   := $(shell pkg-config --libs PETSc 2>/dev/null) -lmetis
+PETSC_RPATH  := $(patsubst -L%,-Wl$(comma)-rpath$(comma)%,$(filter -L%,$(shell pkg-config --libs PETSc 2>/dev/null)))
+comma := ,
+OPT      ?= -O3 -march=native
+WARN     := -Wall -Wextra -Wno-unused-parameter
+CXXFLAGS := -std=c++17 $(OPT) -g $(WARN) -Iinclude $(PETSC_CFLAGS) -MMD -MP
+LDLIBS   := $(PETSC_LIBS) $(PETSC_RPATH) -lm
+
+LIB_SRC  := $(shell find src -name '*.cpp' -not -path 'src/bin/*' 2>/dev/null | sort)
+LIB_OBJ  := $(LIB_SRC:%.cpp=$(BUILD)/%.o)
+BIN_SRC  := $(wildcard src/bin/*.cpp)
+BINS     := $(BIN_SRC:src/bin/%.cpp=$(BUILD)/%)
+UNIT_SRC := $(wildcard tests/unit/test_*.cpp)
+UNITS    := $(UNIT_SRC:%.cpp=$(BUILD)/%)
+BENCH_SRC:= $(wildcard bench/bench_*.cpp)
+BENCHES  := $(BENCH_SRC:%.cpp=$(BUILD)/%)
+LIB      := $(BUILD)/libslipwave.a
+
+.PHONY: all deps run test bench clean build-only test-only run-only bench-only
+all: deps
+	@$(MAKE) --no-print-directory build-only
+
+deps:
+	@bash scripts/install-deps.sh
+
+build-only: $(BINS) $(UNITS) $(BENCHES)
+
+run: deps
+	@$(MAKE) --no-print-directory run-only
+
+run-only: build-only
+	mpiexec $(MPIEXEC_FLAGS) -n $(NP) $(BUILD)/slipwave -options_file config/scenes/default.yaml -output_dir $(BUILD)/run/default
+
+test: deps
+	@$(MAKE) --no-print-directory test-only
+
+test-only: build-only
+	@bash tests/run_tests.sh
+
+bench: deps
+	@$(MAKE) --no-print-directory bench-only
+
+bench-only: build-only
+	@bash bench/run_bench.sh
+
+clean:
+	rm -rf $(BUILD)
+
+NP ?= 2
+MPIEXEC_FLAGS ?= --oversubscribe $(if $(filter 0,$(shell id -u)),--allow-run-as-root,)
+
+$(LIB): $(LIB_OBJ)
+	@mkdir -p $(@D)
+	ar rcs $@ $^
+
+$(BUILD)/%.o: %.cpp
+	@mkdir -p $(@D)
+	$(CXX) $(CXXFLAGS) -c $< -o $@
+
+$(BUILD)/%: $(BUILD)/src/bin/%.o $(LIB)
+	$(CXX) $(CXXFLAGS) $< $(LIB) $(LDLIBS) -o $@
+
+$(BUILD)/tests/unit/%: $(BUILD)/tests/unit/%.o $(LIB)
+	$(CXX) $(CXXFLAGS) $< $(LIB) $(LDLIBS) -o $@
+
+$(BUILD)/bench/%: $(BUILD)/bench/%.o $(LIB)
+	$(CXX) $(CXXFLAGS) $< $(LIB) $(LDLIBS) -o $@
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
