@@ -1,0 +1,21 @@
+#include "slipwave/physics/stable_time_step.hpp"
+
+#include <cmath>
+
+namespace slipwave::physics {
+
+// Belytschko, Liu & Moran, Nonlinear Finite Elements for Continua and Structures (2000),
+// §6.3. One mode u'' + 2 xi w u' + w^2 u = 0 with xi = beta w / 2 (the modal ratio of
+// c = beta k), stepped by
+//   v_{n+1/2} = v_{n-1/2} + h (-w^2 u_n - 2 xi w v_{n-1/2}),  u_{n+1} = u_n + h v_{n+1/2}.
+// Eliminating v gives u_{n+1} + (W^2 + 2 xi W - 2) u_n + (1 - 2 xi W) u_{n-1} = 0 with
+// W = w h. Both roots of z^2 + a1 z + a0 lie in the unit disc iff |a0| <= 1,
+// 1 + a1 + a0 >= 0 and 1 - a1 + a0 >= 0 (Jury). The first two hold; the third is
+// 4 - 4 xi W - W^2 >= 0, i.e. W <= 2 (sqrt(1 + xi^2) - xi).
+double centralDifferenceStableStep(double omega_max, double beta_stiffness_damping) {
+  const double xi = 0.5 * beta_stiffness_damping * omega_max;
+  // Rewritten as 2 / (omega (sqrt(1 + xi^2) + xi)) so large xi does not cancel.
+  return 2.0 / (omega_max * (std::sqrt(1 + xi * xi) + xi));
+}
+
+} // namespace slipwave::physics

@@ -1,0 +1,62 @@
+// Critical step: closed-form values, and the explicit recurrence itself run just below and
+// just above the bound on a single-DOF oscillator.
+#include "slipwave/physics/stable_time_step.hpp"
+
+#include "unit_check.hpp"
+
+#include <cmath>
+#include <string>
+
+using namespace slipwave::physics;
+
+namespace {
+
+// The scheme the bound is derived for (lagged half-step velocity in the damping term),
+// started from u = 1 at rest. Returns max |u| over the first and over the last 1000 of
+// n steps.
+struct Envelope {
+  double early, late;
+};
+Envelope run(double omega, double beta, double h, int n) {
+  double u = 1, v = 0;
+  Envelope e{0, 0};
+  for (int k = 0; k < n; ++k) {
+    v += h * (-omega * omega * u - beta * omega * omega * v);
+    u += h * v;
+    if (!(std::fabs(u) < 1e100)) {  // diverged: stop before overflow turns u into NaN
+      e.late = HUGE_VAL;
+      return e;
+    }
+    if (k < 1000) e.early = std::fmax(e.early, std::fabs(u));
+    if (k >= n - 1000) e.late = std::fmax(e.late, std::fabs(u));
+  }
+  return e;
+}
+
+} // namespace
+
+int main() {
+  const double omega = 2 * M_PI * 50;
+  unit::near(centralDifferenceStableStep(omega, 0), 2 / omega, 1e-15, 0, "undamped: 2/omega");
+  // xi = beta omega / 2 = 0.75: (2/omega)(sqrt(1.5625) - 0.75) = (2/omega) * 0.5.
+  const double beta_075 = 1.5 / omega;
+  unit::near(centralDifferenceStableStep(omega, beta_075), 1 / omega, 1e-15, 0, "xi = 0.75: 1/omega");
+
+  // Undamped, the scheme conserves u_n^2 + u_{n-1}^2 - (2 - W^2) u_n u_{n-1} = W^2 (from
+  // u_0 = u_{-1} = 1), W = omega h; so |u| <= 2 / sqrt(4 - W^2) = 7.09 at W = 1.98.
+  const double undamped_bound = 2 / std::sqrt(4 - 1.98 * 1.98);
+  for (double xi : {0.0, 0.05, 0.3, 2.0}) {
+    const double beta = 2 * xi / omega, dt = centralDifferenceStableStep(omega, beta);
+    const std::string tag = "xi = " + std::to_string(xi).substr(0, 4);
+    const Envelope below = run(omega, beta, 0.99 * dt, 10000), above = run(omega, beta, 1.01 * dt, 10000);
+    // Stable: undamped within the invariant's bound; damped, the late envelope does not
+    // exceed the early one.
+    const double allowed = xi == 0 ? undamped_bound * (1 + 1e-9) : below.early * (1 + 1e-12);
+    unit::check(below.late <= allowed, tag + ": bounded at 0.99 x bound (late max |u| = " +
+                                           std::to_string(below.late) + ", allowed " + std::to_string(allowed) + ")");
+    // Unstable: a root beyond -1 grows geometrically; x1e3 over 9000 steps is a low bar.
+    unit::check(above.late > 1e3 * above.early,
+                tag + ": grows at 1.01 x bound (late/early max |u| = " + std::to_string(above.late / above.early) + ")");
+  }
+  return unit::failures();
+}
