@@ -1,11 +1,11 @@
 # slipwave build. `make run` and `make test` install missing Debian packages first
 # (scripts/install-deps.sh), then re-enter make so pkg-config sees the installed PETSc.
 BUILD    ?= build
+comma    := ,
 CXX      := mpicxx
 PETSC_CFLAGS := $(shell pkg-config --cflags PETSc 2>/dev/null) $(shell pkg-config --cflags hdf5-openmpi 2>/dev/null)
 PETSC_LIBS   := $(shell pkg-config --libs PETSc 2>/dev/null) -lmetis
 PETSC_RPATH  := $(patsubst -L%,-Wl$(comma)-rpath$(comma)%,$(filter -L%,$(shell pkg-config --libs PETSc 2>/dev/null)))
-comma := ,
 OPT      ?= -O3 -march=native
 WARN     := -Wall -Wextra -Wno-unused-parameter
 CXXFLAGS := -std=c++17 $(OPT) -g $(WARN) -Iinclude $(PETSC_CFLAGS) -MMD -MP

@@ -1,0 +1,29 @@
+// Builds the computational mesh: a built-in box (quads/hexes) whose regions are chosen by
+// axis-aligned boxes, or a Gmsh file whose physical group names are the region and boundary
+// names. The mesh is created and labelled serially, then distributed (labels survive).
+// Labels on the result:
+//   "region"          every cell, value = index of its region in MeshDescription::regions
+//   <boundary name>   faces (height 1), value 1: box sides left/right/bottom/top(/front/back),
+//                     or the Gmsh physical groups of dimension dim-1
+// The vertical axis is the last coordinate (y in 2D, z in 3D).
+#pragma once
+#include <petscdmplex.h>
+
+#include <string>
+#include <vector>
+
+namespace slipwave::mesh {
+
+inline constexpr char kRegionLabel[] = "region";
+
+struct MeshDescription {
+  PetscInt                 dim = 2;
+  std::vector<std::string> regions;    // region names, in label-value order
+  std::vector<std::string> boundaries; // boundary label names
+  std::string              source;     // "box NxM" or the file name, for the report
+};
+
+// Reads the -mesh_* and -regions options, creates, labels and distributes the mesh.
+PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc);
+
+} // namespace slipwave::mesh

@@ -1,0 +1,50 @@
+// Boundary conditions and loads, read from options and assembled once into global vectors
+// in the displacement layout (or, for dashpot blocks, the dim x dim node-block layout):
+//   -bc_<boundary>_type free|fixed|absorbing|traction|velocity
+//   -bc_<boundary>_components x,y[,z]   (fixed, velocity)
+//   -bc_<boundary>_traction tx,ty[,tz]  (traction) [Pa]
+//   -bc_<boundary>_stf ... (velocity: its history, see TimeFunction)
+//   -input_wave none|sv|p -input_boundary <absorbing boundary> -input_stf ...  (incident plane wave)
+//   -gravity g [m/s^2] downward along the last axis;  -constrain_components y (every node)
+#pragma once
+#include <petscdmplex.h>
+
+#include <string>
+#include <vector>
+
+#include "slipwave/model/materials.hpp"
+#include "slipwave/model/time_function.hpp"
+
+namespace slipwave::model {
+
+enum class BoundaryType { Free, Fixed, Absorbing, Traction, Velocity };
+
+struct PrescribedVelocity {
+  std::string  boundary;
+  Vec          dofs = nullptr; // 1 on the prescribed dofs, 0 elsewhere
+  TimeFunction history;
+};
+
+struct BoundaryConditions {
+  std::vector<std::string>  names;
+  std::vector<BoundaryType> types;
+  DM                        block_dm = nullptr;       // node layout with dim*dim dofs
+  Vec                       absorbing_blocks = nullptr; // Lysmer-Kuhlemeyer C per node (not divided by mass)
+  Vec                       constant_force = nullptr;   // gravity + tractions [N]
+  Vec                       input_force = nullptr;      // incident-wave force per unit incident velocity [N s/m]
+  Vec                       free_mask = nullptr;        // 1 free dof, 0 prescribed
+  std::vector<PrescribedVelocity> prescribed;
+  TimeFunction              input;
+  std::string               input_wave = "none", input_boundary;
+  PetscInt                  input_component = 0;
+  PetscReal                 gravity = 0;
+  bool                      has_absorbing = false;
+};
+
+PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &boundaries, const std::vector<RegionMaterialInfo> &materials, Vec mass,
+                                        BoundaryConditions *bc);
+PetscErrorCode BoundaryConditionsDestroy(BoundaryConditions *bc);
+
+const char *boundaryTypeName(BoundaryType t);
+
+} // namespace slipwave::model

@@ -1,0 +1,253 @@
+#include "slipwave/fem/bulk_operator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <unordered_map>
+
+#include "slipwave/mesh/mesh_builder.hpp"
+
+namespace slipwave::fem {
+namespace {
+
+PetscErrorCode cellShapeOf(DM dm, PetscInt cell, CellShape *shape) {
+  DMPolytopeType ct;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetCellType(dm, cell, &ct));
+  switch (ct) {
+  case DM_POLYTOPE_TRIANGLE: *shape = CellShape::Tri3; break;
+  case DM_POLYTOPE_QUADRILATERAL: *shape = CellShape::Quad4; break;
+  case DM_POLYTOPE_TETRAHEDRON: *shape = CellShape::Tet4; break;
+  case DM_POLYTOPE_HEXAHEDRON: *shape = CellShape::Hex8; break;
+  default: SETERRQ(PetscObjectComm((PetscObject)dm), PETSC_ERR_SUP, "unsupported cell type %s", DMPolytopeTypes[ct]);
+  }
+  PetscFunctionReturn(0);
+}
+
+// Vertices of a cell in element-kernel order. DMPlex lists a hexahedron's second face in the
+// opposite cyclic sense; the kernel wants node 4+k joined by an edge to node k, so pair them
+// through the cell's edges instead of relying on a fixed permutation.
+PetscErrorCode cellVerticesInKernelOrder(DM dm, PetscInt cell, CellShape shape, PetscInt *verts) {
+  PetscInt *closure = nullptr, nclosure, v_start, v_end, e_start, e_end;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &v_start, &v_end));
+  PetscCall(DMPlexGetDepthStratum(dm, 1, &e_start, &e_end));
+  PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &nclosure, &closure));
+  PetscInt nv = 0;
+  PetscInt edges[12][2];
+  PetscInt ne = 0;
+  for (PetscInt i = 0; i < nclosure; ++i) {
+    const PetscInt p = closure[2 * i];
+    if (p >= v_start && p < v_end) verts[nv++] = p;
+    else if (shape == CellShape::Hex8 && p >= e_start && p < e_end && ne < 12) {
+      const PetscInt *cone;
+      PetscCall(DMPlexGetCone(dm, p, &cone));
+      edges[ne][0] = cone[0];
+      edges[ne][1] = cone[1];
+      ++ne;
+    }
+  }
+  PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &nclosure, &closure));
+  if (shape == CellShape::Hex8) {
+    PetscInt top[4];
+    for (int k = 0; k < 4; ++k) {
+      top[k] = -1;
+      for (PetscInt e = 0; e < ne; ++e) {
+        for (int s = 0; s < 2; ++s) {
+          if (edges[e][s] != verts[k]) continue;
+          const PetscInt other = edges[e][1 - s];
+          for (int j = 4; j < 8; ++j)
+            if (verts[j] == other) top[k] = other;
+        }
+      }
+      PetscCheck(top[k] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "hexahedron %" PetscInt_FMT ": no edge joins its two faces at vertex %d", cell, k);
+    }
+    for (int k = 0; k < 4; ++k) verts[4 + k] = top[k];
+  }
+  PetscFunctionReturn(0);
+}
+
+template <int N>
+void applyCells(PetscInt ncell, PetscInt nen, PetscInt dim, const PetscInt *cell_dofs, const PetscInt *cell_matrix, const double *pool,
+                const PetscScalar *u, PetscScalar *f) {
+  double ue[N], fe[N];
+  for (PetscInt c = 0; c < ncell; ++c) {
+    const PetscInt *dofs = cell_dofs + c * nen;
+    for (PetscInt a = 0; a < nen; ++a)
+      for (PetscInt i = 0; i < dim; ++i) ue[a * dim + i] = u[dofs[a] + i];
+    const double *K = pool + (size_t)cell_matrix[c] * N * N;
+    for (int r = 0; r < N; ++r) {
+      double s = 0;
+      for (int j = 0; j < N; ++j) s += K[r * N + j] * ue[j];
+      fe[r] = s;
+    }
+    for (PetscInt a = 0; a < nen; ++a)
+      for (PetscInt i = 0; i < dim; ++i) f[dofs[a] + i] += fe[a * dim + i];
+  }
+}
+
+} // namespace
+
+PetscErrorCode BulkOperator::Setup(DM dm, const std::vector<RegionMaterial> &materials) {
+  PetscInt     c_start, c_end;
+  PetscSection section;
+  DMLabel      region_label;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(dm, &dim_));
+  PetscCall(DMGetLocalSection(dm, &section));
+  PetscCall(DMGetLabel(dm, mesh::kRegionLabel, &region_label));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
+  ncell_ = c_end - c_start;
+  if (ncell_ > 0) PetscCall(cellShapeOf(dm, c_start, &shape_));
+  nen_ = cellNodeCount(shape_);
+  const PetscInt ndof = nen_ * dim_;
+  cell_dofs_.resize(ncell_ * nen_);
+  cell_vertices_.resize(ncell_ * nen_);
+  cell_region_.resize(ncell_);
+  cell_matrix_.resize(ncell_);
+  cell_coords_.resize(ncell_ * nen_ * dim_);
+
+  Vec                coords_local;
+  PetscSection       coord_section;
+  DM                 cdm;
+  const PetscScalar *xarr;
+  PetscCall(DMGetCoordinatesLocal(dm, &coords_local));
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMGetLocalSection(cdm, &coord_section));
+  PetscCall(VecGetArrayRead(coords_local, &xarr));
+
+  double bbox_lo[3] = {1e300, 1e300, 1e300}, bbox_hi[3] = {-1e300, -1e300, -1e300};
+  for (PetscInt c = 0; c < ncell_; ++c) {
+    PetscInt *verts = &cell_vertices_[c * nen_];
+    PetscCall(cellVerticesInKernelOrder(dm, c_start + c, shape_, verts));
+    for (PetscInt a = 0; a < nen_; ++a) {
+      PetscInt off, coff;
+      PetscCall(PetscSectionGetOffset(section, verts[a], &off));
+      PetscCall(PetscSectionGetOffset(coord_section, verts[a], &coff));
+      cell_dofs_[c * nen_ + a] = off;
+      for (PetscInt i = 0; i < dim_; ++i) {
+        const double x = PetscRealPart(xarr[coff + i]);
+        cell_coords_[(c * nen_ + a) * dim_ + i] = x;
+        bbox_lo[i] = std::min(bbox_lo[i], x);
+        bbox_hi[i] = std::max(bbox_hi[i], x);
+      }
+    }
+    PetscInt region;
+    PetscCall(DMLabelGetValue(region_label, c_start + c, &region));
+    PetscCheck(region >= 0 && region < (PetscInt)materials.size(), PETSC_COMM_SELF, PETSC_ERR_PLIB, "cell %" PetscInt_FMT " has no region", c_start + c);
+    cell_region_[c] = region;
+  }
+  PetscCall(VecRestoreArrayRead(coords_local, &xarr));
+
+  double extent = 0;
+  for (PetscInt i = 0; i < dim_; ++i) extent = std::max(extent, bbox_hi[i] - bbox_lo[i]);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &extent, 1, MPI_DOUBLE, MPI_MAX, PetscObjectComm((PetscObject)dm)));
+  const double quantum = 1e-12 * (extent > 0 ? extent : 1.0);
+
+  std::unordered_map<std::string, PetscInt> seen;
+  std::vector<double>                       rel(nen_ * dim_);
+  h_min_ = 1e300;
+  stiffness_.clear();
+  stress_op_.clear();
+  lumped_.clear();
+  for (PetscInt c = 0; c < ncell_; ++c) {
+    const double *x = cellCoordinates(c);
+    double        hmax = 0;
+    for (PetscInt a = 0; a < nen_; ++a)
+      for (PetscInt b = a + 1; b < nen_; ++b) {
+        double d2 = 0;
+        for (PetscInt i = 0; i < dim_; ++i) d2 += (x[a * dim_ + i] - x[b * dim_ + i]) * (x[a * dim_ + i] - x[b * dim_ + i]);
+        hmax = std::max(hmax, std::sqrt(d2));
+      }
+    for (PetscInt a = 0; a < nen_; ++a)
+      for (PetscInt i = 0; i < dim_; ++i) rel[a * dim_ + i] = x[a * dim_ + i] - x[i];
+    // Cells with the same region and the same vertex positions relative to their first vertex
+    // (to 1e-12 of the mesh extent) share their element matrices.
+    std::string key(reinterpret_cast<const char *>(&cell_region_[c]), sizeof(PetscInt));
+    for (double r : rel) {
+      const long long q = std::llround(r / quantum);
+      key.append(reinterpret_cast<const char *>(&q), sizeof q);
+    }
+    auto found = seen.find(key);
+    if (found != seen.end()) {
+      cell_matrix_[c] = found->second;
+      continue;
+    }
+    const PetscInt       idx = (PetscInt)seen.size();
+    const RegionMaterial &m  = materials[cell_region_[c]];
+    seen.emplace(std::move(key), idx);
+    cell_matrix_[c] = idx;
+    stiffness_.resize((size_t)(idx + 1) * ndof * ndof);
+    stress_op_.resize((size_t)(idx + 1) * 6 * ndof);
+    lumped_.resize((size_t)(idx + 1) * nen_);
+    elementStiffness(shape_, x, m.lame, &stiffness_[(size_t)idx * ndof * ndof]);
+    elementStressOperator(shape_, x, m.lame, &stress_op_[(size_t)idx * 6 * ndof]);
+    elementLumpedMass(shape_, x, m.rho, &lumped_[(size_t)idx * nen_]);
+  }
+  matrix_count_ = seen.size();
+  // The smallest edge/diagonal length over cells, for reports (points per wavelength).
+  for (PetscInt c = 0; c < ncell_; ++c) {
+    const double *x = cellCoordinates(c);
+    for (PetscInt a = 0; a < nen_; ++a)
+      for (PetscInt b = a + 1; b < nen_; ++b) {
+        double d2 = 0;
+        for (PetscInt i = 0; i < dim_; ++i) d2 += (x[a * dim_ + i] - x[b * dim_ + i]) * (x[a * dim_ + i] - x[b * dim_ + i]);
+        h_min_ = std::min(h_min_, std::sqrt(d2));
+      }
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &h_min_, 1, MPI_DOUBLE, MPI_MIN, PetscObjectComm((PetscObject)dm)));
+  PetscFunctionReturn(0);
+}
+
+void BulkOperator::addStiffnessTimes(const PetscScalar *u, PetscScalar *f) const {
+  const PetscInt *dofs = cell_dofs_.data();
+  const PetscInt *mats = cell_matrix_.data();
+  const double   *pool = stiffness_.data();
+  switch (nen_ * dim_) {
+  case 6: applyCells<6>(ncell_, nen_, dim_, dofs, mats, pool, u, f); break;
+  case 8: applyCells<8>(ncell_, nen_, dim_, dofs, mats, pool, u, f); break;
+  case 12: applyCells<12>(ncell_, nen_, dim_, dofs, mats, pool, u, f); break;
+  case 24: applyCells<24>(ncell_, nen_, dim_, dofs, mats, pool, u, f); break;
+  default: break;
+  }
+}
+
+void BulkOperator::addLumpedMass(PetscScalar *mass) const {
+  for (PetscInt c = 0; c < ncell_; ++c) {
+    const double *m = &lumped_[(size_t)cell_matrix_[c] * nen_];
+    for (PetscInt a = 0; a < nen_; ++a)
+      for (PetscInt i = 0; i < dim_; ++i) mass[cell_dofs_[c * nen_ + a] + i] += m[a];
+  }
+}
+
+void BulkOperator::addStiffnessRowAbsSums(PetscScalar *rowabs) const {
+  const PetscInt n = nen_ * dim_;
+  for (PetscInt c = 0; c < ncell_; ++c) {
+    const double *K = &stiffness_[(size_t)cell_matrix_[c] * n * n];
+    for (PetscInt a = 0; a < nen_; ++a)
+      for (PetscInt i = 0; i < dim_; ++i) {
+        const PetscInt r = a * dim_ + i;
+        double         s = 0;
+        for (PetscInt j = 0; j < n; ++j) s += std::fabs(K[r * n + j]);
+        rowabs[cell_dofs_[c * nen_ + a] + i] += s;
+      }
+  }
+}
+
+void BulkOperator::cellStress(const PetscScalar *u, PetscScalar *stress) const {
+  const PetscInt n = nen_ * dim_;
+  double         ue[24];
+  for (PetscInt c = 0; c < ncell_; ++c) {
+    for (PetscInt a = 0; a < nen_; ++a)
+      for (PetscInt i = 0; i < dim_; ++i) ue[a * dim_ + i] = PetscRealPart(u[cell_dofs_[c * nen_ + a] + i]);
+    const double *S = &stress_op_[(size_t)cell_matrix_[c] * 6 * n];
+    for (int k = 0; k < 6; ++k) {
+      double s = 0;
+      for (PetscInt j = 0; j < n; ++j) s += S[k * n + j] * ue[j];
+      stress[c * 6 + k] = s;
+    }
+  }
+}
+
+} // namespace slipwave::fem

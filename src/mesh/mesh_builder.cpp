@@ -1,0 +1,291 @@
+#include "slipwave/mesh/mesh_builder.hpp"
+
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+
+namespace slipwave::mesh {
+namespace {
+
+constexpr PetscInt kMaxRegions = 64;
+
+struct BoxSpec {
+  PetscInt  faces[3] = {40, 20, 10};
+  PetscReal lower[3] = {0, 0, 0};
+  PetscReal upper[3] = {100, 50, 25};
+};
+
+std::vector<std::string> splitNames(const char *list) {
+  std::vector<std::string> out;
+  std::stringstream        ss(list);
+  std::string              item;
+  while (std::getline(ss, item, ',')) {
+    item.erase(0, item.find_first_not_of(" \t"));
+    item.erase(item.find_last_not_of(" \t") + 1);
+    if (!item.empty()) out.push_back(item);
+  }
+  return out;
+}
+
+PetscErrorCode cellCentroid(DM dm, PetscInt cell, PetscReal *centroid) {
+  PetscInt           dim, ncoords;
+  const PetscScalar *array;
+  PetscScalar       *coords = nullptr;
+  PetscBool          is_dg;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinateDim(dm, &dim));
+  PetscCall(DMPlexGetCellCoordinates(dm, cell, &is_dg, &ncoords, &array, &coords));
+  const PetscInt nv = ncoords / dim;
+  for (PetscInt d = 0; d < dim; ++d) {
+    centroid[d] = 0;
+    for (PetscInt v = 0; v < nv; ++v) centroid[d] += PetscRealPart(coords[v * dim + d]) / nv;
+  }
+  PetscCall(DMPlexRestoreCellCoordinates(dm, cell, &is_dg, &ncoords, &array, &coords));
+  PetscFunctionReturn(0);
+}
+
+// Box meshes: each cell goes to the last listed region whose box holds its centroid; a region
+// given without a box takes every cell no other box claims.
+PetscErrorCode labelBoxRegions(MPI_Comm comm, DM dm, const std::vector<std::string> &regions, const BoxSpec &box) {
+  PetscInt dim, c_start, c_end;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(dm, &dim));
+  std::vector<std::vector<PetscReal>> bounds(regions.size());
+  PetscInt                            fill_region = -1;
+  for (size_t r = 0; r < regions.size(); ++r) {
+    char      opt[256];
+    PetscReal b[6];
+    PetscInt  n = 2 * dim;
+    PetscBool set;
+    std::snprintf(opt, sizeof opt, "-region_%s_box", regions[r].c_str());
+    PetscCall(PetscOptionsGetRealArray(nullptr, nullptr, opt, b, &n, &set));
+    if (set) {
+      PetscCheck(n == 2 * dim, comm, PETSC_ERR_USER_INPUT, "%s has %" PetscInt_FMT " values; allowed: %" PetscInt_FMT " values xmin,xmax,ymin,ymax%s", opt, n,
+                 2 * dim, dim == 3 ? ",zmin,zmax" : "");
+      for (PetscInt d = 0; d < dim; ++d)
+        PetscCheck(b[2 * d] < b[2 * d + 1], comm, PETSC_ERR_USER_INPUT, "%s: min %g >= max %g on axis %" PetscInt_FMT "; allowed: min < max", opt,
+                   (double)b[2 * d], (double)b[2 * d + 1], d);
+      bounds[r].assign(b, b + 2 * dim);
+    } else {
+      PetscCheck(fill_region < 0, comm, PETSC_ERR_USER_INPUT,
+                 "regions '%s' and '%s' both have no -region_<name>_box; allowed: at most one region without a box (it takes the remaining cells)",
+                 regions[fill_region].c_str(), regions[r].c_str());
+      fill_region = (PetscInt)r;
+    }
+  }
+  PetscCall(DMCreateLabel(dm, kRegionLabel));
+  DMLabel label;
+  PetscCall(DMGetLabel(dm, kRegionLabel, &label));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
+  std::vector<PetscInt> count(regions.size(), 0);
+  for (PetscInt c = c_start; c < c_end; ++c) {
+    PetscReal x[3];
+    PetscCall(cellCentroid(dm, c, x));
+    PetscInt region = fill_region;
+    for (size_t r = 0; r < regions.size(); ++r) {
+      if (bounds[r].empty()) continue;
+      bool inside = true;
+      for (PetscInt d = 0; d < dim; ++d) inside = inside && x[d] >= bounds[r][2 * d] && x[d] <= bounds[r][2 * d + 1];
+      if (inside) region = (PetscInt)r;
+    }
+    PetscCheck(region >= 0, comm, PETSC_ERR_USER_INPUT,
+               "the cell with centroid (%g, %g%s) lies in no region box; allowed: region boxes that cover the mesh, or one region without -region_<name>_box",
+               (double)x[0], (double)x[1], dim == 3 ? ", ..." : "");
+    PetscCall(DMLabelSetValue(label, c, region));
+    ++count[region];
+  }
+  if (c_end > c_start) {
+    for (size_t r = 0; r < regions.size(); ++r)
+      PetscCheck(count[r] > 0, comm, PETSC_ERR_USER_INPUT, "region '%s' (-region_%s_box) contains no cell of the mesh; allowed: a box holding at least one cell centroid",
+                 regions[r].c_str(), regions[r].c_str());
+  }
+  PetscFunctionReturn(0);
+}
+
+// Marks the box faces on each side by their centroid, so the names do not depend on PETSc's
+// internal face numbering.
+PetscErrorCode labelBoxSides(DM dm, const BoxSpec &box, std::vector<std::string> *names) {
+  PetscInt dim, f_start, f_end;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(dm, &dim));
+  const char *names2[4] = {"left", "right", "bottom", "top"};
+  const char *names3[6] = {"left", "right", "front", "back", "bottom", "top"};
+  const char *const *side_names = dim == 2 ? names2 : names3;
+  std::vector<DMLabel> labels(2 * dim);
+  for (PetscInt s = 0; s < 2 * dim; ++s) {
+    PetscCall(DMCreateLabel(dm, side_names[s]));
+    PetscCall(DMGetLabel(dm, side_names[s], &labels[s]));
+    names->push_back(side_names[s]);
+  }
+  PetscCall(DMPlexGetHeightStratum(dm, 1, &f_start, &f_end));
+  for (PetscInt f = f_start; f < f_end; ++f) {
+    PetscInt support_size;
+    PetscCall(DMPlexGetSupportSize(dm, f, &support_size));
+    if (support_size != 1) continue;
+    PetscReal x[3];
+    PetscCall(cellCentroid(dm, f, x));
+    for (PetscInt d = 0; d < dim; ++d) {
+      const PetscReal tol = 1e-9 * (box.upper[d] - box.lower[d]);
+      if (PetscAbsReal(x[d] - box.lower[d]) < tol) PetscCall(DMLabelSetValue(labels[2 * d], f, 1));
+      if (PetscAbsReal(x[d] - box.upper[d]) < tol) PetscCall(DMLabelSetValue(labels[2 * d + 1], f, 1));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode createBox(MPI_Comm comm, PetscInt dim, DM *dm, BoxSpec *box, std::string *source) {
+  PetscInt  n = dim;
+  PetscBool set;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, "mesh_box_", "Built-in box mesh (quadrilaterals in 2D, hexahedra in 3D)", "slipwave");
+  PetscCall(PetscOptionsIntArray("-faces", "number of cells along x,y[,z]", "MeshCreate", box->faces, &n, &set));
+  PetscCheck(!set || n == dim, comm, PETSC_ERR_USER_INPUT, "-mesh_box_faces has %" PetscInt_FMT " values; allowed: %" PetscInt_FMT " positive integers", n, dim);
+  n = dim;
+  PetscCall(PetscOptionsRealArray("-lower", "lower corner x,y[,z] [m]", "MeshCreate", box->lower, &n, &set));
+  PetscCheck(!set || n == dim, comm, PETSC_ERR_USER_INPUT, "-mesh_box_lower has %" PetscInt_FMT " values; allowed: %" PetscInt_FMT " coordinates", n, dim);
+  n = dim;
+  PetscCall(PetscOptionsRealArray("-upper", "upper corner x,y[,z] [m]", "MeshCreate", box->upper, &n, &set));
+  PetscCheck(!set || n == dim, comm, PETSC_ERR_USER_INPUT, "-mesh_box_upper has %" PetscInt_FMT " values; allowed: %" PetscInt_FMT " coordinates", n, dim);
+  PetscOptionsEnd();
+  for (PetscInt d = 0; d < dim; ++d) {
+    PetscCheck(box->faces[d] > 0, comm, PETSC_ERR_USER_INPUT, "-mesh_box_faces: %" PetscInt_FMT " cells on axis %" PetscInt_FMT "; allowed: >= 1", box->faces[d], d);
+    PetscCheck(box->upper[d] > box->lower[d], comm, PETSC_ERR_USER_INPUT, "-mesh_box_upper (%g) <= -mesh_box_lower (%g) on axis %" PetscInt_FMT "; allowed: upper > lower",
+               (double)box->upper[d], (double)box->lower[d], d);
+  }
+  PetscCall(DMPlexCreateBoxMesh(comm, dim, PETSC_FALSE, box->faces, box->lower, box->upper, nullptr, PETSC_TRUE, dm));
+  char buf[128];
+  if (dim == 2) std::snprintf(buf, sizeof buf, "box %" PetscInt_FMT " x %" PetscInt_FMT " quadrilaterals", box->faces[0], box->faces[1]);
+  else std::snprintf(buf, sizeof buf, "box %" PetscInt_FMT " x %" PetscInt_FMT " x %" PetscInt_FMT " hexahedra", box->faces[0], box->faces[1], box->faces[2]);
+  *source = buf;
+  PetscFunctionReturn(0);
+}
+
+// Gmsh: with -dm_plex_gmsh_use_regions PETSc makes one label per physical name. Cell labels
+// become regions; face labels become boundaries.
+PetscErrorCode createFromGmsh(MPI_Comm comm, const char *file, DM *dm, const std::vector<std::string> &regions, std::vector<std::string> *boundaries) {
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  int readable = 1;
+  if (rank == 0) {
+    FILE *fp = std::fopen(file, "r");
+    readable = fp != nullptr;
+    if (fp) std::fclose(fp);
+  }
+  PetscCallMPI(MPI_Bcast(&readable, 1, MPI_INT, 0, comm));
+  PetscCheck(readable, comm, PETSC_ERR_FILE_OPEN, "-mesh_file = %s: cannot open the file; allowed: a readable Gmsh .msh file (format 2.2 or 4.1)", file);
+  PetscBool has;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-dm_plex_gmsh_use_regions", &has));
+  if (!has) PetscCall(PetscOptionsSetValue(nullptr, "-dm_plex_gmsh_use_regions", "true"));
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
+  PetscErrorCode read_error = DMPlexCreateFromFile(comm, file, "slipwave", PETSC_TRUE, dm);
+  PetscCall(PetscPopErrorHandler());
+  if (read_error) {
+    const char *text = nullptr;
+    char       *specific = nullptr;
+    PetscErrorMessage(read_error, &text, &specific);
+    SETERRQ(comm, PETSC_ERR_USER_INPUT, "-mesh_file = %s: not a valid Gmsh mesh (%s); allowed: a Gmsh .msh file (format 2.2 or 4.1) with physical groups", file,
+            specific && specific[0] ? specific : (text ? text : "unreadable"));
+  }
+  PetscInt dim, c_start, c_end, f_start, f_end, nlabels;
+  PetscCall(DMGetDimension(*dm, &dim));
+  PetscCall(DMPlexGetHeightStratum(*dm, 0, &c_start, &c_end));
+  PetscCall(DMPlexGetHeightStratum(*dm, 1, &f_start, &f_end));
+  PetscCall(DMCreateLabel(*dm, kRegionLabel));
+  DMLabel region_label;
+  PetscCall(DMGetLabel(*dm, kRegionLabel, &region_label));
+  for (size_t r = 0; r < regions.size(); ++r) {
+    DMLabel label;
+    PetscCall(DMGetLabel(*dm, regions[r].c_str(), &label));
+    PetscCheck(label, comm, PETSC_ERR_USER_INPUT, "-regions names '%s', but %s has no physical group of that name; allowed: the names of its physical groups",
+               regions[r].c_str(), file);
+    for (PetscInt c = c_start; c < c_end; ++c) {
+      PetscInt value;
+      PetscCall(DMLabelGetValue(label, c, &value));
+      if (value >= 0) PetscCall(DMLabelSetValue(region_label, c, (PetscInt)r));
+    }
+  }
+  for (PetscInt c = c_start; c < c_end; ++c) {
+    PetscInt value;
+    PetscCall(DMLabelGetValue(region_label, c, &value));
+    PetscCheck(value >= 0, comm, PETSC_ERR_USER_INPUT, "cell %" PetscInt_FMT " of %s belongs to none of the regions listed in -regions; allowed: every cell in a listed region", c, file);
+  }
+  PetscCall(DMGetNumLabels(*dm, &nlabels));
+  for (PetscInt l = 0; l < nlabels; ++l) {
+    const char *name;
+    DMLabel     label;
+    PetscCall(DMGetLabelName(*dm, l, &name));
+    PetscCall(DMGetLabelByNum(*dm, l, &label));
+    bool on_faces = false;
+    for (PetscInt f = f_start; f < f_end && !on_faces; ++f) {
+      PetscInt value;
+      PetscCall(DMLabelGetValue(label, f, &value));
+      on_faces = value >= 0;
+    }
+    if (on_faces && std::strcmp(name, "Face Sets") != 0 && std::strcmp(name, "celltype") != 0) boundaries->push_back(name);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode checkCellTypes(MPI_Comm comm, DM dm) {
+  PetscInt c_start, c_end;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
+  DMPolytopeType first = DM_POLYTOPE_UNKNOWN;
+  for (PetscInt c = c_start; c < c_end; ++c) {
+    DMPolytopeType ct;
+    PetscCall(DMPlexGetCellType(dm, c, &ct));
+    PetscCheck(ct == DM_POLYTOPE_TRIANGLE || ct == DM_POLYTOPE_QUADRILATERAL || ct == DM_POLYTOPE_TETRAHEDRON || ct == DM_POLYTOPE_HEXAHEDRON, comm,
+               PETSC_ERR_USER_INPUT, "cell %" PetscInt_FMT " is a %s; allowed cells: linear triangles, quadrilaterals, tetrahedra, hexahedra", c, DMPolytopeTypes[ct]);
+    if (first == DM_POLYTOPE_UNKNOWN) first = ct;
+    PetscCheck(ct == first, comm, PETSC_ERR_USER_INPUT, "the mesh mixes %s and %s cells; allowed: one cell type per mesh", DMPolytopeTypes[first], DMPolytopeTypes[ct]);
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
+  char      file[PETSC_MAX_PATH_LEN] = "";
+  char      region_list[1024]        = "soil";
+  PetscBool from_file;
+  BoxSpec   box;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, "", "Mesh and regions", "slipwave");
+  PetscCall(PetscOptionsString("-mesh_file", "Gmsh .msh file; without it a built-in box mesh is used", "MeshCreate", file, file, sizeof file, &from_file));
+  PetscCall(PetscOptionsRangeInt("-mesh_dim", "dimension of the built-in box mesh (2 = plane strain, 3)", "MeshCreate", desc->dim, &desc->dim, nullptr, 2, 3));
+  PetscCall(PetscOptionsString("-regions", "comma-separated region names (box: each with -region_<name>_box; Gmsh: physical group names)", "MeshCreate",
+                               region_list, region_list, sizeof region_list, nullptr));
+  PetscOptionsEnd();
+  desc->regions = splitNames(region_list);
+  PetscCheck(!desc->regions.empty() && (PetscInt)desc->regions.size() <= kMaxRegions, comm, PETSC_ERR_USER_INPUT,
+             "-regions = '%s'; allowed: 1 to %" PetscInt_FMT " comma-separated names", region_list, kMaxRegions);
+
+  DM serial;
+  if (from_file && file[0]) {
+    PetscCall(createFromGmsh(comm, file, &serial, desc->regions, &desc->boundaries));
+    PetscCall(DMGetDimension(serial, &desc->dim));
+    desc->source = file;
+  } else {
+    PetscCall(createBox(comm, desc->dim, &serial, &box, &desc->source));
+    PetscCall(labelBoxRegions(comm, serial, desc->regions, box));
+    PetscCall(labelBoxSides(serial, box, &desc->boundaries));
+  }
+  PetscCall(checkCellTypes(comm, serial));
+
+  PetscPartitioner part;
+  DM               dist = nullptr;
+  PetscCall(DMPlexGetPartitioner(serial, &part));
+  PetscCall(PetscPartitionerSetFromOptions(part));
+  PetscCall(DMPlexDistribute(serial, 0, nullptr, &dist));
+  if (dist) {
+    PetscCall(DMDestroy(&serial));
+    *dm = dist;
+  } else {
+    *dm = serial;
+  }
+  PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::mesh

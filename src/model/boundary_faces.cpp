@@ -1,0 +1,102 @@
+#include "slipwave/model/boundary_faces.hpp"
+
+#include "slipwave/fem/element_kernels.hpp"
+#include "slipwave/mesh/mesh_builder.hpp"
+
+namespace slipwave::model {
+namespace {
+
+PetscErrorCode pointCentroid(DM dm, PetscInt p, PetscInt dim, double *x) {
+  PetscBool          is_dg;
+  PetscInt           n;
+  const PetscScalar *array;
+  PetscScalar       *coords = nullptr;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetCellCoordinates(dm, p, &is_dg, &n, &array, &coords));
+  for (PetscInt d = 0; d < dim; ++d) {
+    x[d] = 0;
+    for (PetscInt v = 0; v < n / dim; ++v) x[d] += PetscRealPart(coords[v * dim + d]) / (n / dim);
+  }
+  PetscCall(DMPlexRestoreCellCoordinates(dm, p, &is_dg, &n, &array, &coords));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode BoundaryFacesGet(DM dm, const std::string &name, std::vector<BoundaryFace> *faces) {
+  DMLabel  label, region_label;
+  PetscInt dim, f_start, f_end, v_start, v_end;
+  IS       values_is;
+  PetscFunctionBeginUser;
+  faces->clear();
+  PetscCall(DMGetLabel(dm, name.c_str(), &label));
+  PetscCheck(label, PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "boundary '%s' does not exist in the mesh; allowed: the boundary names the mesh defines (run with -dry_run to list them)",
+             name.c_str());
+  PetscCall(DMGetLabel(dm, mesh::kRegionLabel, &region_label));
+  PetscCall(DMGetDimension(dm, &dim));
+  PetscCall(DMPlexGetHeightStratum(dm, 1, &f_start, &f_end));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &v_start, &v_end));
+  Vec                coords_local;
+  PetscSection       coord_section;
+  DM                 cdm;
+  const PetscScalar *xarr;
+  PetscCall(DMGetCoordinatesLocal(dm, &coords_local));
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMGetLocalSection(cdm, &coord_section));
+  PetscCall(VecGetArrayRead(coords_local, &xarr));
+
+  PetscCall(DMLabelGetValueIS(label, &values_is));
+  PetscInt        nvalues;
+  const PetscInt *values;
+  PetscCall(ISGetLocalSize(values_is, &nvalues));
+  PetscCall(ISGetIndices(values_is, &values));
+  for (PetscInt k = 0; k < nvalues; ++k) {
+    IS              points_is;
+    PetscInt        npoints;
+    const PetscInt *points;
+    PetscCall(DMLabelGetStratumIS(label, values[k], &points_is));
+    if (!points_is) continue;
+    PetscCall(ISGetLocalSize(points_is, &npoints));
+    PetscCall(ISGetIndices(points_is, &points));
+    for (PetscInt i = 0; i < npoints; ++i) {
+      const PetscInt f = points[i];
+      PetscInt       support_size;
+      if (f < f_start || f >= f_end) continue;
+      PetscCall(DMPlexGetSupportSize(dm, f, &support_size));
+      if (support_size != 1) continue;
+      BoundaryFace face;
+      PetscInt    *closure = nullptr, nclosure;
+      PetscCall(DMPlexGetTransitiveClosure(dm, f, PETSC_TRUE, &nclosure, &closure));
+      for (PetscInt j = 0; j < nclosure; ++j)
+        if (closure[2 * j] >= v_start && closure[2 * j] < v_end && face.nvert < 4) face.vertices[face.nvert++] = closure[2 * j];
+      PetscCall(DMPlexRestoreTransitiveClosure(dm, f, PETSC_TRUE, &nclosure, &closure));
+      double x[12];
+      for (PetscInt a = 0; a < face.nvert; ++a) {
+        PetscInt off;
+        PetscCall(PetscSectionGetOffset(coord_section, face.vertices[a], &off));
+        for (PetscInt d = 0; d < dim; ++d) x[a * dim + d] = PetscRealPart(xarr[off + d]);
+      }
+      const fem::FaceShape shape = dim == 2 ? fem::FaceShape::Seg2 : (face.nvert == 3 ? fem::FaceShape::Tri3 : fem::FaceShape::Quad4);
+      fem::faceLumpedWeights(shape, (int)dim, x, face.weights);
+      fem::faceNormal(shape, (int)dim, x, face.normal);
+      const PetscInt *support;
+      PetscCall(DMPlexGetSupport(dm, f, &support));
+      double xc[3], xf[3], dot = 0;
+      PetscCall(pointCentroid(dm, support[0], dim, xc));
+      PetscCall(pointCentroid(dm, f, dim, xf));
+      for (PetscInt d = 0; d < dim; ++d) dot += face.normal[d] * (xf[d] - xc[d]);
+      if (dot < 0)
+        for (PetscInt d = 0; d < dim; ++d) face.normal[d] = -face.normal[d];
+      PetscCall(DMLabelGetValue(region_label, support[0], &face.region));
+      faces->push_back(face);
+    }
+    PetscCall(ISRestoreIndices(points_is, &points));
+    PetscCall(ISDestroy(&points_is));
+  }
+  PetscCall(ISRestoreIndices(values_is, &values));
+  PetscCall(ISDestroy(&values_is));
+  PetscCall(VecRestoreArrayRead(coords_local, &xarr));
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::model
