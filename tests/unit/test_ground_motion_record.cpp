@@ -1,0 +1,120 @@
+// Ground-motion readers (CSV and PEER .AT2) on small files written here, their error
+// messages with line numbers, the trapezoid integration order and the baseline correction.
+#include "slipwave/io/ground_motion_record.hpp"
+
+#include "unit_check.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+using namespace slipwave::io;
+
+namespace {
+
+std::vector<std::string> &writtenFiles() {
+  static std::vector<std::string> files;
+  return files;
+}
+
+std::string writeFile(const std::string &name, const std::string &text) {
+  const std::string path = "/tmp/slipwave_test_gmr_" + std::to_string(getpid()) + "_" + name;
+  std::ofstream(path) << text;
+  writtenFiles().push_back(path);
+  return path;
+}
+
+bool mentions(const ReadStatus &s, const std::string &what) { return !s.ok && s.message.find(what) != std::string::npos; }
+
+// a(t) = A sin(w t) sampled every dt on [0, T]; returns max |v_trapezoid - v_exact| with
+// the exact v(t) = A (1 - cos(w t)) / w.
+double sineVelocityError(double dt) {
+  const double A = 2.0, w = 2 * M_PI * 1.5, T = 4.0;
+  std::string csv = "time,acceleration\n";
+  const int n = static_cast<int>(std::lround(T / dt));
+  char buf[64];
+  for (int k = 0; k <= n; ++k) {
+    std::snprintf(buf, sizeof buf, "%.17g,%.17g\n", k * dt, A * std::sin(w * k * dt));
+    csv += buf;
+  }
+  GroundMotionRecord r;
+  const ReadStatus s = readAccelerationCsv(writeFile("sine.csv", csv), &r);
+  if (!s.ok) return HUGE_VAL;
+  const auto h = velocityHistory(r);
+  double err = 0;
+  for (size_t k = 0; k < h.times.size(); ++k)
+    err = std::fmax(err, std::fabs(h.values[k] - A * (1 - std::cos(w * h.times[k])) / w));
+  return err;
+}
+
+} // namespace
+
+int main() {
+  // Trapezoid error for a sine: global error ~ T dt^2/12 max|a''| = 4 * dt^2/12 * 2 * w^2
+  // (w = 3 pi: 59 dt^2), so halving dt divides the error by 4.
+  const double e1 = sineVelocityError(0.01), e2 = sineVelocityError(0.005);
+  unit::check(e1 < 59 * 0.01 * 0.01, "sine record: trapezoid velocity within T dt^2/12 max|a''| (" + std::to_string(e1) + ")");
+  unit::near(e1 / e2, 4.0, 0.05, 0, "sine record: velocity error is O(dt^2) (ratio 4 when dt halves)");
+
+  GroundMotionRecord r;
+  ReadStatus s = readAccelerationCsv(writeFile("nohead.csv", "0,1\n0.1, 2.5\n\n0.35,-1e-2\r\n"), &r);
+  unit::check(s.ok && r.time.size() == 3 && r.time[2] == 0.35 && r.acceleration[1] == 2.5 && r.acceleration[2] == -0.01,
+              "CSV without header, blank line, CRLF, non-uniform times " + s.message);
+
+  s = readAccelerationCsv("/nonexistent/dir/record.csv", &r);
+  unit::check(mentions(s, "/nonexistent/dir/record.csv: cannot open"), "missing CSV file named: " + s.message);
+  s = readAccelerationCsv(writeFile("nan.csv", "t,a\n0,1\n0.1,abc\n"), &r);
+  unit::check(mentions(s, "nan.csv:3: acceleration \"abc\" is not a number"), "non-numeric value at line 3: " + s.message);
+  s = readAccelerationCsv(writeFile("unsorted.csv", "t,a\n0,1\n0.2,1\n0.1,1\n"), &r);
+  unit::check(mentions(s, "unsorted.csv:4: time 0.1 is not after the time 0.2 on line 3"), "unsorted time at line 4: " + s.message);
+  s = readAccelerationCsv(writeFile("three.csv", "0,1\n0.1,1,7\n"), &r);
+  unit::check(mentions(s, "three.csv:2: expected two comma-separated values"), "three fields at line 2: " + s.message);
+  s = readAccelerationCsv(writeFile("one.csv", "t,a\n0,1\n"), &r);
+  unit::check(mentions(s, "at least 2 samples, found 1"), "single sample rejected: " + s.message);
+
+  // AT2, keyed header form; values in g, 3 per line, last line short.
+  const std::string head = "PEER NGA STRONG MOTION DATABASE RECORD\nTest event, station, 090\n"
+                           "ACCELERATION TIME SERIES IN UNITS OF G\n";
+  s = readPeerAt2(writeFile("keyed.AT2", head + "NPTS=     5, DT=   .0050 SEC\n  .1000E-01 -.2000E-01  .0\n  1.0 -0.5\n"), &r);
+  unit::check(s.ok && r.time.size() == 5, "AT2 keyed header form parsed " + s.message);
+  unit::near(r.time[4], 4 * 0.005, 1e-15, 0, "AT2 time of sample 4 = 4 DT");
+  unit::near(r.acceleration[1], -0.02 * 9.80665, 1e-15, 0, "AT2 value converted from g with g = 9.80665");
+  unit::near(r.acceleration[3], 9.80665, 1e-15, 0, "AT2 value on the second data line");
+  s = readPeerAt2(writeFile("positional.AT2", head + "    4    0.0100    NPTS, DT\n0.1 0.2 0.3 0.4\n"), &r);
+  unit::check(s.ok && r.time.size() == 4, "AT2 positional header form parsed " + s.message);
+  unit::near(r.time[3], 0.03, 1e-15, 0, "AT2 positional DT = 0.01");
+  s = readPeerAt2(writeFile("short.AT2", head + "NPTS= 5, DT= .005 SEC\n0.1 0.2\n0.3 0.4\n"), &r);
+  unit::check(mentions(s, "short.AT2:6: file ends after 4 values but NPTS = 5"), "NPTS mismatch (too few): " + s.message);
+  s = readPeerAt2(writeFile("long.AT2", head + "NPTS= 2, DT= .005 SEC\n0.1 0.2\n0.3\n"), &r);
+  unit::check(mentions(s, "long.AT2:6: more values than NPTS = 2"), "NPTS mismatch (too many) at line 6: " + s.message);
+  s = readPeerAt2(writeFile("bad.AT2", head + "NPTS= 3, DT= .005 SEC\n0.1 0.2\n0.3x\n"), &r);
+  unit::check(mentions(s, "bad.AT2:6: value \"0.3x\" is not a number"), "non-numeric AT2 value at line 6: " + s.message);
+  s = readPeerAt2(writeFile("nohdr.AT2", head + "this line has no counts\n0.1\n"), &r);
+  unit::check(mentions(s, "nohdr.AT2:4: cannot find NPTS and DT"), "AT2 header without NPTS at line 4: " + s.message);
+  s = readPeerAt2(writeFile("trunc.AT2", "only one line\n"), &r);
+  unit::check(mentions(s, "trunc.AT2:2: file ends inside the 4 header lines"), "truncated AT2 header: " + s.message);
+
+  // Baseline: a0 = any record with its drift removed; adding c0 + c1 t back and correcting
+  // again must give a0 (the correction is exact for the discrete integrals), and the
+  // corrected record ends at rest: final velocity and displacement zero.
+  GroundMotionRecord b;
+  for (int k = 0; k <= 400; ++k) {
+    const double t = 0.01 * k + 0.002 * std::sin(k);  // non-uniform sampling
+    b.time.push_back(t), b.acceleration.push_back(std::sin(7 * t) + 0.3 * std::cos(2 * t) + 0.05);
+  }
+  removeBaselineDrift(&b);
+  const std::vector<double> a0 = b.acceleration;
+  const std::vector<double> v = integrateTrapezoid(b.time, b.acceleration);
+  unit::near(v.back(), 0, 0, 1e-14, "baseline: final velocity zero");
+  unit::near(integrateTrapezoid(b.time, v).back(), 0, 0, 1e-14, "baseline: final displacement zero");
+  for (size_t k = 0; k < b.time.size(); ++k) b.acceleration[k] += 0.2 - 0.07 * (b.time[k] - b.time[0]);
+  removeBaselineDrift(&b);
+  double worst = 0;
+  for (size_t k = 0; k < b.time.size(); ++k) worst = std::fmax(worst, std::fabs(b.acceleration[k] - a0[k]));
+  unit::near(worst, 0, 0, 1e-13, "baseline: removes exactly an added c0 + c1 t");
+  for (const std::string &f : writtenFiles()) std::remove(f.c_str());
+  return unit::failures();
+}
