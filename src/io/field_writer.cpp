@@ -18,18 +18,24 @@ struct CellKind {
 };
 const CellKind kCellKinds[] = {{"Triangle", 3}, {"Quadrilateral", 4}, {"Tetrahedron", 4}, {"Hexahedron", 8}, {"Polyline", 2}};
 
-// Width of a field as written: XDMF knows scalars, 3-vectors and 6-tensors.
-int WrittenComponents(PetscInt components) { return components == 1 ? 1 : components == 6 ? 6 : 3; }
+// Width of a field as written: scalars, 3-vectors, and symmetric tensors as full 3x3
+// (XDMF "Tensor", row-major). Not XDMF "Tensor6": ParaView 5.11's default XDMF3 reader passes
+// its xx,xy,xz,yy,yz,zz through unchanged but labels six components XX,YY,ZZ,XY,YZ,XZ (so
+// "YY" would show xy), while the legacy reader expands it correctly; nine components read
+// the same in both (checked with pvpython).
+int WrittenComponents(PetscInt components) { return components == 1 ? 1 : components == 6 ? 9 : 3; }
 
 int WorkSlot(int written) { return written == 1 ? 0 : written == 3 ? 1 : 2; }
 
-const char *AttributeType(int written) { return written == 1 ? "Scalar" : written == 3 ? "Vector" : "Tensor6"; }
+const char *AttributeType(int written) { return written == 1 ? "Scalar" : written == 3 ? "Vector" : "Tensor"; }
 
-// Where component k of ours goes in the written row. Tensors: ours xx,yy,zz,xy,yz,xz,
-// XDMF Tensor6 xx,xy,xz,yy,yz,zz. Vectors keep their order (a 2-vector leaves z at 0).
-int WrittenSlot(PetscInt components, PetscInt k) {
-  static const int kTensor[6] = {0, 3, 5, 1, 4, 2};
-  return components == 6 ? kTensor[k] : static_cast<int>(k);
+// Where component k of ours goes in the written row (-1: nowhere). Tensors: ours
+// xx,yy,zz,xy,yz,xz fill both symmetric entries of the row-major 3x3. Vectors keep their
+// order (a 2-vector leaves z at 0).
+void WrittenSlots(PetscInt components, PetscInt k, int slots[2]) {
+  static const int kTensor[6][2] = {{0, -1}, {4, -1}, {8, -1}, {1, 3}, {5, 7}, {2, 6}};
+  slots[0] = components == 6 ? kTensor[k][0] : static_cast<int>(k);
+  slots[1] = components == 6 ? kTensor[k][1] : -1;
 }
 
 std::string XmlEscaped(const std::string &text) {
@@ -177,8 +183,12 @@ PetscErrorCode FieldWriter::WriteRows(Vec source, int source_components, Centeri
   PetscCall(WorkVec(centering, written, local_rows, &work));
   PetscCall(VecGetArrayRead(source, &in));
   PetscCall(VecGetArray(work, &out));
+  int slots[6][2];
+  for (PetscInt k = 0; k < source_components; ++k) WrittenSlots(source_components, k, slots[k]);
   for (PetscInt r = 0; r < local_rows; ++r)
-    for (PetscInt k = 0; k < source_components; ++k) out[r * written + WrittenSlot(source_components, k)] = in[r * source_components + k];
+    for (PetscInt k = 0; k < source_components; ++k)
+      for (int slot : slots[k])
+        if (slot >= 0) out[r * written + slot] = in[r * source_components + k];
   PetscCall(VecRestoreArray(work, &out));
   PetscCall(VecRestoreArrayRead(source, &in));
   PetscCall(PetscObjectSetName(reinterpret_cast<PetscObject>(work), dataset));

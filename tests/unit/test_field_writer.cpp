@@ -1,7 +1,7 @@
 // FieldWriter on hand-made grids (no DM): two quads in 2D and one hex in 3D, three output
 // steps each, on any number of ranks (rows split evenly, so with 2 ranks the hex's only
 // cell lives on rank 0 and rank 1 writes no cell rows). Reads the HDF5 back with VecLoad
-// and checks the padding of 2D data and the Tensor6 reordering.
+// and checks the padding of 2D data and the symmetric tensors expanded to 3x3.
 //   test_field_writer [-output_dir DIR]   (default build/tests/field_writer)
 // writes DIR/quad2d/volume.{h5,xmf} and DIR/hex3d/volume.{h5,xmf};
 // tests/cases/field_writer_parallel.sh checks them with scripts/check_output.py.
@@ -167,13 +167,13 @@ PetscErrorCode WriteAndCheck(const Mesh &mesh, const std::string &dir) {
   for (PetscInt n = 0; n < num_nodes && scalar_ok; ++n) scalar_ok = data[n] == NodeValue(20, n, 0);
   unit::check(scalar_ok, mesh.label + ": node scalar written");
 
-  // Ours xx,yy,zz,xy,yz,xz (k = 0..5) written as XDMF Tensor6 xx,xy,xz,yy,yz,zz.
-  const PetscInt ours_at[6] = {0, 3, 5, 1, 4, 2};
+  // Ours xx,yy,zz,xy,yz,xz (k = 0..5) written as the row-major 3x3 xx,xy,xz / xy,yy,yz / xz,yz,zz.
+  const PetscInt ours_at[9] = {0, 3, 5, 3, 1, 4, 5, 4, 2};
   PetscCall(ReadAll(h5, "/fields/stress", "000020", &data));
-  bool tensor_ok = data.size() == static_cast<size_t>(num_cells * 6);
+  bool tensor_ok = data.size() == static_cast<size_t>(num_cells * 9);
   for (PetscInt c = 0; c < num_cells && tensor_ok; ++c)
-    for (int j = 0; j < 6; ++j) tensor_ok = tensor_ok && data[c * 6 + j] == CellValue(20, c, ours_at[j]);
-  unit::check(tensor_ok, mesh.label + ": cell tensor in Tensor6 order xx,xy,xz,yy,yz,zz");
+    for (int j = 0; j < 9; ++j) tensor_ok = tensor_ok && data[c * 9 + j] == CellValue(20, c, ours_at[j]);
+  unit::check(tensor_ok, mesh.label + ": cell tensor written as symmetric row-major 3x3");
 
   PetscMPIInt rank = 0;
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
@@ -186,8 +186,8 @@ PetscErrorCode WriteAndCheck(const Mesh &mesh, const std::string &dir) {
     for (size_t at = xmf.find("<Time Value="); at != std::string::npos; at = xmf.find("<Time Value=", at + 1)) ++times;
     unit::check(times == 3, mesh.label + ": volume.xmf lists 3 steps (" + std::to_string(times) + ")");
     unit::check(xmf.find("volume.h5:/fields/stress/000020") != std::string::npos &&
-                    xmf.find("AttributeType=\"Tensor6\" Center=\"Cell\"") != std::string::npos,
-                mesh.label + ": volume.xmf points at the step 20 stress as a cell Tensor6");
+                    xmf.find("AttributeType=\"Tensor\" Center=\"Cell\"") != std::string::npos,
+                mesh.label + ": volume.xmf points at the step 20 stress as a cell Tensor");
   }
 
   PetscCall(ISDestroy(&topology));

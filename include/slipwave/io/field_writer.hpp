@@ -6,9 +6,10 @@
 // HDF5 layout of DIR/<name>.h5 (every dataset is [rows, components]):
 //   /geometry               float64 [nodes, 3]   (2D coordinates padded with z = 0)
 //   /topology               int     [cells, nodes_per_cell]  global node numbers
-//   /fields/<field>/<step>  float64 [nodes or cells, 1 | 3 | 6]; step zero-padded to 6 digits
+//   /fields/<field>/<step>  float64 [nodes or cells, 1 | 3 | 9]; step zero-padded to 6 digits
 // Components as written: 1 scalar; 3 vector (2-component vectors padded with z = 0);
-// 6 symmetric tensor in XDMF's Tensor6 order xx,xy,xz,yy,yz,zz.
+// 9 symmetric tensor as full row-major 3x3 (XDMF "Tensor"): XDMF "Tensor6" is mislabelled
+// by ParaView 5.11's default reader (see field_writer.cpp).
 // The HDF5 file is closed after every step and DIR/<name>.xmf is then replaced atomically,
 // so a run in progress can be opened in ParaView.
 #pragma once
@@ -59,7 +60,7 @@ class FieldWriter {
   struct FieldInfo {
     std::string name;
     Centering centering;
-    int components; // as written: 1, 3 or 6
+    int components; // as written: 1, 3 or 9
     bool operator==(const FieldInfo &o) const {
       return name == o.name && centering == o.centering && components == o.components;
     }
@@ -79,7 +80,7 @@ class FieldWriter {
   GridLayout grid_;
   PetscInt num_nodes_ = 0, num_cells_ = 0;
   PetscViewer viewer_ = nullptr; // open only while a step is written
-  // Reused conversion buffers per centering (Node, Cell) and written width (1, 3, 6).
+  // Reused conversion buffers per centering (Node, Cell) and written width (1, 3, 9).
   Vec work_[2][3] = {};
   // Distinct field lists seen so far and one record per step: all the writer keeps.
   std::vector<std::vector<FieldInfo>> field_sets_;
