@@ -16,12 +16,13 @@ for np in 1 2; do
   for grid in quad2d hex3d; do
     /usr/bin/python3 scripts/check_output.py "$out/np$np/$grid" --expect-steps 3 --expect-fields displacement,pressure,stress,damage
   done
+  /usr/bin/python3 scripts/check_output.py "$out/np$np/line2d" --grid interface --expect-steps 3 --expect-fields displacement,pressure,stress,damage
 done
 /usr/bin/python3 - "$out" <<'PY'
 import sys, h5py, numpy as np
 out = sys.argv[1]
-for grid in ("quad2d", "hex3d"):
-    with h5py.File(f"{out}/np1/{grid}/volume.h5") as a, h5py.File(f"{out}/np2/{grid}/volume.h5") as b:
+for grid, stem in (("quad2d", "volume"), ("hex3d", "volume"), ("line2d", "interface")):
+    with h5py.File(f"{out}/np1/{grid}/{stem}.h5") as a, h5py.File(f"{out}/np2/{grid}/{stem}.h5") as b:
         names = []
         a.visititems(lambda n, o: names.append(n) if isinstance(o, h5py.Dataset) else None)
         others = []

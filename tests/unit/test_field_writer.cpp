@@ -1,9 +1,10 @@
-// FieldWriter on hand-made grids (no DM): two quads in 2D and one hex in 3D, three output
-// steps each, on any number of ranks (rows split evenly, so with 2 ranks the hex's only
-// cell lives on rank 0 and rank 1 writes no cell rows). Reads the HDF5 back with VecLoad
+// FieldWriter on hand-made grids (no DM): two quads in 2D, one hex in 3D and a 2-segment
+// polyline grid named "interface" in 2D, three output steps each, on any number of ranks
+// (rows split evenly, so with 2 ranks the hex's only cell lives on rank 0 and rank 1 writes
+// no cell rows). Reads the HDF5 back with VecLoad
 // and checks the padding of 2D data and the symmetric tensors expanded to 3x3.
 //   test_field_writer [-output_dir DIR]   (default build/tests/field_writer)
-// writes DIR/quad2d/volume.{h5,xmf} and DIR/hex3d/volume.{h5,xmf};
+// writes DIR/quad2d/volume.{h5,xmf}, DIR/hex3d/volume.{h5,xmf}, DIR/line2d/interface.{h5,xmf};
 // tests/cases/field_writer_parallel.sh checks them with scripts/check_output.py.
 #include "slipwave/io/field_writer.hpp"
 
@@ -102,6 +103,9 @@ Mesh TwoQuads() {
   return {"2D two quads", {"volume", 2, "Quadrilateral", 4}, {0, 0, 1, 0, 2, 0, 0, 1, 1, 1, 2, 1}, {0, 1, 4, 3, 1, 2, 5, 4}};
 }
 
+// An interface as 2-node lines in 2D: 0---1---2
+Mesh ThreeNodeLine() { return {"2D polyline", {"interface", 2, "Polyline", 2}, {0, 0, 1, 0.5, 2, 0}, {0, 1, 1, 2}}; }
+
 Mesh OneHex() {
   return {"3D one hex",
           {"volume", 3, "Hexahedron", 8},
@@ -148,7 +152,8 @@ PetscErrorCode WriteAndCheck(const Mesh &mesh, const std::string &dir) {
   unit::check(repeated == PETSC_ERR_ARG_WRONG, mesh.label + ": a repeated step is refused");
   PetscCall(writer.Close());
 
-  const std::string h5 = dir + "/volume.h5";
+  const std::string stem = dir + "/" + mesh.layout.name;
+  const std::string h5 = stem + ".h5";
   std::vector<double> data;
   PetscCall(ReadAll(h5, "/", "geometry", &data));
   bool geometry_ok = data.size() == static_cast<size_t>(num_nodes * 3);
@@ -178,16 +183,16 @@ PetscErrorCode WriteAndCheck(const Mesh &mesh, const std::string &dir) {
   PetscMPIInt rank = 0;
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
   if (rank == 0) {
-    std::ifstream in(dir + "/volume.xmf");
+    std::ifstream in(stem + ".xmf");
     std::stringstream text;
     text << in.rdbuf();
     const std::string xmf = text.str();
     size_t times = 0;
     for (size_t at = xmf.find("<Time Value="); at != std::string::npos; at = xmf.find("<Time Value=", at + 1)) ++times;
-    unit::check(times == 3, mesh.label + ": volume.xmf lists 3 steps (" + std::to_string(times) + ")");
-    unit::check(xmf.find("volume.h5:/fields/stress/000020") != std::string::npos &&
+    unit::check(times == 3, mesh.label + ": index lists 3 steps (" + std::to_string(times) + ")");
+    unit::check(xmf.find(mesh.layout.name + ".h5:/fields/stress/000020") != std::string::npos &&
                     xmf.find("AttributeType=\"Tensor\" Center=\"Cell\"") != std::string::npos,
-                mesh.label + ": volume.xmf points at the step 20 stress as a cell Tensor");
+                mesh.label + ": index points at the step 20 stress as a cell Tensor");
   }
 
   PetscCall(ISDestroy(&topology));
@@ -202,6 +207,7 @@ PetscErrorCode Run() {
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-output_dir", dir, sizeof dir, nullptr));
   PetscCall(WriteAndCheck(TwoQuads(), std::string(dir) + "/quad2d"));
   PetscCall(WriteAndCheck(OneHex(), std::string(dir) + "/hex3d"));
+  PetscCall(WriteAndCheck(ThreeNodeLine(), std::string(dir) + "/line2d"));
   PetscFunctionReturn(0);
 }
 
