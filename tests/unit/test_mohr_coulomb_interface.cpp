@@ -193,7 +193,8 @@ Run3D turnPath(const InterfaceLaw &law, int n) {
       const double dw[2] = {leg == 0 ? h : 0.0, leg == 1 ? h : 0.0};
       const double D0 = s.dissipation;
       interfaceUpdate<3>(law, s, dw, 0.0);
-      r.admissible = r.admissible && yield3(law, s) <= 1e-12 * law.c;
+      // Roundoff bound relative to the current strength (the return tolerates 1e-13 of it).
+      r.admissible = r.admissible && yield3(law, s) <= 1e-12 * (law.c - s.sigma_N * law.tan_phi);
       r.dissipation_monotone = r.dissipation_monotone && s.dissipation >= D0;
     }
   r.sT[0] = s.sigma_T[0];

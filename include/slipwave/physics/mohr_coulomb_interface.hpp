@@ -34,11 +34,12 @@ struct InterfaceParams {
 // Per-pair constants derived once from InterfaceParams, so the update does no trigonometry.
 struct InterfaceLaw {
   double E, G, tan_phi, tan_psi, c, e_ini, sigma_t;
-  double H; // G + E tan(phi) tan(psi), the plastic modulus of the consistency condition
+  double H;     // G + E tan(phi) tan(psi), the plastic modulus of the consistency condition
+  double inv_H; // 1 / H
 
   explicit InterfaceLaw(const InterfaceParams &p)
       : E(p.E), G(p.G), tan_phi(std::tan(p.phi)), tan_psi(std::tan(p.psi)), c(p.c), e_ini(p.e_ini),
-        sigma_t(p.tensile_strength), H(p.G + p.E * std::tan(p.phi) * std::tan(p.psi)) {}
+        sigma_t(p.tensile_strength), H(p.G + p.E * std::tan(p.phi) * std::tan(p.psi)), inv_H(1.0 / H) {}
 };
 
 enum class InterfaceStatus : std::uint8_t { Stick = 0, Slip = 1, Open = 2 };
@@ -106,9 +107,11 @@ double exitFractionBisect(const double *a, const double *b, double R0, double d)
 
 // Exact exit fraction. In 2D |a + gamma b| is piecewise linear with a kink where sigma_T
 // changes sign, so f is linear on each piece and the root is exact. In 3D it is the larger
-// admissible root of (|b|^2 - d^2) g^2 + 2 (a.b + R0 d) g + (|a|^2 - R0^2) = 0 (spec 5.4).
+// admissible root of (|b|^2 - d^2) g^2 + 2 (a.b + R0 d) g + (|a|^2 - R0^2) = 0 (spec 5.4),
+// or -1 when roundoff leaves no admissible root (the caller then bisects). 'scale' bounds
+// the stress magnitudes involved.
 template <int NT>
-double exitFraction(const double *a, const double *b, double R0, double d) {
+double exitFraction(const double *a, const double *b, double R0, double d, double scale) {
   if constexpr (NT == 1) {
     const double a0 = a[0], b0 = b[0];
     const double f0 = std::fabs(a0) - R0, f1 = std::fabs(a0 + b0) - R0 + d;
@@ -131,7 +134,6 @@ double exitFraction(const double *a, const double *b, double R0, double d) {
       bb += b[i] * b[i];
     }
     const double A = bb - d * d, B = ab + R0 * d, C = aa - R0 * R0;
-    const double scale = std::sqrt(aa) + std::sqrt(bb) + std::fabs(R0) + std::fabs(d);
     double roots[2];
     int n = 0;
     if (std::fabs(A) <= 1e-14 * (bb + d * d)) {
@@ -145,22 +147,13 @@ double exitFraction(const double *a, const double *b, double R0, double d) {
         if (q != 0.0) roots[n++] = C / q;
       }
     }
-    bool found = false;
-    double best = 0.0;
+    double best = -1.0;
     for (int k = 0; k < n; ++k) {
       const double g = roots[k];
-      if (!(g >= -1e-12 && g <= 1.0 + 1e-12) || R0 - g * d < -1e-12 * scale || (found && g <= best)) continue;
-      best = g;
-      found = true;
+      // A root of the squared equation is a root of f only where R0 - g d >= 0.
+      if (g >= -1e-12 && g <= 1.0 + 1e-12 && R0 - g * d >= -1e-12 * scale && g > best) best = g;
     }
-    if (!found) return exitFractionBisect<NT>(a, b, R0, d);
-    best = best < 0.0 ? 0.0 : (best > 1.0 ? 1.0 : best);
-    // A root of the squared equation is a root of f only when R0 - g d >= 0; guard the
-    // tolerance above against a spurious pick.
-    double nn = 0.0;
-    for (int i = 0; i < NT; ++i) nn += (a[i] + best * b[i]) * (a[i] + best * b[i]);
-    if (std::fabs(std::sqrt(nn) - (R0 - best * d)) > 1e-10 * scale) return exitFractionBisect<NT>(a, b, R0, d);
-    return best;
+    return best < -0.5 ? -1.0 : (best < 0.0 ? 0.0 : (best > 1.0 ? 1.0 : best));
   }
 }
 
@@ -183,29 +176,51 @@ double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const doub
 
   double lambda = 0.0;
   double u_new = u_tr;
-  if (yieldValue(law, std::sqrt(nn_tr), sN_tr) <= 0.0) {
+  // f(trial) <= 0 compared in squares: no square root on the elastic path.
+  const double R_tr = law.c - sN_tr * law.tan_phi;
+  if (R_tr >= 0.0 && nn_tr <= R_tr * R_tr) {
     for (int i = 0; i < NT; ++i) s.sigma_T[i] = sT_tr[i];
   } else {
     const double R0 = law.c - s.sigma_N * law.tan_phi, d = dsN * law.tan_phi;
-    const double gamma = exitFraction<NT>(s.sigma_T, b, R0, d);
-    const double rest = 1.0 - gamma;
-    double sT_star[NT], nn_star = 0.0, nb = 0.0;
+    double b_l1 = 0.0;
+    for (int i = 0; i < NT; ++i) b_l1 += std::fabs(b[i]);
+    const double scale = std::fabs(R0) + std::fabs(d) + b_l1;
+    double gamma = exitFraction<NT>(s.sigma_T, b, R0, d, scale);
+    double sT_star[NT], nn_star = 0.0;
     for (int i = 0; i < NT; ++i) {
       sT_star[i] = s.sigma_T[i] + gamma * b[i];
       nn_star += sT_star[i] * sT_star[i];
-      nb += b[i] * b[i];
     }
+    double norm_star = std::sqrt(nn_star);
+    if constexpr (NT > 1) {
+      if (gamma < 0.0 || std::fabs(norm_star - (R0 - gamma * d)) > 1e-10 * scale) {
+        gamma = exitFractionBisect<NT>(s.sigma_T, b, R0, d);
+        nn_star = 0.0;
+        for (int i = 0; i < NT; ++i) {
+          sT_star[i] = s.sigma_T[i] + gamma * b[i];
+          nn_star += sT_star[i] * sT_star[i];
+        }
+        norm_star = std::sqrt(nn_star);
+      }
+    }
+    const double rest = 1.0 - gamma;
     const double sN_star = s.sigma_N + gamma * dsN;
-    const double norm_star = std::sqrt(nn_star), norm_b = std::sqrt(nb);
     // At the apex (sigma_T* = 0) the flow direction is the one the shear increment pushes to.
     double t_hat[NT];
-    const bool has_dir = norm_star > 1e-13 * (R0 + norm_b + std::fabs(law.c)) && norm_star > 0.0;
-    for (int i = 0; i < NT; ++i) t_hat[i] = has_dir ? sT_star[i] / norm_star : (norm_b > 0.0 ? b[i] / norm_b : 0.0);
+    if (norm_star > 1e-13 * scale) {
+      const double inv = 1.0 / norm_star;
+      for (int i = 0; i < NT; ++i) t_hat[i] = sT_star[i] * inv;
+    } else {
+      double nb = 0.0;
+      for (int i = 0; i < NT; ++i) nb += b[i] * b[i];
+      const double inv = nb > 0.0 ? 1.0 / std::sqrt(nb) : 0.0;
+      for (int i = 0; i < NT; ++i) t_hat[i] = b[i] * inv;
+    }
 
     double t_dot_b = 0.0;
     for (int i = 0; i < NT; ++i) t_dot_b += t_hat[i] * b[i];
     // (G t.dw_T + E tan(phi) dw_N) / H on the plastic part, with total (not elastic) rates.
-    lambda = rest * (t_dot_b + law.tan_phi * dsN) / law.H;
+    lambda = rest * (t_dot_b + law.tan_phi * dsN) * law.inv_H;
     if (lambda <= 0.0) {
       lambda = 0.0; // elastic unloading from the yield surface
       for (int i = 0; i < NT; ++i) s.sigma_T[i] = sT_tr[i];
@@ -227,12 +242,13 @@ double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const doub
 
   // Drift: return sigma_T radially at fixed sigma_N and book the excess as plastic slip; the
   // elastic energy removed, (|sigma_T|^2 - R^2) / 2G, is exactly the work of that slip.
+  // Excesses within roundoff of the strength (relative 1e-13) are left alone.
   double drift = 0.0;
   const double R = std::fmax(law.c - s.sigma_N * law.tan_phi, 0.0);
   double nn = 0.0;
   for (int i = 0; i < NT; ++i) nn += s.sigma_T[i] * s.sigma_T[i];
-  const double norm = std::sqrt(nn);
-  if (norm > R) {
+  if (nn > R * R * (1.0 + 2e-13)) {
+    const double norm = std::sqrt(nn);
     drift = norm - R;
     const double scale = R / norm, extra = drift / law.G;
     for (int i = 0; i < NT; ++i) {
