@@ -4,7 +4,7 @@ BUILD    ?= build
 comma    := ,
 CXX      := mpicxx
 PETSC_CFLAGS := $(shell pkg-config --cflags PETSc 2>/dev/null) $(shell pkg-config --cflags hdf5-openmpi 2>/dev/null)
-PETSC_LIBS   := $(shell pkg-config --libs PETSc 2>/dev/null) -lmetis
+PETSC_LIBS   := $(shell pkg-config --libs PETSc 2>/dev/null) $(shell pkg-config --libs hdf5-openmpi 2>/dev/null) -lmetis
 PETSC_RPATH  := $(patsubst -L%,-Wl$(comma)-rpath$(comma)%,$(filter -L%,$(shell pkg-config --libs PETSc 2>/dev/null)))
 OPT      ?= -O3 -march=native
 WARN     := -Wall -Wextra -Wno-unused-parameter

@@ -8,7 +8,7 @@ namespace {
 const char *g_program = "slipwave";
 
 bool isUserInputError(PetscErrorCode code) {
-  return code == PETSC_ERR_USER_INPUT || code == PETSC_ERR_FILE_OPEN || code == PETSC_ERR_ARG_OUTOFRANGE;
+  return code == PETSC_ERR_USER_INPUT || code == PETSC_ERR_FILE_OPEN || code == PETSC_ERR_ARG_OUTOFRANGE || code == PETSC_ERR_NOT_CONVERGED;
 }
 
 PetscErrorCode userInputHandler(MPI_Comm comm, int line, const char *func, const char *file, PetscErrorCode code,

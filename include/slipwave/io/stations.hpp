@@ -1,0 +1,40 @@
+// Stations: points given by coordinates (-station_coordinates x1,y1,x2,y2,... with
+// -station_names, or -stations_file with rows name,x,y[,z]) where u, v, a are interpolated
+// with the cell's shape functions every step. Each station belongs to the lowest rank whose
+// cell holds it, so the records do not depend on the partition. At the end rank 0 writes
+// DIR/stations/<name>.csv and DIR/stations.h5.
+#pragma once
+#include <petscdm.h>
+
+#include <string>
+#include <vector>
+
+#include "slipwave/fem/bulk_operator.hpp"
+
+namespace slipwave::io {
+
+class Stations {
+public:
+  PetscErrorCode Setup(DM dm, const fem::BulkOperator &bulk);
+  bool           empty() const { return names_.empty(); }
+  // Samples the global u, v, a at time t.
+  PetscErrorCode Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a);
+  PetscErrorCode Write(MPI_Comm comm, const std::string &dir) const;
+  PetscErrorCode Destroy();
+  const std::vector<std::string> &names() const { return names_; }
+
+private:
+  struct Local {
+    PetscInt            station;
+    std::vector<PetscInt> offsets; // local dof offsets of the cell's nodes
+    std::vector<double> shape;     // shape function values at the station
+    std::vector<double> record;    // rows of t, u[dim], v[dim], a[dim]
+  };
+  PetscInt                 dim_ = 0;
+  std::vector<std::string> names_;
+  std::vector<double>      coords_;
+  std::vector<Local>       local_;
+  Vec                      work_[3] = {nullptr, nullptr, nullptr};
+};
+
+} // namespace slipwave::io

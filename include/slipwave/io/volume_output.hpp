@@ -1,0 +1,26 @@
+// The volume grid for FieldWriter: node coordinates and cell connectivity in the global node
+// numbering of the displacement vector (node i = entries [i*dim, (i+1)*dim) of a global
+// vector), and per output step u, v, a at nodes plus cell stress and region id.
+#pragma once
+#include <petscdm.h>
+
+#include <string>
+
+#include "slipwave/fem/bulk_operator.hpp"
+#include "slipwave/io/field_writer.hpp"
+
+namespace slipwave::io {
+
+class VolumeOutput {
+public:
+  PetscErrorCode Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir);
+  PetscErrorCode Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a);
+  PetscErrorCode Close();
+
+private:
+  FieldWriter writer_;
+  Vec         geometry_ = nullptr, stress_ = nullptr, region_ = nullptr, u_local_ = nullptr;
+  IS          topology_ = nullptr;
+};
+
+} // namespace slipwave::io

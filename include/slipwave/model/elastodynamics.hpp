@@ -1,0 +1,53 @@
+// The semi-discrete elastodynamic system M a + C v + K u = f(t) on the mesh: lumped mass,
+// bulk stiffness (our element loop), boundary conditions and loads, Rayleigh damping.
+// ElastodynamicsRHS is the TS right-hand side for the "cd" type: it returns
+// a* = M^{-1}(f_ext - K u - beta K v_{n+1/2}) on free dofs and the prescribed acceleration
+// on held ones; the nodal part of C (dashpots, alpha M) goes to the TS as damping blocks.
+#pragma once
+#include <petscts.h>
+
+#include <string>
+#include <vector>
+
+#include "slipwave/fem/bulk_operator.hpp"
+#include "slipwave/mesh/mesh_builder.hpp"
+#include "slipwave/model/boundary_conditions.hpp"
+#include "slipwave/model/materials.hpp"
+#include "slipwave/physics/rayleigh_damping.hpp"
+
+namespace slipwave::model {
+
+struct StableStep {
+  double omega_max_bulk = 0; // Gershgorin bound on the largest angular frequency [rad/s]
+  double dt_bulk = 0;        // critical step of the bulk (with stiffness damping) [s]
+  double dt_cfl = 0;         // h_min / vp_max, for comparison only [s]
+  double dt_limit = 0;       // the limit a run must respect [s]
+  std::string governing;     // which constraint sets dt_limit
+};
+
+struct Elastodynamics {
+  MPI_Comm                        comm = MPI_COMM_NULL;
+  DM                              dm   = nullptr;
+  PetscInt                        dim  = 0;
+  mesh::MeshDescription           mesh;
+  std::vector<RegionMaterialInfo> materials;
+  fem::BulkOperator               bulk;
+  BoundaryConditions              bc;
+  double                          damping_ratio = 0, damping_f1 = 0, damping_f2 = 0;
+  physics::RayleighCoefficients   rayleigh{0, 0};
+
+  Vec mass = nullptr, inv_mass = nullptr; // lumped, per dof
+  Vec damping_blocks = nullptr;           // per node (C_abs + alpha M)/m, held dofs decoupled; null if none
+  Vec u_local = nullptr, f_local = nullptr;
+  // Parts of the last RHS evaluation, for the energy ledger.
+  Vec       f_internal = nullptr, f_external = nullptr, f_input = nullptr, f_stiffness_damping = nullptr;
+  PetscReal rhs_time = 0;
+  TS        ts = nullptr; // set by the driver: the RHS reads the half-step velocity from it
+};
+
+PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);
+PetscErrorCode ElastodynamicsDestroy(Elastodynamics *model);
+PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx);
+PetscErrorCode ElastodynamicsStableStep(Elastodynamics *model, StableStep *step);
+
+} // namespace slipwave::model

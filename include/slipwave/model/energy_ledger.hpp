@@ -1,0 +1,38 @@
+// The energy budget of a run. Central difference conserves, for a linear system at constant
+// step h, the shadow energy W_{n+1/2} = ½ v_{n+1/2}ᵀ M v_{n+1/2} + ½ u_nᵀ K u_{n+1}, and
+//   W_{n+1/2} − W_{n−1/2} = h v_n · f_n,   f_n = M a_n + K u_n (all non-internal forces).
+// The ledger books h v_n·f_n term by term (incident-wave input, gravity and tractions,
+// reactions of held dofs, minus dashpot absorption and Rayleigh damping), so
+//   balance error = W_{n+1/2} − W_{1/2} − Σ booked work
+// is round-off for a consistent discretisation, and a growth of it flags an instability.
+#pragma once
+#include <petscts.h>
+
+#include "slipwave/model/elastodynamics.hpp"
+
+namespace slipwave::model {
+
+struct EnergyLedger {
+  double kinetic = 0;   // ½ v_nᵀ M v_n
+  double strain  = 0;   // ½ u_nᵀ K u_n
+  double input   = 0;   // cumulative work of the incident-wave traction
+  double external = 0;  // cumulative work of gravity and tractions
+  double reactions = 0; // cumulative work of held dofs (prescribed velocity)
+  double absorbed  = 0; // cumulative energy taken by absorbing dashpots
+  double damped    = 0; // cumulative Rayleigh dissipation
+  double shadow    = 0; // W_{n+1/2}
+  double shadow_start = 0;
+  double balance_error = 0;
+  double scale = 0;     // largest energy magnitude seen, to make the error relative
+  double h_prev = 0;    // the step before the current one
+  bool   started = false;
+
+  double relativeError() const { return scale > 0 ? balance_error / scale : 0.0; }
+};
+
+// Call once at t_0 (after the initial acceleration) and after every step, with the step size
+// h that the next step will use. Work is booked with the mean of the steps before and after
+// t_n, which keeps the identity to O(Δh) when the step changes.
+PetscErrorCode EnergyLedgerUpdate(Elastodynamics *model, TS ts, PetscReal h, EnergyLedger *ledger);
+
+} // namespace slipwave::model

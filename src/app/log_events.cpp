@@ -1,0 +1,23 @@
+#include "slipwave/app/log_events.hpp"
+
+namespace slipwave::app {
+
+PetscLogEvent event_bulk_force, event_boundary, event_energy, event_stations, event_output, event_guard;
+PetscLogStage stage_setup, stage_solve;
+
+PetscErrorCode LogEventsRegister() {
+  PetscClassId id;
+  PetscFunctionBeginUser;
+  PetscCall(PetscClassIdRegister("slipwave", &id));
+  PetscCall(PetscLogEventRegister("SW:Bulk:Force", id, &event_bulk_force));
+  PetscCall(PetscLogEventRegister("SW:Boundary:Apply", id, &event_boundary));
+  PetscCall(PetscLogEventRegister("SW:Energy:Ledger", id, &event_energy));
+  PetscCall(PetscLogEventRegister("SW:IO:Stations", id, &event_stations));
+  PetscCall(PetscLogEventRegister("SW:IO:Fields", id, &event_output));
+  PetscCall(PetscLogEventRegister("SW:Guard:Check", id, &event_guard));
+  PetscCall(PetscLogStageRegister("Setup", &stage_setup));
+  PetscCall(PetscLogStageRegister("Solve", &stage_solve));
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::app

@@ -1,0 +1,262 @@
+#include "slipwave/app/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "slipwave/app/log_events.hpp"
+#include "slipwave/app/options_check.hpp"
+#include "slipwave/io/stations.hpp"
+#include "slipwave/io/volume_output.hpp"
+#include "slipwave/model/elastodynamics.hpp"
+#include "slipwave/model/energy_ledger.hpp"
+#include "slipwave/time/central_difference.hpp"
+
+namespace slipwave::app {
+namespace {
+
+struct RunOptions {
+  char      output_dir[PETSC_MAX_PATH_LEN] = "output";
+  PetscReal output_interval                = -1; // [s]; <0: 50 frames over the run
+  PetscReal safety                         = 0.9;
+  PetscReal progress_interval              = 5.0; // wall seconds
+  PetscReal energy_growth_limit            = 2.0;
+  PetscBool dry_run                        = PETSC_FALSE;
+  PetscBool fields                         = PETSC_TRUE;
+};
+
+struct Run {
+  RunOptions           opt;
+  model::Elastodynamics model;
+  model::StableStep    step;
+  model::EnergyLedger  ledger;
+  io::Stations         stations;
+  io::VolumeOutput     volume;
+  FILE                *energy_csv = nullptr;
+  PetscReal            next_output = 0, max_time = 0;
+  PetscInt             frames = 0;
+  PetscLogDouble       wall_start = 0, wall_last_progress = 0;
+  PetscMPIInt          rank = 0;
+};
+
+PetscErrorCode readRunOptions(MPI_Comm comm, RunOptions *o) {
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, "", "Run control and output", "slipwave");
+  PetscCall(PetscOptionsString("-output_dir", "directory for volume.xmf/h5, stations, energy.csv", "SimulationRun", o->output_dir, o->output_dir, sizeof o->output_dir,
+                               nullptr));
+  PetscCall(PetscOptionsReal("-output_interval", "time between field outputs [s] (default: 50 frames over -ts_max_time)", "SimulationRun", o->output_interval,
+                             &o->output_interval, nullptr));
+  PetscCall(PetscOptionsBool("-output_fields", "write volume fields (HDF5 + XDMF)", "SimulationRun", o->fields, &o->fields, nullptr));
+  PetscCall(PetscOptionsReal("-time_step_safety", "time step as a fraction of the stable limit, used when -ts_dt is not given (0 < s <= 1)", "SimulationRun",
+                             o->safety, &o->safety, nullptr));
+  PetscCall(PetscOptionsReal("-progress_interval", "wall-clock seconds between progress lines (0: every step)", "SimulationRun", o->progress_interval,
+                             &o->progress_interval, nullptr));
+  PetscCall(PetscOptionsReal("-energy_growth_limit", "stop when kinetic+strain energy exceeds this multiple of the energy put in (divergence guard)", "SimulationRun",
+                             o->energy_growth_limit, &o->energy_growth_limit, nullptr));
+  PetscCall(PetscOptionsBool("-dry_run", "print the setup report (stable step, what governs it, points per wavelength) and stop", "SimulationRun", o->dry_run,
+                             &o->dry_run, nullptr));
+  PetscOptionsEnd();
+  PetscCheck(o->safety > 0 && o->safety <= 1, comm, PETSC_ERR_USER_INPUT, "-time_step_safety = %g; allowed: 0 < s <= 1", (double)o->safety);
+  PetscFunctionReturn(0);
+}
+
+// Where the first non-finite value is: rank, node, coordinates, field, component.
+PetscErrorCode divergenceGuard(Run *r, PetscReal h, PetscInt step, PetscReal t, Vec u, Vec v) {
+  MPI_Comm comm = r->model.comm;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(event_guard, 0, 0, 0, 0));
+  PetscReal nu, nv;
+  PetscCall(VecNorm(u, NORM_INFINITY, &nu));
+  PetscCall(VecNorm(v, NORM_INFINITY, &nv));
+  PetscCall(PetscLogEventEnd(event_guard, 0, 0, 0, 0));
+  if (std::isfinite(nu) && std::isfinite(nv)) {
+    const double put_in = std::fabs(r->ledger.shadow_start) + std::fabs(r->ledger.input) + std::fabs(r->ledger.external) + std::fabs(r->ledger.reactions);
+    const double energy = r->ledger.kinetic + std::fabs(r->ledger.strain);
+    PetscCheck(!(put_in > 0 && energy > r->opt.energy_growth_limit * put_in), comm, PETSC_ERR_NOT_CONVERGED,
+               "diverged at step %" PetscInt_FMT ", t = %g s: kinetic + strain energy %g J exceeds %g x the energy put in (%g J); the time step %g s may be above the stable limit %g s",
+               step, (double)t, energy, (double)r->opt.energy_growth_limit, put_in, (double)h, r->step.dt_limit);
+    PetscFunctionReturn(0);
+  }
+  // Locate: the lowest global dof that is not finite, in u first, then v.
+  const char *names[2] = {"displacement", "velocity"};
+  Vec         vecs[2]  = {u, v};
+  for (int f = 0; f < 2; ++f) {
+    PetscInt           n, lo, bad = PETSC_MAX_INT;
+    const PetscScalar *x;
+    PetscCall(VecGetOwnershipRange(vecs[f], &lo, nullptr));
+    PetscCall(VecGetLocalSize(vecs[f], &n));
+    PetscCall(VecGetArrayRead(vecs[f], &x));
+    for (PetscInt i = 0; i < n && bad == PETSC_MAX_INT; ++i)
+      if (!std::isfinite(PetscRealPart(x[i]))) bad = lo + i;
+    PetscCall(VecRestoreArrayRead(vecs[f], &x));
+    PetscInt first;
+    PetscCallMPI(MPI_Allreduce(&bad, &first, 1, MPIU_INT, MPI_MIN, comm));
+    if (first == PETSC_MAX_INT) continue;
+    const PetscInt dim = r->model.dim;
+    SETERRQ(comm, PETSC_ERR_NOT_CONVERGED,
+            "diverged at step %" PetscInt_FMT ", t = %g s: %s is not finite at node %" PetscInt_FMT " (global numbering of the output), component %c; stable step limit %g s (%s)",
+            step, (double)t, names[f], first / dim, "xyz"[first % dim], r->step.dt_limit, r->step.governing.c_str());
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
+  auto *r = static_cast<Run *>(ctx);
+  Vec   v, a;
+  PetscReal h;
+  PetscFunctionBeginUser;
+  PetscCall(TS2GetSolution(ts, &u, &v));
+  PetscCall(time::CentralDifferenceGetAcceleration(ts, &a));
+  PetscCall(TSGetTimeStep(ts, &h));
+  PetscCall(model::EnergyLedgerUpdate(&r->model, ts, h, &r->ledger));
+  PetscCall(divergenceGuard(r, h, step, t, u, v));
+  PetscCall(r->stations.Sample(r->model.dm, t, u, v, a));
+  if (r->rank == 0 && r->energy_csv) {
+    const model::EnergyLedger &e = r->ledger;
+    std::fprintf(r->energy_csv, "%" PetscInt_FMT ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.3e\n", step, (double)t, e.kinetic, e.strain, e.input,
+                 e.external + e.reactions, e.absorbed, e.damped, e.shadow - e.shadow_start, e.balance_error, e.relativeError());
+  }
+  const bool last = t >= r->max_time * (1 - 1e-12);
+  if (r->opt.fields && (t >= r->next_output * (1 - 1e-12) || last || step == 0)) {
+    PetscCall(r->volume.Write(r->model.dm, r->model.bulk, r->frames++, t, u, v, a));
+    while (r->next_output <= t * (1 + 1e-12)) r->next_output += r->opt.output_interval;
+  }
+  PetscLogDouble now;
+  PetscCall(PetscTime(&now));
+  if (step == 0 || last || now - r->wall_last_progress >= r->opt.progress_interval) {
+    const double elapsed = now - r->wall_start;
+    const double eta     = t > 0 ? elapsed * (r->max_time - t) / t : 0;
+    PetscCall(PetscPrintf(r->model.comm, "step %6" PetscInt_FMT "  t = %.4e s  dt = %.3e s  wall %7.1f s  ETA %7.1f s  energy kin %.3e strain %.3e  balance %.1e\n",
+                          step, (double)t, (double)h, elapsed, eta, r->ledger.kinetic, r->ledger.strain, r->ledger.relativeError()));
+    r->wall_last_progress = now;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode report(Run *r, TS ts) {
+  MPI_Comm    comm = r->model.comm;
+  PetscMPIInt size;
+  PetscReal   dt;
+  PetscInt    n_nodes, ncell_local = r->model.bulk.cellCount(), ncell;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(VecGetSize(r->model.mass, &n_nodes));
+  PetscCallMPI(MPI_Allreduce(&ncell_local, &ncell, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCall(TSGetTimeStep(ts, &dt));
+  PetscCall(PetscPrintf(comm, "slipwave: explicit elastodynamics, %" PetscInt_FMT "D %s, %d rank%s\n", r->model.dim, r->model.dim == 2 ? "plane strain" : "",
+                        size, size > 1 ? "s" : ""));
+  PetscCall(PetscPrintf(comm, "  mesh: %s, %" PetscInt_FMT " cells, %" PetscInt_FMT " nodes, %" PetscInt_FMT " distinct element matrices on rank 0\n",
+                        r->model.mesh.source.c_str(), ncell, n_nodes / r->model.dim, r->model.bulk.distinctMatrices()));
+  const double fmax = r->model.bc.input.active() ? r->model.bc.input.topFrequency() : 0.0;
+  for (const auto &m : r->model.materials) {
+    PetscCall(PetscPrintf(comm, "  region %-10s rho %8.1f kg/m3  vp %8.1f m/s  vs %8.1f m/s", m.region.c_str(), m.elastic.rho, m.elastic.vp, m.elastic.vs));
+    if (fmax > 0) PetscCall(PetscPrintf(comm, "  %5.1f points per S wavelength at %.2f Hz (h_min %.3g m)", m.elastic.vs / fmax / r->model.bulk.minCellSize(), fmax,
+                                        r->model.bulk.minCellSize()));
+    PetscCall(PetscPrintf(comm, "\n"));
+  }
+  std::string bcs;
+  for (size_t i = 0; i < r->model.bc.names.size(); ++i) bcs += " " + r->model.bc.names[i] + "=" + model::boundaryTypeName(r->model.bc.types[i]);
+  PetscCall(PetscPrintf(comm, "  boundaries:%s\n", bcs.c_str()));
+  if (r->model.bc.input_wave != "none")
+    PetscCall(PetscPrintf(comm, "  input: %s wave through '%s', %s\n", r->model.bc.input_wave.c_str(), r->model.bc.input_boundary.c_str(),
+                          r->model.bc.input.describe().c_str()));
+  if (r->model.damping_ratio > 0)
+    PetscCall(PetscPrintf(comm, "  Rayleigh damping %.3g %% at %g and %g Hz: alpha %.4g 1/s, beta %.4g s\n", 100 * r->model.damping_ratio, r->model.damping_f1,
+                          r->model.damping_f2, r->model.rayleigh.alpha, r->model.rayleigh.beta));
+  PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", r->step.dt_limit, r->step.governing.c_str(), r->step.dt_cfl));
+  PetscCall(PetscPrintf(comm, "  time step %.4e s = %.3f of the limit; %.0f steps to t = %g s\n", (double)dt, dt / r->step.dt_limit, std::ceil(r->max_time / dt),
+                        (double)r->max_time));
+  PetscCall(PetscPrintf(comm, "  output: %s/\n", r->opt.output_dir));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode SimulationRun(MPI_Comm comm) {
+  Run *r = new Run();
+  TS   ts;
+  Vec  u, v;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &r->rank));
+  PetscCall(LogEventsRegister());
+  PetscCall(time::CentralDifferenceRegister());
+  PetscCall(PetscLogStagePush(stage_setup));
+  PetscCall(readRunOptions(comm, &r->opt));
+  PetscCall(model::ElastodynamicsCreate(comm, &r->model));
+  PetscCall(model::ElastodynamicsStableStep(&r->model, &r->step));
+  PetscCall(r->stations.Setup(r->model.dm, r->model.bulk));
+
+  PetscCall(TSCreate(comm, &ts));
+  PetscCall(TSSetType(ts, time::kTSCentralDifference));
+  PetscCall(TSSetRHSFunction(ts, nullptr, model::ElastodynamicsRHS, &r->model));
+  PetscCall(TSSetMaxTime(ts, 1.0));
+  PetscCall(TSSetMaxSteps(ts, PETSC_MAX_INT));
+  PetscCall(TSSetExactFinalTime(ts, TS_EXACTFINALTIME_MATCHSTEP));
+  PetscCall(TSSetTimeStep(ts, r->opt.safety * r->step.dt_limit));
+  PetscCall(TSSetFromOptions(ts));
+  PetscBool user_dt;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-ts_dt", &user_dt));
+  PetscCall(TSGetMaxTime(ts, &r->max_time));
+  if (!user_dt && r->max_time > 0) {
+    // A whole number of equal steps: a shortened last step would break the constant-step
+    // energy identity the ledger checks.
+    PetscCall(TSSetTimeStep(ts, r->max_time / std::ceil(r->max_time / (r->opt.safety * r->step.dt_limit))));
+  }
+  r->model.ts = ts;
+  PetscReal dt;
+  PetscCall(TSGetTimeStep(ts, &dt));
+  PetscCheck(dt <= r->step.dt_limit, comm, PETSC_ERR_USER_INPUT,
+             "-ts_dt = %.6g s is above the stable limit %.6g s (%s); allowed: 0 < dt <= %.6g s (omit -ts_dt to use %.2f of the limit)", (double)dt, r->step.dt_limit,
+             r->step.governing.c_str(), r->step.dt_limit, (double)r->opt.safety);
+  PetscCheck(dt > 0, comm, PETSC_ERR_USER_INPUT, "-ts_dt = %g; allowed: 0 < dt <= %.6g s", (double)dt, r->step.dt_limit);
+  PetscCheck(r->max_time > 0, comm, PETSC_ERR_USER_INPUT, "-ts_max_time = %g; allowed: > 0 s", (double)r->max_time);
+  if (r->opt.output_interval <= 0) r->opt.output_interval = r->max_time / 50;
+  PetscCall(time::CentralDifferenceSetNodalDamping(ts, r->model.dim, r->model.damping_blocks));
+  PetscCall(OptionsErrorIfUnused(comm));
+  PetscCall(report(r, ts));
+  PetscCall(PetscLogStagePop());
+  if (r->opt.dry_run) {
+    PetscCall(PetscPrintf(comm, "dry run: stopping before the first step\n"));
+  } else {
+    if (r->rank == 0) {
+      std::filesystem::create_directories(r->opt.output_dir);
+      r->energy_csv = std::fopen((std::string(r->opt.output_dir) + "/energy.csv").c_str(), "w");
+      PetscCheck(r->energy_csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output_dir = %s: cannot write energy.csv there", r->opt.output_dir);
+      std::fprintf(r->energy_csv, "step,time,kinetic,strain,input_work,external_work,absorbed,damped,stored_change,balance_error,relative_balance_error\n");
+    }
+    if (r->opt.fields) PetscCall(r->volume.Open(r->model.dm, r->model.bulk, r->opt.output_dir));
+    PetscCall(DMCreateGlobalVector(r->model.dm, &u));
+    PetscCall(VecDuplicate(u, &v));
+    PetscCall(VecZeroEntries(u));
+    PetscCall(VecZeroEntries(v));
+    PetscCall(TS2SetSolution(ts, u, v));
+    PetscCall(TSMonitorSet(ts, monitor, r, nullptr));
+    PetscCall(time::CentralDifferenceComputeInitialAcceleration(ts));
+    PetscCall(PetscTime(&r->wall_start));
+    r->wall_last_progress = r->wall_start;
+    PetscCall(PetscLogStagePush(stage_solve));
+    PetscCall(TSSolve(ts, u));
+    PetscCall(PetscLogStagePop());
+    PetscLogDouble wall_end;
+    PetscCall(PetscTime(&wall_end));
+    PetscInt steps;
+    PetscCall(TSGetStepNumber(ts, &steps));
+    if (r->energy_csv) std::fclose(r->energy_csv);
+    PetscCall(r->stations.Write(comm, r->opt.output_dir));
+    if (r->opt.fields) PetscCall(r->volume.Close());
+    PetscCall(PetscPrintf(comm, "done: %" PetscInt_FMT " steps in %.2f s wall (%.3g s per step); energy balance error %.2e of the largest energy\n", steps,
+                          wall_end - r->wall_start, (wall_end - r->wall_start) / std::max<PetscInt>(steps, 1), r->ledger.relativeError()));
+    PetscCall(PetscPrintf(comm, "output in %s/: volume.xmf (open in ParaView), energy.csv%s\n", r->opt.output_dir, r->stations.empty() ? "" : ", stations/*.csv, stations.h5"));
+    PetscCall(VecDestroy(&u));
+    PetscCall(VecDestroy(&v));
+  }
+  PetscCall(TSDestroy(&ts));
+  PetscCall(r->stations.Destroy());
+  PetscCall(model::ElastodynamicsDestroy(&r->model));
+  delete r;
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::app

@@ -1,0 +1,207 @@
+#include "slipwave/io/stations.hpp"
+
+#include <hdf5.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "slipwave/app/log_events.hpp"
+
+namespace slipwave::io {
+namespace {
+
+PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, std::vector<std::string> *names, std::vector<double> *coords) {
+  PetscFunctionBeginUser;
+  std::ifstream in(file);
+  PetscCheck(in.good(), comm, PETSC_ERR_FILE_OPEN, "-stations_file = %s: cannot open the file; allowed: a CSV file with rows name,x,y%s", file, dim == 3 ? ",z" : "");
+  std::string line;
+  int         lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (line.empty() || line[0] == '#') continue;
+    std::stringstream        ss(line);
+    std::string              cell;
+    std::vector<std::string> cells;
+    while (std::getline(ss, cell, ',')) cells.push_back(cell);
+    if (lineno == 1 && cells.size() > 1 && cells[1].find_first_of("0123456789") == std::string::npos) continue; // header
+    PetscCheck((PetscInt)cells.size() == dim + 1, comm, PETSC_ERR_USER_INPUT, "-stations_file = %s, line %d: %zu columns; allowed: name,x,y%s", file, lineno,
+               cells.size(), dim == 3 ? ",z" : "");
+    names->push_back(cells[0]);
+    for (PetscInt d = 0; d < dim; ++d) {
+      char        *end;
+      const double x = std::strtod(cells[1 + d].c_str(), &end);
+      PetscCheck(end != cells[1 + d].c_str(), comm, PETSC_ERR_USER_INPUT, "-stations_file = %s, line %d: '%s' is not a number", file, lineno, cells[1 + d].c_str());
+      coords->push_back(x);
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk) {
+  MPI_Comm  comm = PetscObjectComm((PetscObject)dm);
+  char      file[PETSC_MAX_PATH_LEN] = "", names[4096] = "";
+  PetscReal xs[300];
+  PetscInt  nx = 300;
+  PetscBool has_file, has_coords;
+  PetscFunctionBeginUser;
+  dim_ = bulk.dimension();
+  PetscOptionsBegin(comm, "", "Stations (time series at points)", "slipwave");
+  PetscCall(PetscOptionsString("-stations_file", "CSV file with rows name,x,y[,z] [m]", "Stations::Setup", file, file, sizeof file, &has_file));
+  PetscCall(PetscOptionsRealArray("-station_coordinates", "x1,y1[,z1],x2,y2[,z2],... [m]", "Stations::Setup", xs, &nx, &has_coords));
+  PetscCall(PetscOptionsString("-station_names", "comma-separated names for -station_coordinates (default S1, S2, ...)", "Stations::Setup", names, names, sizeof names,
+                               nullptr));
+  PetscOptionsEnd();
+  if (has_file) PetscCall(readStationFile(comm, file, dim_, &names_, &coords_));
+  if (has_coords) {
+    PetscCheck(nx % dim_ == 0, comm, PETSC_ERR_USER_INPUT, "-station_coordinates has %" PetscInt_FMT " values; allowed: a multiple of %" PetscInt_FMT, nx, dim_);
+    std::stringstream ss(names);
+    for (PetscInt s = 0; s < nx / dim_; ++s) {
+      std::string name;
+      if (!std::getline(ss, name, ',') || name.empty()) name = "S" + std::to_string(names_.size() + 1);
+      names_.push_back(name);
+      for (PetscInt d = 0; d < dim_; ++d) coords_.push_back(xs[s * dim_ + d]);
+    }
+  }
+  PetscMPIInt rank, size;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  const fem::CellShape shape = bulk.shape();
+  const PetscInt       nen   = bulk.nodesPerCell();
+  for (size_t s = 0; s < names_.size(); ++s) {
+    const double *x     = &coords_[s * dim_];
+    PetscInt      found = -1;
+    double        xi[3], N[8];
+    for (PetscInt c = 0; c < bulk.cellCount() && found < 0; ++c) {
+      const double *xc     = bulk.cellCoordinates(c);
+      bool          inside = true;
+      for (PetscInt d = 0; d < dim_ && inside; ++d) {
+        double lo = 1e300, hi = -1e300;
+        for (PetscInt a = 0; a < nen; ++a) {
+          lo = std::min(lo, xc[a * dim_ + d]);
+          hi = std::max(hi, xc[a * dim_ + d]);
+        }
+        const double tol = 1e-9 * (hi - lo);
+        inside           = x[d] >= lo - tol && x[d] <= hi + tol;
+      }
+      if (inside && fem::referenceCoordinates(shape, xc, x, xi, 1e-8)) found = c;
+    }
+    PetscMPIInt claim = found >= 0 ? rank : size, owner;
+    PetscCallMPI(MPI_Allreduce(&claim, &owner, 1, MPI_INT, MPI_MIN, comm));
+    PetscCheck(owner < size, comm, PETSC_ERR_USER_INPUT, "station '%s' at (%g, %g%s) lies outside the mesh; allowed: points inside the mesh", names_[s].c_str(), x[0], x[1],
+               dim_ == 3 ? ", z" : "");
+    if (owner == rank) {
+      Local l;
+      l.station = (PetscInt)s;
+      fem::shapeFunctions(shape, xi, N);
+      for (PetscInt a = 0; a < nen; ++a) {
+        l.offsets.push_back(bulk.cellNodeOffset(found, a));
+        l.shape.push_back(N[a]);
+      }
+      local_.push_back(std::move(l));
+    }
+  }
+  if (!names_.empty())
+    for (Vec &w : work_) PetscCall(DMCreateLocalVector(dm, &w));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Stations::Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a) {
+  PetscFunctionBeginUser;
+  if (names_.empty()) PetscFunctionReturn(0);
+  PetscCall(PetscLogEventBegin(app::event_stations, 0, 0, 0, 0));
+  Vec                globals[3] = {u, v, a};
+  const PetscScalar *arr[3];
+  for (int k = 0; k < 3; ++k) {
+    PetscCall(DMGlobalToLocal(dm, globals[k], INSERT_VALUES, work_[k]));
+    PetscCall(VecGetArrayRead(work_[k], &arr[k]));
+  }
+  for (Local &l : local_) {
+    l.record.push_back(t);
+    for (int k = 0; k < 3; ++k)
+      for (PetscInt d = 0; d < dim_; ++d) {
+        double s = 0;
+        for (size_t n = 0; n < l.offsets.size(); ++n) s += l.shape[n] * PetscRealPart(arr[k][l.offsets[n] + d]);
+        l.record.push_back(s);
+      }
+  }
+  for (int k = 0; k < 3; ++k) PetscCall(VecRestoreArrayRead(work_[k], &arr[k]));
+  PetscCall(PetscLogEventEnd(app::event_stations, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Stations::Write(MPI_Comm comm, const std::string &dir) const {
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  if (names_.empty()) PetscFunctionReturn(0);
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  const int row = 1 + 3 * (int)dim_;
+  // Every record goes to rank 0, station by station, in station order.
+  std::vector<std::vector<double>> records(names_.size());
+  for (size_t s = 0; s < names_.size(); ++s) {
+    int                 mine = 0, count = 0;
+    const Local        *l    = nullptr;
+    for (const Local &x : local_)
+      if (x.station == (PetscInt)s) l = &x;
+    mine = l ? (int)l->record.size() : -1;
+    PetscMPIInt owner_claim = l ? rank : INT32_MAX, owner;
+    PetscCallMPI(MPI_Allreduce(&owner_claim, &owner, 1, MPI_INT, MPI_MIN, comm));
+    if (rank == owner) count = mine;
+    PetscCallMPI(MPI_Bcast(&count, 1, MPI_INT, owner, comm));
+    records[s].resize(count);
+    if (rank == owner && owner == 0) records[s] = l->record;
+    else if (rank == owner) PetscCallMPI(MPI_Send(l->record.data(), count, MPI_DOUBLE, 0, (int)s, comm));
+    else if (rank == 0) PetscCallMPI(MPI_Recv(records[s].data(), count, MPI_DOUBLE, owner, (int)s, comm, MPI_STATUS_IGNORE));
+  }
+  if (rank != 0) PetscFunctionReturn(0);
+  std::filesystem::create_directories(dir + "/stations");
+  const char *axes = "xyz";
+  for (size_t s = 0; s < names_.size(); ++s) {
+    const std::string path = dir + "/stations/" + names_[s] + ".csv";
+    FILE             *fp   = std::fopen(path.c_str(), "w");
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", path.c_str());
+    std::fprintf(fp, "t");
+    for (const char *q : {"u", "v", "a"})
+      for (PetscInt d = 0; d < dim_; ++d) std::fprintf(fp, ",%s_%c", q, axes[d]);
+    std::fprintf(fp, "\n");
+    for (size_t r = 0; r + row <= records[s].size(); r += row) {
+      for (int k = 0; k < row; ++k) std::fprintf(fp, k ? ",%.17g" : "%.17g", records[s][r + k]);
+      std::fprintf(fp, "\n");
+    }
+    std::fclose(fp);
+  }
+  const std::string h5path = dir + "/stations.h5";
+  hid_t             file   = H5Fcreate(h5path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot create %s", h5path.c_str());
+  for (size_t s = 0; s < names_.size(); ++s) {
+    const hsize_t nt    = records[s].size() / row;
+    hid_t         group = H5Gcreate2(file, names_[s].c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    const char   *dsets[4] = {"time", "displacement", "velocity", "acceleration"};
+    for (int q = 0; q < 4; ++q) {
+      const int           width = q == 0 ? 1 : (int)dim_;
+      std::vector<double> buf(nt * width);
+      for (hsize_t r = 0; r < nt; ++r)
+        for (int k = 0; k < width; ++k) buf[r * width + k] = records[s][r * row + (q == 0 ? 0 : 1 + (q - 1) * dim_ + k)];
+      hsize_t dims[2] = {nt, (hsize_t)width};
+      hid_t   space   = H5Screate_simple(q == 0 ? 1 : 2, dims, nullptr);
+      hid_t   dset    = H5Dcreate2(group, dsets[q], H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      H5Dwrite(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data());
+      H5Dclose(dset);
+      H5Sclose(space);
+    }
+    H5Gclose(group);
+  }
+  H5Fclose(file);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Stations::Destroy() {
+  PetscFunctionBeginUser;
+  for (Vec &w : work_) PetscCall(VecDestroy(&w));
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::io

@@ -1,0 +1,88 @@
+#include "slipwave/io/volume_output.hpp"
+
+#include <vector>
+
+#include "slipwave/app/log_events.hpp"
+
+namespace slipwave::io {
+
+PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir) {
+  MPI_Comm     comm = PetscObjectComm((PetscObject)dm);
+  const PetscInt dim = bulk.dimension(), nen = bulk.nodesPerCell(), ncell = bulk.cellCount();
+  PetscSection gsection;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalSection(dm, &gsection));
+  std::vector<PetscInt> conn(ncell * nen);
+  for (PetscInt c = 0; c < ncell; ++c)
+    for (PetscInt a = 0; a < nen; ++a) {
+      PetscInt off;
+      PetscCall(PetscSectionGetOffset(gsection, bulk.cellVertex(c, a), &off));
+      if (off < 0) off = -(off + 1); // a ghost vertex: its owner's offset
+      conn[c * nen + a] = off / dim;
+    }
+  PetscCall(ISCreateGeneral(comm, ncell * nen, conn.data(), PETSC_COPY_VALUES, &topology_));
+  PetscCall(ISSetBlockSize(topology_, nen));
+
+  PetscCall(DMCreateLocalVector(dm, &u_local_));
+  PetscCall(DMCreateGlobalVector(dm, &geometry_));
+  PetscScalar *x;
+  PetscCall(VecGetArray(u_local_, &x));
+  for (PetscInt c = 0; c < ncell; ++c)
+    for (PetscInt a = 0; a < nen; ++a)
+      for (PetscInt d = 0; d < dim; ++d) x[bulk.cellNodeOffset(c, a) + d] = bulk.cellCoordinates(c)[a * dim + d];
+  PetscCall(VecRestoreArray(u_local_, &x));
+  PetscCall(DMLocalToGlobal(dm, u_local_, INSERT_VALUES, geometry_));
+  PetscCall(VecSetBlockSize(geometry_, dim));
+
+  PetscCall(VecCreateMPI(comm, ncell * 6, PETSC_DETERMINE, &stress_));
+  PetscCall(VecSetBlockSize(stress_, 6));
+  PetscCall(VecCreateMPI(comm, ncell, PETSC_DETERMINE, &region_));
+  PetscScalar *r;
+  PetscCall(VecGetArray(region_, &r));
+  for (PetscInt c = 0; c < ncell; ++c) r[c] = bulk.cellRegion(c);
+  PetscCall(VecRestoreArray(region_, &r));
+
+  const char *types[4] = {"Triangle", "Quadrilateral", "Tetrahedron", "Hexahedron"};
+  GridLayout  grid;
+  grid.name           = "volume";
+  grid.dim            = (int)dim;
+  grid.cell_type      = types[(int)bulk.shape()];
+  grid.nodes_per_cell = (int)nen;
+  PetscCall(writer_.Open(comm, dir, grid, geometry_, topology_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(app::event_output, 0, 0, 0, 0));
+  PetscCall(DMGlobalToLocal(dm, u, INSERT_VALUES, u_local_));
+  const PetscScalar *ul;
+  PetscScalar       *s;
+  PetscCall(VecGetArrayRead(u_local_, &ul));
+  PetscCall(VecGetArray(stress_, &s));
+  bulk.cellStress(ul, s);
+  PetscCall(VecRestoreArray(stress_, &s));
+  PetscCall(VecRestoreArrayRead(u_local_, &ul));
+  for (Vec x : {u, v, a}) PetscCall(VecSetBlockSize(x, bulk.dimension()));
+  PetscCall(writer_.WriteStep(step, t,
+                              {{"displacement", Centering::Node, u},
+                               {"velocity", Centering::Node, v},
+                               {"acceleration", Centering::Node, a},
+                               {"stress", Centering::Cell, stress_},
+                               {"region", Centering::Cell, region_}}));
+  PetscCall(PetscLogEventEnd(app::event_output, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode VolumeOutput::Close() {
+  PetscFunctionBeginUser;
+  PetscCall(writer_.Close());
+  PetscCall(VecDestroy(&geometry_));
+  PetscCall(VecDestroy(&stress_));
+  PetscCall(VecDestroy(&region_));
+  PetscCall(ISDestroy(&topology_));
+  if (u_local_) PetscCall(VecDestroy(&u_local_));
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::io

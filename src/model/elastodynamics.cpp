@@ -1,0 +1,206 @@
+#include "slipwave/model/elastodynamics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "slipwave/app/log_events.hpp"
+#include "slipwave/model/node_fields.hpp"
+#include "slipwave/physics/stable_time_step.hpp"
+#include "slipwave/time/central_difference.hpp"
+
+namespace slipwave::model {
+namespace {
+
+PetscErrorCode readDamping(Elastodynamics *m) {
+  PetscReal freqs[2] = {0.5, 10.0};
+  PetscInt  n        = 2;
+  PetscBool set;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(m->comm, "damping_", "Rayleigh damping", "slipwave");
+  PetscCall(PetscOptionsReal("-ratio", "damping ratio xi [-] reached at both frequencies (0: undamped)", "ElastodynamicsCreate", m->damping_ratio, &m->damping_ratio,
+                             nullptr));
+  PetscCall(PetscOptionsRealArray("-frequencies", "the two frequencies f1,f2 [Hz] where the ratio is exact", "ElastodynamicsCreate", freqs, &n, &set));
+  PetscOptionsEnd();
+  PetscCheck(!set || n == 2, m->comm, PETSC_ERR_USER_INPUT, "-damping_frequencies has %" PetscInt_FMT " values; allowed: two frequencies f1,f2 [Hz]", n);
+  m->damping_f1 = freqs[0];
+  m->damping_f2 = freqs[1];
+  if (m->damping_ratio != 0) {
+    const std::string problem = physics::rayleighDampingProblem(m->damping_ratio, freqs[0], freqs[1]);
+    PetscCheck(problem.empty(), m->comm, PETSC_ERR_USER_INPUT, "-damping_ratio / -damping_frequencies: %s", problem.c_str());
+    m->rayleigh = physics::rayleighFromDampingRatio(m->damping_ratio, freqs[0], freqs[1]);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode assembleMass(Elastodynamics *m) {
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(m->dm, &m->mass));
+  PetscCall(VecZeroEntries(m->u_local));
+  PetscCall(VecGetArray(m->u_local, &a));
+  m->bulk.addLumpedMass(a);
+  PetscCall(VecRestoreArray(m->u_local, &a));
+  PetscCall(VecZeroEntries(m->mass));
+  PetscCall(DMLocalToGlobal(m->dm, m->u_local, ADD_VALUES, m->mass));
+  PetscReal min_mass;
+  PetscCall(VecMin(m->mass, nullptr, &min_mass));
+  PetscCheck(min_mass > 0, m->comm, PETSC_ERR_PLIB, "a node has lumped mass %g; every node must touch a cell", (double)min_mass);
+  PetscCall(VecDuplicate(m->mass, &m->inv_mass));
+  PetscCall(VecCopy(m->mass, m->inv_mass));
+  PetscCall(VecReciprocal(m->inv_mass));
+  PetscFunctionReturn(0);
+}
+
+// D = (C_abs + alpha M)/m per node; rows and columns of held dofs are zeroed so a dashpot
+// cannot drive a dof whose motion is prescribed.
+PetscErrorCode assembleDampingBlocks(Elastodynamics *m) {
+  const PetscInt bs = m->dim;
+  PetscFunctionBeginUser;
+  if (!m->bc.has_absorbing && m->rayleigh.alpha == 0) PetscFunctionReturn(0);
+  PetscCall(VecDuplicate(m->bc.absorbing_blocks, &m->damping_blocks));
+  PetscInt           n;
+  PetscScalar       *D;
+  const PetscScalar *C, *mass, *mask;
+  PetscCall(VecGetLocalSize(m->mass, &n));
+  PetscCall(VecGetArray(m->damping_blocks, &D));
+  PetscCall(VecGetArrayRead(m->bc.absorbing_blocks, &C));
+  PetscCall(VecGetArrayRead(m->mass, &mass));
+  PetscCall(VecGetArrayRead(m->bc.free_mask, &mask));
+  for (PetscInt node = 0; node < n / bs; ++node) {
+    const PetscReal mi = PetscRealPart(mass[node * bs]);
+    for (PetscInt i = 0; i < bs; ++i)
+      for (PetscInt j = 0; j < bs; ++j) {
+        const PetscInt k     = node * bs * bs + i * bs + j;
+        const bool     free  = PetscRealPart(mask[node * bs + i]) > 0 && PetscRealPart(mask[node * bs + j]) > 0;
+        const double   alpha = i == j ? m->rayleigh.alpha : 0.0;
+        D[k]                 = free ? PetscRealPart(C[k]) / mi + alpha : 0.0;
+      }
+  }
+  PetscCall(VecRestoreArrayRead(m->bc.free_mask, &mask));
+  PetscCall(VecRestoreArrayRead(m->mass, &mass));
+  PetscCall(VecRestoreArrayRead(m->bc.absorbing_blocks, &C));
+  PetscCall(VecRestoreArray(m->damping_blocks, &D));
+  PetscFunctionReturn(0);
+}
+
+// Global f = K x from a global x.
+PetscErrorCode stiffnessTimes(Elastodynamics *m, Vec x, Vec f) {
+  const PetscScalar *ul;
+  PetscScalar       *fl;
+  PetscFunctionBeginUser;
+  PetscCall(DMGlobalToLocal(m->dm, x, INSERT_VALUES, m->u_local));
+  PetscCall(VecZeroEntries(m->f_local));
+  PetscCall(VecGetArrayRead(m->u_local, &ul));
+  PetscCall(VecGetArray(m->f_local, &fl));
+  m->bulk.addStiffnessTimes(ul, fl);
+  PetscCall(VecRestoreArray(m->f_local, &fl));
+  PetscCall(VecRestoreArrayRead(m->u_local, &ul));
+  PetscCall(VecZeroEntries(f));
+  PetscCall(DMLocalToGlobal(m->dm, m->f_local, ADD_VALUES, f));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
+  PetscFunctionBeginUser;
+  m->comm = comm;
+  PetscCall(mesh::MeshCreate(comm, &m->dm, &m->mesh));
+  PetscCall(DMGetDimension(m->dm, &m->dim));
+  PetscCall(NodeFieldSetSection(m->dm, m->dim));
+  PetscCall(MaterialsRead(comm, m->mesh.regions, &m->materials));
+  PetscCall(readDamping(m));
+  std::vector<fem::RegionMaterial> fe;
+  for (const auto &info : m->materials) fe.push_back(info.fe);
+  PetscCall(m->bulk.Setup(m->dm, fe));
+  PetscCall(DMCreateLocalVector(m->dm, &m->u_local));
+  PetscCall(VecDuplicate(m->u_local, &m->f_local));
+  PetscCall(assembleMass(m));
+  PetscCall(BoundaryConditionsCreate(m->dm, m->mesh.boundaries, m->materials, m->mass, &m->bc));
+  PetscCall(assembleDampingBlocks(m));
+  PetscCall(VecDuplicate(m->mass, &m->f_internal));
+  PetscCall(VecDuplicate(m->mass, &m->f_external));
+  PetscCall(VecDuplicate(m->mass, &m->f_input));
+  PetscCall(VecDuplicate(m->mass, &m->f_stiffness_damping));
+  PetscCall(VecZeroEntries(m->f_stiffness_damping));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
+  PetscFunctionBeginUser;
+  PetscCall(BoundaryConditionsDestroy(&m->bc));
+  for (Vec *v : {&m->mass, &m->inv_mass, &m->damping_blocks, &m->u_local, &m->f_local, &m->f_internal, &m->f_external, &m->f_input, &m->f_stiffness_damping})
+    PetscCall(VecDestroy(v));
+  PetscCall(DMDestroy(&m->dm));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
+  auto *m = static_cast<Elastodynamics *>(ctx);
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(app::event_bulk_force, 0, 0, 0, 0));
+  PetscCall(stiffnessTimes(m, u, m->f_internal));
+  if (m->rayleigh.beta > 0) {
+    Vec v_half;
+    PetscCall(time::CentralDifferenceGetHalfStepVelocity(ts, &v_half));
+    PetscCall(stiffnessTimes(m, v_half, m->f_stiffness_damping));
+    PetscCall(VecScale(m->f_stiffness_damping, m->rayleigh.beta));
+  }
+  PetscCall(PetscLogEventEnd(app::event_bulk_force, 0, 0, 0, 0));
+
+  PetscCall(PetscLogEventBegin(app::event_boundary, 0, 0, 0, 0));
+  const double v_in = m->bc.input.active() && m->bc.input_wave != "none" ? m->bc.input.velocity(t) : 0.0;
+  PetscCall(VecAXPBY(m->f_input, v_in, 0.0, m->bc.input_force));
+  PetscCall(VecWAXPY(m->f_external, 1.0, m->bc.constant_force, m->f_input));
+  PetscInt           n;
+  PetscScalar       *acc;
+  const PetscScalar *fe, *fi, *fd, *im, *mask;
+  PetscCall(VecGetLocalSize(a, &n));
+  PetscCall(VecGetArray(a, &acc));
+  PetscCall(VecGetArrayRead(m->f_external, &fe));
+  PetscCall(VecGetArrayRead(m->f_internal, &fi));
+  PetscCall(VecGetArrayRead(m->f_stiffness_damping, &fd));
+  PetscCall(VecGetArrayRead(m->inv_mass, &im));
+  PetscCall(VecGetArrayRead(m->bc.free_mask, &mask));
+  for (PetscInt i = 0; i < n; ++i) acc[i] = mask[i] * im[i] * (fe[i] - fi[i] - fd[i]);
+  PetscCall(VecRestoreArrayRead(m->bc.free_mask, &mask));
+  PetscCall(VecRestoreArrayRead(m->inv_mass, &im));
+  PetscCall(VecRestoreArrayRead(m->f_stiffness_damping, &fd));
+  PetscCall(VecRestoreArrayRead(m->f_internal, &fi));
+  PetscCall(VecRestoreArrayRead(m->f_external, &fe));
+  PetscCall(VecRestoreArray(a, &acc));
+  for (const PrescribedVelocity &p : m->bc.prescribed) PetscCall(VecAXPY(a, p.history.acceleration(t), p.dofs));
+  m->rhs_time = t;
+  PetscCall(PetscLogEventEnd(app::event_boundary, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ElastodynamicsStableStep(Elastodynamics *m, StableStep *step) {
+  PetscScalar *a;
+  Vec          rowabs;
+  PetscFunctionBeginUser;
+  PetscCall(VecZeroEntries(m->u_local));
+  PetscCall(VecGetArray(m->u_local, &a));
+  m->bulk.addStiffnessRowAbsSums(a);
+  PetscCall(VecRestoreArray(m->u_local, &a));
+  PetscCall(VecDuplicate(m->mass, &rowabs));
+  PetscCall(VecZeroEntries(rowabs));
+  PetscCall(DMLocalToGlobal(m->dm, m->u_local, ADD_VALUES, rowabs));
+  // Gershgorin on M^{-1} K (similar to M^{-1/2} K M^{-1/2}): every eigenvalue omega^2 is at
+  // most max_i sum_j |K_ij| / m_i. Held dofs do not vibrate and are left out.
+  PetscCall(VecPointwiseMult(rowabs, rowabs, m->inv_mass));
+  PetscCall(VecPointwiseMult(rowabs, rowabs, m->bc.free_mask));
+  PetscReal omega2;
+  PetscCall(VecMax(rowabs, nullptr, &omega2));
+  PetscCall(VecDestroy(&rowabs));
+  step->omega_max_bulk = std::sqrt(std::max(omega2, (PetscReal)0));
+  step->dt_bulk        = step->omega_max_bulk > 0 ? physics::centralDifferenceStableStep(step->omega_max_bulk, m->rayleigh.beta) : 1e300;
+  double vp_max        = 0;
+  for (const auto &info : m->materials) vp_max = std::max(vp_max, info.elastic.vp);
+  step->dt_cfl    = m->bulk.minCellSize() / vp_max;
+  step->dt_limit  = step->dt_bulk;
+  step->governing = m->rayleigh.beta > 0 ? "bulk stiffness with stiffness-proportional damping (Gershgorin bound)" : "bulk stiffness (Gershgorin bound)";
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::model

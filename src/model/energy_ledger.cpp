@@ -1,0 +1,93 @@
+#include "slipwave/model/energy_ledger.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "slipwave/app/log_events.hpp"
+#include "slipwave/time/central_difference.hpp"
+
+namespace slipwave::model {
+
+PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, EnergyLedger *e) {
+  Vec u, v, a;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(app::event_energy, 0, 0, 0, 0));
+  PetscCall(TS2GetSolution(ts, &u, &v));
+  PetscCall(time::CentralDifferenceGetAcceleration(ts, &a));
+  PetscInt           n;
+  const PetscInt     bs = m->dim;
+  const PetscScalar *ua, *va, *aa, *ma, *fi, *fx, *fin, *fsd, *C, *mask;
+  PetscCall(VecGetLocalSize(u, &n));
+  PetscCall(VecGetArrayRead(u, &ua));
+  PetscCall(VecGetArrayRead(v, &va));
+  PetscCall(VecGetArrayRead(a, &aa));
+  PetscCall(VecGetArrayRead(m->mass, &ma));
+  PetscCall(VecGetArrayRead(m->f_internal, &fi));
+  PetscCall(VecGetArrayRead(m->f_external, &fx));
+  PetscCall(VecGetArrayRead(m->f_input, &fin));
+  PetscCall(VecGetArrayRead(m->f_stiffness_damping, &fsd));
+  PetscCall(VecGetArrayRead(m->bc.absorbing_blocks, &C));
+  PetscCall(VecGetArrayRead(m->bc.free_mask, &mask));
+  // Local sums: 0 kinetic, 1 strain, 2 shadow, 3 input power, 4 external power,
+  // 5 reaction power, 6 absorbed power, 7 damping power.
+  double s[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  for (PetscInt node = 0; node < n / bs; ++node) {
+    for (PetscInt i = 0; i < bs; ++i) {
+      const PetscInt k     = node * bs + i;
+      const double   vk    = va[k], mk = ma[k];
+      const double   vhalf = vk + 0.5 * h * aa[k];
+      s[0] += 0.5 * mk * vk * vk;
+      s[1] += 0.5 * ua[k] * fi[k];
+      s[2] += 0.5 * mk * vhalf * vhalf + 0.5 * ua[k] * fi[k] + 0.5 * h * vhalf * fi[k];
+      const bool held = mask[k] == 0;
+      double     cv   = 0;
+      if (!held)
+        for (PetscInt j = 0; j < bs; ++j)
+          if (mask[node * bs + j] != 0) cv += C[node * bs * bs + i * bs + j] * va[node * bs + j];
+      const double damping_force = held ? 0.0 : m->rayleigh.alpha * mk * vk + fsd[k];
+      if (held) {
+        // What the support supplies: everything M a + K u asks beyond the applied loads.
+        s[5] += vk * (mk * aa[k] + fi[k] - fx[k]);
+      }
+      s[3] += vk * fin[k];
+      s[4] += vk * (fx[k] - fin[k]);
+      s[6] += vk * cv;
+      s[7] += vk * damping_force;
+    }
+  }
+  PetscCall(VecRestoreArrayRead(m->bc.free_mask, &mask));
+  PetscCall(VecRestoreArrayRead(m->bc.absorbing_blocks, &C));
+  PetscCall(VecRestoreArrayRead(m->f_stiffness_damping, &fsd));
+  PetscCall(VecRestoreArrayRead(m->f_input, &fin));
+  PetscCall(VecRestoreArrayRead(m->f_external, &fx));
+  PetscCall(VecRestoreArrayRead(m->f_internal, &fi));
+  PetscCall(VecRestoreArrayRead(m->mass, &ma));
+  PetscCall(VecRestoreArrayRead(a, &aa));
+  PetscCall(VecRestoreArrayRead(v, &va));
+  PetscCall(VecRestoreArrayRead(u, &ua));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 8, MPI_DOUBLE, MPI_SUM, m->comm));
+
+  e->kinetic = s[0];
+  e->strain  = s[1];
+  if (!e->started) {
+    // W_{1/2} is the reference; the work of step 0 is inside it.
+    e->shadow_start = s[2];
+    e->started      = true;
+  } else {
+    const double h_mean = 0.5 * (e->h_prev + h);
+    e->input += h_mean * s[3];
+    e->external += h_mean * s[4];
+    e->reactions += h_mean * s[5];
+    e->absorbed += h_mean * s[6];
+    e->damped += h_mean * s[7];
+  }
+  e->h_prev = h;
+  e->shadow        = s[2];
+  e->balance_error = (e->shadow - e->shadow_start) - (e->input + e->external + e->reactions - e->absorbed - e->damped);
+  e->scale         = std::max({e->scale, std::fabs(e->shadow), std::fabs(e->input), std::fabs(e->external), std::fabs(e->absorbed), std::fabs(e->damped),
+                               std::fabs(e->reactions), e->kinetic + std::fabs(e->strain)});
+  PetscCall(PetscLogEventEnd(app::event_energy, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::model
