@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <fstream>
@@ -27,6 +28,12 @@ std::vector<std::string> splitFields(const std::string &line) {
 }
 
 std::string where(const std::string &source, int line) { return source + ":" + std::to_string(line) + ": "; }
+
+std::string formatNumber(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.15g", v);
+  return buf;
+}
 
 bool blankOrComment(const std::string &s) { return s.empty() || s[0] == '#'; }
 
@@ -89,7 +96,7 @@ std::string parseJumpHistory(std::istream &in, const std::string &source, JumpHi
     }
     if (!h.t.empty() && !(values[0] > h.t.back()))
       return where(source, line_no) + "time " + fields[column[0]] + " does not increase (previous row has t = " +
-             std::to_string(h.t.back()) + "); rows must be sorted by strictly increasing t";
+             formatNumber(h.t.back()) + "); rows must be sorted by strictly increasing t";
     h.t.push_back(values[0]);
     for (std::size_t k = 1; k < names.size(); ++k) h.w.push_back(values[k]);
     h.line.push_back(line_no);
