@@ -25,6 +25,7 @@ struct RunOptions {
   PetscReal energy_growth_limit            = 2.0;
   PetscBool dry_run                        = PETSC_FALSE;
   PetscBool fields                         = PETSC_TRUE;
+  PetscReal initial_velocity[3]            = {0, 0, 0};
 };
 
 struct Run {
@@ -57,6 +58,9 @@ PetscErrorCode readRunOptions(MPI_Comm comm, RunOptions *o) {
                              o->energy_growth_limit, &o->energy_growth_limit, nullptr));
   PetscCall(PetscOptionsBool("-dry_run", "print the setup report (stable step, what governs it, points per wavelength) and stop", "SimulationRun", o->dry_run,
                              &o->dry_run, nullptr));
+  PetscInt nv = 3;
+  PetscCall(PetscOptionsRealArray("-initial_velocity", "uniform initial velocity vx,vy[,vz] of every free node [m/s]", "SimulationRun", o->initial_velocity, &nv,
+                                  nullptr));
   PetscOptionsEnd();
   PetscCheck(o->safety > 0 && o->safety <= 1, comm, PETSC_ERR_USER_INPUT, "-time_step_safety = %g; allowed: 0 < s <= 1", (double)o->safety);
   PetscFunctionReturn(0);
@@ -230,7 +234,17 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
     PetscCall(DMCreateGlobalVector(r->model.dm, &u));
     PetscCall(VecDuplicate(u, &v));
     PetscCall(VecZeroEntries(u));
-    PetscCall(VecZeroEntries(v));
+    {
+      PetscInt     n;
+      PetscScalar *va;
+      const PetscScalar *mask;
+      PetscCall(VecGetLocalSize(v, &n));
+      PetscCall(VecGetArray(v, &va));
+      PetscCall(VecGetArrayRead(r->model.bc.free_mask, &mask));
+      for (PetscInt i = 0; i < n; ++i) va[i] = mask[i] * r->opt.initial_velocity[i % r->model.dim];
+      PetscCall(VecRestoreArrayRead(r->model.bc.free_mask, &mask));
+      PetscCall(VecRestoreArray(v, &va));
+    }
     PetscCall(TS2SetSolution(ts, u, v));
     PetscCall(TSMonitorSet(ts, monitor, r, nullptr));
     PetscCall(time::CentralDifferenceComputeInitialAcceleration(ts));
