@@ -3,7 +3,7 @@
 # central differences at a fixed fraction of the stable step are second order in space and
 # time, so each halving must divide the error by about 4: the observed rate must be >= 1.8.
 set -eu
-. tests/cases/lib.sh
+. tests/tools/lib.sh
 errs=()
 for n in 50 100 200; do
   $SW $COLUMN -mesh_box_faces 1,$n -mesh_box_upper 1,100 -input_wave sv -constrain_components y -ts_max_time 1.2 \

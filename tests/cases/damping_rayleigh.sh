@@ -6,7 +6,7 @@
 # eq. 2.2.12). Higher modes (2.5 Hz and up) are damped faster and are gone after ~14 s; the
 # peaks after that must give xi within 1 % of 0.05.
 set -eu
-. tests/cases/lib.sh
+. tests/tools/lib.sh
 $SW -mesh_box_faces 1,50 -mesh_box_upper 1,100 -regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 \
   -bc_bottom_type fixed -constrain_components y -initial_velocity 0.1,0 -damping_ratio 0.05 -damping_frequencies 0.5,1.5 \
   -ts_max_time 30 -output_fields 0 -progress_interval 100 -station_coordinates 0.5,100 -station_names top -output_dir "$WORK"

@@ -10,7 +10,7 @@
 # at round-off (1e-9), and after the wave has left (t = 2 s) at most 1e-3 of the peak
 # energy remains (no trapped reflection).
 set -eu
-. tests/cases/lib.sh
+. tests/tools/lib.sh
 $SW $COLUMN -mesh_box_faces 1,139 -mesh_box_upper 1,100 -input_wave sv -constrain_components y -output_dir "$WORK"
 w_in=$($PY -c "import math; print(2*2000*200*0.01*3/(4*math.sqrt(2*math.pi)*5))")
 $CHECK energy "$WORK/energy.csv" --max-error 1e-9 --input-work "$w_in" --input-tol 0.01 --final-fraction 1e-3

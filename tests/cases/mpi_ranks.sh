@@ -3,7 +3,7 @@
 # a different order, so station records must agree to round-off: 1e-10 of the peak of each quantity (u, v, a)
 # (issue 2).
 set -eu
-. tests/cases/lib.sh
+. tests/tools/lib.sh
 opts="-options_file config/scenes/default.yaml -ts_max_time 2 -output_fields 0 -progress_interval 100"
 $SW $opts -output_dir "$WORK/np1"
 $MPIEXEC -n 2 $SW $opts -output_dir "$WORK/np2"

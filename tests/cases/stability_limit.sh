@@ -3,7 +3,7 @@
 # steps) at the limit itself (safety factor 1) stays bounded: the closed-system energy
 # identity holds to round-off (1e-9) and the divergence guard never fires.
 set -eu
-. tests/cases/lib.sh
+. tests/tools/lib.sh
 opts="-mesh_box_faces 10,10 -mesh_box_upper 10,10 -regions soil -material_soil_rho 2000 -material_soil_vp 1000 -material_soil_vs 400 -bc_bottom_type fixed -output_fields 0 -progress_interval 100"
 limit=$($SW $opts -dry_run | sed -n 's/^  stable step: \([0-9.e+-]*\) s.*/\1/p')
 [ -n "$limit" ] || { echo "no stable step in the dry-run report"; exit 1; }
