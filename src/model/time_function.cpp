@@ -1,15 +1,144 @@
 #include "slipwave/model/time_function.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <variant>
 
+#include "slipwave/io/ground_motion_record.hpp"
 #include "slipwave/physics/source_time_function.hpp"
 
 namespace slipwave::model {
+namespace {
+
+const char *const kKinds[] = {"none", "ricker", "gabor", "record"};
+constexpr int     kNumKinds = 4;
+
+bool equalsNoCase(const std::string &a, const char *b) {
+  if (a.size() != std::strlen(b)) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (std::tolower((unsigned char)a[i]) != std::tolower((unsigned char)b[i])) return false;
+  return true;
+}
+
+// PetscOptionsEList stops an unknown value with PETSC_ERR_USER and PETSc's multi-line
+// traceback; checking the value first gives the one-line user-input error instead.
+PetscErrorCode checkChoice(MPI_Comm comm, const std::string &option, const char *const *choices, int n) {
+  char      value[256] = "";
+  PetscBool set;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, option.c_str(), value, sizeof value, &set));
+  if (!set) PetscFunctionReturn(0);
+  std::string allowed;
+  for (int i = 0; i < n; ++i) {
+    if (equalsNoCase(value, choices[i])) PetscFunctionReturn(0);
+    allowed += (i ? ", " : "") + std::string(choices[i]);
+  }
+  SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s = %s; allowed: %s", option.c_str(), value, allowed.c_str());
+}
+
+// Linear interpolation of samples (t_k, y_k); zero outside [t_0, t_last].
+double interpolateInside(const std::vector<double> &t, const std::vector<double> &y, double x) {
+  if (t.empty() || x < t.front() || x > t.back()) return 0;
+  if (x == t.back()) return y.back();
+  const size_t k = std::upper_bound(t.begin(), t.end(), x) - t.begin(); // x in [t_{k-1}, t_k)
+  const double s = (x - t[k - 1]) / (t[k] - t[k - 1]);
+  return (1 - s) * y[k - 1] + s * y[k];
+}
+
+// Slope of physics::velocity(TabulatedHistory) on the interval holding t: the exact
+// derivative of the linear interpolation (right-continuous at the samples; zero before
+// the first sample and after the last, where the velocity is held constant).
+double tabulatedSlope(const physics::TabulatedHistory &h, double t) {
+  if (h.times.size() < 2 || t < h.times.front() || t >= h.times.back()) return 0;
+  const size_t k = std::upper_bound(h.times.begin(), h.times.end(), t) - h.times.begin();
+  return (h.values[k] - h.values[k - 1]) / (h.times[k] - h.times[k - 1]);
+}
+
+// Highest frequency at which the velocity's amplitude spectrum still reaches 1% of its peak
+// (the criterion physics::topFrequency uses for the wavelets), from a direct Fourier sum
+// with trapezoid weights on at most 2000 frequencies up to the Nyquist frequency of the
+// coarsest sampling interval. Zero-padded to 4x the duration so the grid resolves the peak.
+double spectralTopFrequency(const physics::TabulatedHistory &h) {
+  const std::vector<double> &t = h.times, &v = h.values;
+  const size_t               n = t.size();
+  const double               f_nyquist = physics::topFrequency(h);
+  if (n < 2 || !(f_nyquist > 0)) return f_nyquist;
+  const double duration = t.back() - t.front();
+  const int    nf       = (int)std::min(2000.0, std::ceil(4 * duration * f_nyquist));
+  const double df       = f_nyquist / nf;
+  std::vector<double> w(n, 0.0);
+  for (size_t k = 0; k + 1 < n; ++k) w[k] += 0.5 * (t[k + 1] - t[k]), w[k + 1] += 0.5 * (t[k + 1] - t[k]);
+  std::vector<double> amplitude(nf + 1);
+  double              peak = 0;
+  for (int j = 0; j <= nf; ++j) {
+    const double omega = 2 * M_PI * j * df;
+    double       re = 0, im = 0;
+    for (size_t k = 0; k < n; ++k) re += w[k] * v[k] * std::cos(omega * t[k]), im -= w[k] * v[k] * std::sin(omega * t[k]);
+    amplitude[j] = std::hypot(re, im);
+    peak         = std::max(peak, amplitude[j]);
+  }
+  for (int j = nf; j >= 0; --j)
+    if (amplitude[j] >= 0.01 * peak) return std::min(f_nyquist, (j + 1) * df);
+  return f_nyquist;
+}
+
+std::string lowerExtension(const std::string &path) {
+  const size_t dot = path.find_last_of('.'), slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot + 1);
+  for (char &c : ext) c = (char)std::tolower((unsigned char)c);
+  return ext;
+}
+
+// Rank 0 reads the file; the status and the samples are broadcast so every rank raises the
+// same error or holds the same record.
+PetscErrorCode readRecordCollective(MPI_Comm comm, const std::string &path, bool at2, io::GroundMotionRecord *record, io::ReadStatus *status) {
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) *status = at2 ? io::readPeerAt2(path, record) : io::readAccelerationCsv(path, record);
+  int ok = status->ok ? 1 : 0;
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
+  status->ok = ok;
+  if (!ok) {
+    int len = (int)status->message.size();
+    PetscCallMPI(MPI_Bcast(&len, 1, MPI_INT, 0, comm));
+    status->message.resize(len);
+    PetscCallMPI(MPI_Bcast(status->message.data(), len, MPI_CHAR, 0, comm));
+    PetscFunctionReturn(0);
+  }
+  long n = (long)record->time.size();
+  PetscCallMPI(MPI_Bcast(&n, 1, MPI_LONG, 0, comm));
+  record->time.resize(n), record->acceleration.resize(n);
+  PetscCallMPI(MPI_Bcast(record->time.data(), (int)n, MPI_DOUBLE, 0, comm));
+  PetscCallMPI(MPI_Bcast(record->acceleration.data(), (int)n, MPI_DOUBLE, 0, comm));
+  PetscFunctionReturn(0);
+}
+
+// Inside PetscOptionsBegin(comm, block_prefix, ...) the PetscOptions* calls prepend the
+// block's prefix; `prefix` is the full one (e.g. "bc_bottom_" read inside the "bc_bottom_"
+// block, or "input_" inside a block without prefix), so the names passed there are "-" plus
+// what the block does not already supply.
+std::string relativeName(const std::string &prefix, PetscOptionItems *PetscOptionsObject) {
+  const std::string block = PetscOptionsObject && PetscOptionsObject->prefix ? PetscOptionsObject->prefix : "";
+  if (!block.empty() && prefix.compare(0, block.size(), block) == 0) return "-" + prefix.substr(block.size());
+  return "-" + prefix;
+}
+
+} // namespace
 
 struct TimeFunction::Impl {
   std::variant<std::monostate, physics::RickerWavelet, physics::GaborWavelet, physics::TabulatedHistory> f;
-  std::string description = "none";
+  // For a record: the (scaled, baseline-corrected) acceleration samples at the velocity's
+  // times. The tabulated velocity is their trapezoid integral, i.e. the exact integral of
+  // their linear interpolation at every sample, so this interpolation is the velocity's own
+  // derivative (continuous, second-order consistent with the central-difference step).
+  std::vector<double> record_acceleration;
+  double              record_top_frequency = 0;  // spectral 1% criterion, see spectralTopFrequency
+  std::string         description = "none";
 };
 
 TimeFunction::TimeFunction() : impl_(std::make_unique<Impl>()) {}
@@ -21,33 +150,92 @@ PetscErrorCode TimeFunction::Read(MPI_Comm comm, const std::string &prefix, Pets
   const char *const kinds[] = {"none", "ricker", "gabor", "record", "TimeFunctionKind", "", nullptr};
   PetscInt          kind = 0;
   PetscReal         amplitude = 0.1, f0 = 2.0, t0 = -1, gamma = 4.0, phase = 0;
-  const std::string p = "-" + prefix;
+  const std::string p = "-" + prefix, q = relativeName(prefix, PetscOptionsObject);
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsEList((p + "stf").c_str(), "velocity history: none, ricker, gabor, record", "TimeFunction::Read", kinds, 4, kinds[0], &kind, nullptr));
+  PetscCall(checkChoice(comm, p + "stf", kKinds, kNumKinds));
+  PetscCall(PetscOptionsEList((q + "stf").c_str(), "velocity history: none, ricker, gabor, record", "TimeFunction::Read", kinds, 4, kinds[0], &kind, nullptr));
   if (kind == 0) PetscFunctionReturn(0);
-  PetscCall(PetscOptionsReal((p + "amplitude").c_str(), "peak particle velocity [m/s]", "TimeFunction::Read", amplitude, &amplitude, nullptr));
-  if (kind == 1 || kind == 2) {
-    PetscCall(PetscOptionsReal((p + "f0").c_str(), "central frequency [Hz]", "TimeFunction::Read", f0, &f0, nullptr));
-    PetscCall(PetscOptionsReal((p + "t0").c_str(), "time of the peak [s] (default 1.2/f0 for ricker, gamma/(2 f0) for gabor)", "TimeFunction::Read", t0, &t0,
-                               nullptr));
-    PetscCheck(f0 > 0, comm, PETSC_ERR_USER_INPUT, "%sf0 = %g; allowed: > 0 Hz", p.c_str(), (double)f0);
+  char buf[1024];
+  if (kind == 3) {
+    PetscCall(readRecord(comm, prefix, PetscOptionsObject));
+    PetscFunctionReturn(0);
   }
-  char buf[256];
+  PetscCall(PetscOptionsReal((q + "amplitude").c_str(), "peak particle velocity [m/s] (ricker, gabor; a record is scaled with -record_scale)", "TimeFunction::Read",
+                             amplitude, &amplitude, nullptr));
+  PetscCall(PetscOptionsReal((q + "f0").c_str(), "central frequency [Hz]", "TimeFunction::Read", f0, &f0, nullptr));
+  PetscCall(PetscOptionsReal((q + "t0").c_str(), "time of the peak [s] (default 1.2/f0 for ricker, gamma/(2 f0) for gabor)", "TimeFunction::Read", t0, &t0, nullptr));
+  PetscCheck(f0 > 0, comm, PETSC_ERR_USER_INPUT, "%sf0 = %g; allowed: > 0 Hz", p.c_str(), (double)f0);
   if (kind == 1) {
     if (t0 < 0) t0 = 1.2 / f0;
     impl_->f = physics::RickerWavelet{amplitude, f0, t0};
     std::snprintf(buf, sizeof buf, "Ricker wavelet, peak velocity %g m/s, f0 %g Hz, t0 %g s", (double)amplitude, (double)f0, (double)t0);
-  } else if (kind == 2) {
-    PetscCall(PetscOptionsReal((p + "gamma").c_str(), "Gabor envelope width [periods]", "TimeFunction::Read", gamma, &gamma, nullptr));
-    PetscCall(PetscOptionsReal((p + "phase").c_str(), "Gabor phase [rad]", "TimeFunction::Read", phase, &phase, nullptr));
+  } else {
+    PetscCall(PetscOptionsReal((q + "gamma").c_str(), "Gabor envelope width [periods]", "TimeFunction::Read", gamma, &gamma, nullptr));
+    PetscCall(PetscOptionsReal((q + "phase").c_str(), "Gabor phase [rad]", "TimeFunction::Read", phase, &phase, nullptr));
     PetscCheck(gamma > 0, comm, PETSC_ERR_USER_INPUT, "%sgamma = %g; allowed: > 0", p.c_str(), (double)gamma);
     if (t0 < 0) t0 = gamma / (2 * f0);
     impl_->f = physics::GaborWavelet{amplitude, f0, t0, gamma, phase};
     std::snprintf(buf, sizeof buf, "Gabor wavelet, amplitude %g m/s, f0 %g Hz, t0 %g s, gamma %g", (double)amplitude, (double)f0, (double)t0, (double)gamma);
-  } else {
-    SETERRQ(comm, PETSC_ERR_USER_INPUT, "%sstf = record is not available yet; allowed: ricker, gabor", p.c_str());
   }
   impl_->description = buf;
+  PetscFunctionReturn(0);
+}
+
+// -<prefix>stf record: an acceleration record (CSV time,acceleration in s, m/s^2, or PEER
+// .AT2 in g), times -record_scale, baseline-corrected unless told otherwise, integrated
+// with the trapezoid rule into the velocity history.
+PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix, PetscOptionItems *PetscOptionsObject) {
+  const std::string p = "-" + prefix, q = relativeName(prefix, PetscOptionsObject);
+  char              file[PETSC_MAX_PATH_LEN] = "", format[16] = "";
+  PetscReal         scale = 1.0;
+  PetscBool         baseline = PETSC_TRUE, has_file, has_format, has_amplitude;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, (p + "amplitude").c_str(), &has_amplitude));
+  PetscCheck(!has_amplitude, comm, PETSC_ERR_USER_INPUT,
+             "%samplitude does not apply to %sstf record (the record's own amplitude is used); allowed: %srecord_scale <factor> to scale the record's acceleration",
+             p.c_str(), p.c_str(), p.c_str());
+  PetscCall(PetscOptionsString((q + "record").c_str(), "acceleration record: CSV time,acceleration [s, m/s^2] or PEER NGA .AT2 [g]", "TimeFunction::Read", file, file,
+                               sizeof file, &has_file));
+  const char *const formats[] = {"csv", "at2"};
+  PetscCall(checkChoice(comm, p + "record_format", formats, 2));
+  PetscCall(PetscOptionsString((q + "record_format").c_str(), "format of the record: csv or at2 (default: from the file extension)", "TimeFunction::Read", format,
+                               format, sizeof format, &has_format));
+  PetscCall(PetscOptionsReal((q + "record_scale").c_str(), "factor on the record's acceleration [-]", "TimeFunction::Read", scale, &scale, nullptr));
+  PetscCall(PetscOptionsBool((q + "baseline_correction").c_str(),
+                             "subtract c0 + c1 t from the acceleration so that the integrated velocity and displacement end at zero", "TimeFunction::Read",
+                             baseline, &baseline, nullptr));
+  PetscCheck(has_file && file[0], comm, PETSC_ERR_USER_INPUT, "%sstf record needs the file; allowed: %srecord <file.csv|file.at2>", p.c_str(), p.c_str());
+  PetscCheck(std::isfinite(scale) && scale != 0, comm, PETSC_ERR_USER_INPUT, "%srecord_scale = %g; allowed: a finite factor other than 0", p.c_str(), (double)scale);
+  bool at2;
+  if (has_format) {
+    at2 = equalsNoCase(format, "at2");
+  } else {
+    const std::string ext = lowerExtension(file);
+    PetscCheck(ext == "csv" || ext == "at2", comm, PETSC_ERR_USER_INPUT,
+               "%srecord = %s: cannot tell the format from the extension '%s'; allowed: a .csv or .at2 file, or %srecord_format csv|at2", p.c_str(), file, ext.c_str(),
+               p.c_str());
+    at2 = ext == "at2";
+  }
+  io::GroundMotionRecord record;
+  io::ReadStatus         status;
+  PetscCall(readRecordCollective(comm, file, at2, &record, &status));
+  PetscCheck(status.ok, comm, PETSC_ERR_FILE_OPEN, "%srecord (%s): %s; allowed: %s", p.c_str(), at2 ? "PEER .AT2" : "CSV", status.message.c_str(),
+             at2 ? "a PEER NGA .AT2 file: 3 header lines, a 4th with NPTS and DT, then NPTS accelerations in g"
+                 : "a CSV file of lines \"time,acceleration\" [s, m/s^2], optional header, at least 2 samples, times increasing");
+  for (double &a : record.acceleration) a *= scale;
+  if (baseline) io::removeBaselineDrift(&record);
+  physics::TabulatedHistory history = io::velocityHistory(record);
+  double pga = 0, pgv = 0;
+  for (double a : record.acceleration) pga = std::max(pga, std::fabs(a));
+  for (double v : history.values) pgv = std::max(pgv, std::fabs(v));
+  const size_t n = record.time.size();
+  char         buf[PETSC_MAX_PATH_LEN + 256];
+  std::snprintf(buf, sizeof buf, "record %s (%s, %zu samples, %g to %g s, scale %g%s), peak acceleration %.4g m/s^2, peak velocity %.4g m/s", file,
+                at2 ? "AT2" : "CSV", n, record.time.front(), record.time.back(), (double)scale, baseline ? ", baseline-corrected" : "", pga, pgv);
+  impl_->record_acceleration  = record.acceleration;
+  impl_->record_top_frequency = spectralTopFrequency(history);
+  impl_->f                   = std::move(history);
+  impl_->description         = buf;
   PetscFunctionReturn(0);
 }
 
@@ -63,20 +251,24 @@ double TimeFunction::velocity(double t) const {
 }
 
 double TimeFunction::acceleration(double t) const {
+  const Impl &impl = *impl_;
   return std::visit(
-    [t](const auto &w) -> double {
+    [t, &impl](const auto &w) -> double {
       using W = std::decay_t<decltype(w)>;
       if constexpr (std::is_same_v<W, std::monostate>) return 0.0;
       else if constexpr (std::is_same_v<W, physics::TabulatedHistory>) {
-        // Central difference of the tabulated velocity: what the explicit scheme would integrate.
-        const double h = 1e-4;
-        return (physics::velocity(w, t + h) - physics::velocity(w, t - h)) / (2 * h);
+        // A record: its own acceleration, linearly interpolated (the exact derivative of the
+        // trapezoid velocity through the samples). Zero after the last sample, where the
+        // velocity is held. Without acceleration samples: the slope of the linear velocity.
+        if (impl.record_acceleration.size() == w.times.size()) return t < w.times.back() ? interpolateInside(w.times, impl.record_acceleration, t) : 0.0;
+        return tabulatedSlope(w, t);
       } else return physics::acceleration(w, t);
     },
-    impl_->f);
+    impl.f);
 }
 
 double TimeFunction::topFrequency() const {
+  if (impl_->record_top_frequency > 0) return impl_->record_top_frequency;
   return std::visit(
     [](const auto &w) -> double {
       if constexpr (std::is_same_v<std::decay_t<decltype(w)>, std::monostate>) return 0.0;

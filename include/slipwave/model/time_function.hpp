@@ -1,6 +1,12 @@
 // A scalar history read from options with a prefix: the incident wave's particle velocity,
 // or a prescribed boundary velocity. -<prefix>stf none|ricker|gabor|record and its
 // parameters. Velocity is the primary quantity; acceleration drives prescribed dofs.
+// -<prefix>stf record reads -<prefix>record FILE (CSV time,acceleration [s, m/s^2] or PEER
+// .AT2 [g], by extension or -<prefix>record_format csv|at2), multiplies the acceleration by
+// -<prefix>record_scale (default 1; -<prefix>amplitude is rejected for records), removes the
+// baseline drift unless -<prefix>baseline_correction false, and integrates it (trapezoid)
+// into the velocity; acceleration() then returns the record's own acceleration, linearly
+// interpolated, which is the exact derivative of that velocity at the samples.
 #pragma once
 #include <petscsys.h>
 
@@ -25,6 +31,7 @@ public:
   std::string describe() const;
 
 private:
+  PetscErrorCode readRecord(MPI_Comm comm, const std::string &prefix, PetscOptionItems *PetscOptionsObject);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
