@@ -95,9 +95,21 @@ PetscErrorCode labelBoxRegions(MPI_Comm comm, DM dm, const std::vector<std::stri
     ++count[region];
   }
   if (c_end > c_start) {
-    for (size_t r = 0; r < regions.size(); ++r)
-      PetscCheck(count[r] > 0, comm, PETSC_ERR_USER_INPUT, "region '%s' (-region_%s_box) contains no cell of the mesh; allowed: a box holding at least one cell centroid",
-                 regions[r].c_str(), regions[r].c_str());
+    for (size_t r = 0; r < regions.size(); ++r) {
+      std::string given = "not given, so it only takes cells no box claims";
+      if (!bounds[r].empty()) {
+        given = "=";
+        for (size_t k = 0; k < bounds[r].size(); ++k) {
+          char v[32];
+          std::snprintf(v, sizeof v, "%s%g", k ? "," : " ", (double)bounds[r][k]);
+          given += v;
+        }
+      }
+      PetscCheck(count[r] > 0, comm, PETSC_ERR_USER_INPUT,
+                 "region '%s' contains no cell of the mesh (-region_%s_box %s); allowed: a box holding at least one cell centroid (the mesh spans [%g, %g] x [%g, %g]%s)",
+                 regions[r].c_str(), regions[r].c_str(), given.c_str(),
+                 (double)box.lower[0], (double)box.upper[0], (double)box.lower[1], (double)box.upper[1], dim == 3 ? " x ..." : "");
+    }
   }
   PetscFunctionReturn(0);
 }

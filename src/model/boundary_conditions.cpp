@@ -137,6 +137,15 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
     PetscInt          ntraction = dim;
     PetscBool         traction_set;
     TimeFunction      history;
+    {
+      // PetscOptionsEList stops an unknown value with PETSc's multi-line traceback: check it
+      // first so the user gets the one-line error.
+      char      value[64] = "";
+      PetscBool set, known = PETSC_FALSE;
+      PetscCall(PetscOptionsGetString(nullptr, prefix.c_str(), "-type", value, sizeof value, &set));
+      for (int i = 0; i < 5 && set && !known; ++i) PetscCall(PetscStrcasecmp(value, kTypeNames[i], &known));
+      PetscCheck(!set || known, comm, PETSC_ERR_USER_INPUT, "-%stype = %s; allowed: free, fixed, absorbing, traction, velocity", prefix.c_str(), value);
+    }
     PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
     PetscCall(PetscOptionsEList("-type", "boundary condition", "BoundaryConditionsCreate", kTypeNames, 5, kTypeNames[0], &type, nullptr));
     PetscCall(PetscOptionsString("-components", "components held (fixed, velocity): x,y[,z]; default all", "BoundaryConditionsCreate", comps, comps, sizeof comps,
