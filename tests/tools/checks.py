@@ -29,7 +29,8 @@ def column(args):
     t = d["t"]
     v = d["v_" + args.component]
     ref = 2 * ricker_velocity(t - args.height / args.speed, args.amplitude, args.f0, args.t0)
-    l2 = math.sqrt(np.sum((v - ref) ** 2) / np.sum(ref ** 2))
+    window = t <= args.t_end if args.t_end is not None else np.ones_like(t, dtype=bool)
+    l2 = math.sqrt(np.sum((v - ref)[window] ** 2) / np.sum(ref[window] ** 2))
     peak = np.max(np.abs(ref))
     # The surface reflection reaches the base at t0 + 2H/c; a reflection there would be back
     # at the surface from t0 + 3H/c on, minus the half-width of the wavelet (1.5/f0 holds
@@ -102,6 +103,7 @@ def main():
         c.add_argument("--t0", type=float, required=True)
         c.add_argument("--l2-max", type=float, default=0.015)
         c.add_argument("--late-max", type=float, default=1e-3)
+        c.add_argument("--t-end", type=float, help="compare only up to this time [s]")
     e = sub.add_parser("energy")
     e.add_argument("csv")
     e.add_argument("--max-error", type=float, required=True)
