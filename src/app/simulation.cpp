@@ -221,8 +221,10 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
   PetscCall(OptionsErrorIfUnused(comm));
   PetscCall(report(r, ts));
   PetscCall(PetscLogStagePop());
-  if (r->opt.dry_run) {
-    PetscCall(PetscPrintf(comm, "dry run: stopping before the first step\n"));
+  PetscBool help;
+  PetscCall(PetscOptionsHasHelp(nullptr, &help));
+  if (r->opt.dry_run || help) {
+    PetscCall(PetscPrintf(comm, "%s: stopping before the first step\n", help ? "-help" : "dry run"));
   } else {
     if (r->rank == 0) {
       std::filesystem::create_directories(r->opt.output_dir);
