@@ -1,27 +1,72 @@
 #include "slipwave/app/errors.hpp"
 
+#include <cctype>
 #include <cstdio>
+#include <cstring>
+#include <sstream>
+#include <string>
 
 namespace slipwave::app {
 namespace {
 
 const char *g_program = "slipwave";
 
-bool isUserInputError(PetscErrorCode code) {
-  return code == PETSC_ERR_USER_INPUT || code == PETSC_ERR_FILE_OPEN || code == PETSC_ERR_ARG_OUTOFRANGE || code == PETSC_ERR_NOT_CONVERGED;
+bool isUserInputError(PetscErrorCode code, const char *mess) {
+  // PETSc raises a bad boolean option value as PETSC_ERR_ARG_WRONG.
+  const bool bad_bool = code == PETSC_ERR_ARG_WRONG && mess && std::strncmp(mess, "Unknown logical value: ", 23) == 0;
+  return code == PETSC_ERR_USER_INPUT || code == PETSC_ERR_FILE_OPEN || code == PETSC_ERR_ARG_OUTOFRANGE || code == PETSC_ERR_NOT_CONVERGED || bad_bool;
+}
+
+// PETSc's option parsers name the value they cannot convert but not the option; find the
+// option(s) holding that value so the one line names them.
+std::string withOptionName(const char *mess) {
+  struct Kind {
+    const char *head, *tail, *allowed;
+  };
+  static const Kind kinds[] = {{"Input string ", " has no numeric value", "a real number"},
+                               {"Input string ", " has no integer value", "an integer"},
+                               {"Unknown logical value: ", "", "true, false, yes, no, 1 or 0"}};
+  const std::string text = mess ? mess : "";
+  for (const Kind &k : kinds) {
+    if (text.rfind(k.head, 0) != 0) continue;
+    const size_t start = std::strlen(k.head);
+    const size_t end   = k.tail[0] ? text.find(k.tail, start) : text.find_last_not_of(" ") + 1;
+    if (end == std::string::npos || end <= start) continue;
+    const std::string value = text.substr(start, end - start);
+    char             *all   = nullptr;
+    if (PetscOptionsGetAll(nullptr, &all)) return text;
+    std::istringstream       tokens(all ? all : "");
+    std::string              token, name, names;
+    auto isName = [](const std::string &t) { return t.size() > 1 && t[0] == '-' && std::isalpha((unsigned char)t[1]); };
+    while (tokens >> token) {
+      if (isName(token)) name = token;
+      else if (!name.empty()) {
+        // The value itself, or one element of a comma-separated array value.
+        bool hit = token == value;
+        std::istringstream elements(token);
+        for (std::string e; !hit && std::getline(elements, e, ',');) hit = e == value;
+        if (hit) names += (names.empty() ? "" : " or ") + name + " = " + token;
+        name.clear();
+      }
+    }
+    PetscFree(all);
+    if (names.empty()) return text;
+    return names + ": '" + value + "' is not " + k.allowed + "; allowed: " + k.allowed;
+  }
+  return text;
 }
 
 PetscErrorCode userInputHandler(MPI_Comm comm, int line, const char *func, const char *file, PetscErrorCode code,
                                 PetscErrorType type, const char *mess, void *ctx) {
   static bool reported = false;
-  if (!isUserInputError(code) && !reported) return PetscTraceBackErrorHandler(comm, line, func, file, code, type, mess, ctx);
+  if (!isUserInputError(code, mess) && !reported) return PetscTraceBackErrorHandler(comm, line, func, file, code, type, mess, ctx);
   // The first call carries the message; the calls that follow are the unwinding stack.
   if (type == PETSC_ERROR_INITIAL && !reported) {
     reported = true;
     PetscMPIInt rank = 0;
     if (comm != PETSC_COMM_SELF) MPI_Comm_rank(comm, &rank);
     if (rank == 0) {
-      std::fprintf(stderr, "%s: error: %s\n", g_program, mess ? mess : "(no message)");
+      std::fprintf(stderr, "%s: error: %s\n", g_program, mess ? withOptionName(mess).c_str() : "(no message)");
       std::fflush(stderr);
     }
   }

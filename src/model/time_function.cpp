@@ -205,7 +205,9 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
                              "subtract c0 + c1 t from the acceleration so that the integrated velocity and displacement end at zero", "TimeFunction::Read",
                              baseline, &baseline, nullptr));
   PetscCheck(has_file && file[0], comm, PETSC_ERR_USER_INPUT, "%sstf record needs the file; allowed: %srecord <file.csv|file.at2>", p.c_str(), p.c_str());
-  PetscCheck(std::isfinite(scale) && scale != 0, comm, PETSC_ERR_USER_INPUT, "%srecord_scale = %g; allowed: a finite factor other than 0", p.c_str(), (double)scale);
+  char scale_text[32]; // formatted here: PETSc's own %g would print 0 as "0."
+  std::snprintf(scale_text, sizeof scale_text, "%g", (double)scale);
+  PetscCheck(std::isfinite(scale) && scale != 0, comm, PETSC_ERR_USER_INPUT, "%srecord_scale = %s; allowed: a finite factor other than 0", p.c_str(), scale_text);
   bool at2;
   if (has_format) {
     at2 = equalsNoCase(format, "at2");
