@@ -22,6 +22,8 @@ BENCHES  := $(BENCH_SRC:%.cpp=$(BUILD)/%)
 LIB      := $(BUILD)/libslipwave.a
 
 .PHONY: all deps run test bench clean build-only test-only run-only bench-only
+# Keep the objects of the programs (make would delete them as intermediates and relink).
+.SECONDARY:
 all: deps
 	@$(MAKE) --no-print-directory build-only
 
