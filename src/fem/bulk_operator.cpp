@@ -68,22 +68,76 @@ PetscErrorCode cellVerticesInKernelOrder(DM dm, PetscInt cell, CellShape shape, 
   PetscFunctionReturn(0);
 }
 
-template <int N>
-void applyCells(PetscInt ncell, PetscInt nen, PetscInt dim, const PetscInt *cell_dofs, const PetscInt *cell_matrix, const double *pool,
-                const PetscScalar *u, PetscScalar *f) {
-  double ue[N], fe[N];
-  for (PetscInt c = 0; c < ncell; ++c) {
-    const PetscInt *dofs = cell_dofs + c * nen;
-    for (PetscInt a = 0; a < nen; ++a)
-      for (PetscInt i = 0; i < dim; ++i) ue[a * dim + i] = u[dofs[a] + i];
-    const double *K = pool + (size_t)cell_matrix[c] * N * N;
-    for (int r = 0; r < N; ++r) {
-      double s = 0;
-      for (int j = 0; j < N; ++j) s += K[r * N + j] * ue[j];
-      fe[r] = s;
+// The hot loop of f += K u. NEN nodes of DIM dofs per cell are compile-time constants so the
+// gather/scatter and the N x N product unroll completely. Runs of kBatch consecutive cells
+// that share one element matrix (every cell of a box-mesh region) are done together: their
+// element vectors are gathered transposed, ue[j] = (u_j of cell 0..kBatch-1), so that
+// fe[r] = sum_j K[r][j] ue[j] is a SIMD operation across the cells with K[r][j] broadcast,
+// and the N accumulators fe[r] are independent. The sum over j runs in the same order as in
+// the per-cell product. Explicit vector types because the default tuning (-march=native on
+// this compiler) vectorises loops at 128 bits only. The scatter stays scalar and in cell
+// order (cells of a batch share nodes).
+constexpr int kBatch = 8;
+typedef double BatchVec __attribute__((vector_size(kBatch * sizeof(double))));
+
+template <int NEN, int DIM>
+inline void applyOne(const PetscInt *__restrict dofs, const double *__restrict K, const PetscScalar *__restrict u, PetscScalar *__restrict f) {
+  constexpr int N = NEN * DIM;
+  double        ue[N], fe[N];
+  for (int a = 0; a < NEN; ++a)
+    for (int i = 0; i < DIM; ++i) ue[a * DIM + i] = u[dofs[a] + i];
+  for (int r = 0; r < N; ++r) {
+    double s = 0;
+    for (int j = 0; j < N; ++j) s += K[r * N + j] * ue[j];
+    fe[r] = s;
+  }
+  for (int a = 0; a < NEN; ++a)
+    for (int i = 0; i < DIM; ++i) f[dofs[a] + i] += fe[a * DIM + i];
+}
+
+template <int NEN, int DIM>
+void applyCells(PetscInt ncell, const PetscInt *__restrict cell_dofs, const PetscInt *__restrict cell_matrix, const double *__restrict pool,
+                const PetscScalar *__restrict u, PetscScalar *__restrict f) {
+  constexpr int N = NEN * DIM;
+  union Lanes {
+    BatchVec v;
+    double   d[kBatch];
+  };
+  Lanes    ue[N], fe[N];
+  PetscInt c = 0;
+  while (c < ncell) {
+    const PetscInt m   = cell_matrix[c];
+    PetscInt       run = 1;
+    while (run < kBatch && c + run < ncell && cell_matrix[c + run] == m) ++run;
+    const double *__restrict K = pool + (size_t)m * N * N;
+    if (run < kBatch) {
+      for (PetscInt k = 0; k < run; ++k) applyOne<NEN, DIM>(cell_dofs + (c + k) * NEN, K, u, f);
+      c += run;
+      continue;
     }
-    for (PetscInt a = 0; a < nen; ++a)
-      for (PetscInt i = 0; i < dim; ++i) f[dofs[a] + i] += fe[a * dim + i];
+    const PetscInt *__restrict dofs = cell_dofs + c * NEN;
+    for (int b = 0; b < kBatch; ++b)
+      for (int a = 0; a < NEN; ++a) {
+        const PetscScalar *__restrict ua = u + dofs[b * NEN + a];
+        for (int i = 0; i < DIM; ++i) ue[a * DIM + i].d[b] = ua[i];
+      }
+    BatchVec acc[N];
+#pragma GCC unroll 24
+    for (int r = 0; r < N; ++r) acc[r] = K[r * N] * ue[0].v;
+#pragma GCC unroll 24
+    for (int j = 1; j < N; ++j) {
+      const BatchVec uj = ue[j].v;
+#pragma GCC unroll 24
+      for (int r = 0; r < N; ++r) acc[r] += K[r * N + j] * uj;
+    }
+#pragma GCC unroll 24
+    for (int r = 0; r < N; ++r) fe[r].v = acc[r];
+    for (int b = 0; b < kBatch; ++b)
+      for (int a = 0; a < NEN; ++a) {
+        PetscScalar *__restrict fa = f + dofs[b * NEN + a];
+        for (int i = 0; i < DIM; ++i) fa[i] += fe[a * DIM + i].d[b];
+      }
+    c += kBatch;
   }
 }
 
@@ -205,10 +259,10 @@ void BulkOperator::addStiffnessTimes(const PetscScalar *u, PetscScalar *f) const
   const PetscInt *mats = cell_matrix_.data();
   const double   *pool = stiffness_.data();
   switch (nen_ * dim_) {
-  case 6: applyCells<6>(ncell_, nen_, dim_, dofs, mats, pool, u, f); break;
-  case 8: applyCells<8>(ncell_, nen_, dim_, dofs, mats, pool, u, f); break;
-  case 12: applyCells<12>(ncell_, nen_, dim_, dofs, mats, pool, u, f); break;
-  case 24: applyCells<24>(ncell_, nen_, dim_, dofs, mats, pool, u, f); break;
+  case 6: applyCells<3, 2>(ncell_, dofs, mats, pool, u, f); break;  // Tri3
+  case 8: applyCells<4, 2>(ncell_, dofs, mats, pool, u, f); break;  // Quad4
+  case 12: applyCells<4, 3>(ncell_, dofs, mats, pool, u, f); break; // Tet4
+  case 24: applyCells<8, 3>(ncell_, dofs, mats, pool, u, f); break; // Hex8
   default: break;
   }
 }
