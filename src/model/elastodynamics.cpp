@@ -56,6 +56,18 @@ PetscErrorCode assembleMass(Elastodynamics *m) {
 PetscErrorCode assembleDampingBlocks(Elastodynamics *m) {
   const PetscInt bs = m->dim;
   PetscFunctionBeginUser;
+  {
+    PetscInt           nb;
+    const PetscScalar *C;
+    PetscCall(VecGetLocalSize(m->bc.absorbing_blocks, &nb));
+    PetscCall(VecGetArrayRead(m->bc.absorbing_blocks, &C));
+    for (PetscInt node = 0; node < nb / (bs * bs); ++node) {
+      bool any = false;
+      for (PetscInt k = 0; k < bs * bs; ++k) any = any || C[node * bs * bs + k] != 0.0;
+      if (any) m->absorbing_nodes.push_back(node);
+    }
+    PetscCall(VecRestoreArrayRead(m->bc.absorbing_blocks, &C));
+  }
   if (!m->bc.has_absorbing && m->rayleigh.alpha == 0) PetscFunctionReturn(0);
   PetscCall(VecDuplicate(m->bc.absorbing_blocks, &m->damping_blocks));
   PetscInt           n;

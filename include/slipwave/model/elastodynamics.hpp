@@ -38,6 +38,7 @@ struct Elastodynamics {
 
   Vec mass = nullptr, inv_mass = nullptr; // lumped, per dof
   Vec damping_blocks = nullptr;           // per node (C_abs + alpha M)/m, held dofs decoupled; null if none
+  std::vector<PetscInt> absorbing_nodes;  // owned nodes (global-vector order) with a dashpot
   Vec u_local = nullptr, f_local = nullptr;
   // Parts of the last RHS evaluation, for the energy ledger.
   Vec       f_internal = nullptr, f_external = nullptr, f_input = nullptr, f_stiffness_damping = nullptr;

@@ -1,0 +1,16 @@
+# Divergence guard: an incident-wave record of 1e308 m/s^2 overflows the input force on the
+# first step. The run must stop with one line giving the step, the time, the node, the
+# field and the component, exit non-zero, and leave only finite values in its output files
+# (the guard runs before any output of the step).
+set -eu
+. tests/tools/lib.sh
+printf 't,a\n0,0\n0.01,1e308\n0.02,1e308\n1,1e308\n' > "$WORK/huge.csv"
+if $SW -mesh_box_faces 1,20 -mesh_box_upper 1,100 -regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 \
+   -bc_bottom_type absorbing -input_wave sv -input_boundary bottom -input_stf record -input_record "$WORK/huge.csv" \
+   -input_baseline_correction 0 -constrain_components y -ts_max_time 0.5 -output_dir "$WORK/out" 2> "$WORK/err.txt"; then
+  echo "the run did not stop"; exit 1
+fi
+cat "$WORK/err.txt"
+grep -Eq "^slipwave: error: diverged at step [0-9]+, t = [0-9.e+-]+ s: (displacement|velocity) is not finite at node [0-9]+ .*component [xy]" "$WORK/err.txt"
+[ "$(wc -l < "$WORK/err.txt")" -eq 1 ]
+$PY scripts/check_output.py "$WORK/out"
