@@ -199,6 +199,9 @@ PetscErrorCode createFromGmsh(MPI_Comm comm, const char *file, DM *dm, const std
     SETERRQ(comm, PETSC_ERR_USER_INPUT, "-mesh_file = %s: not a valid Gmsh mesh (%s); allowed: a Gmsh .msh file (format 2.2 or 4.1) with physical groups", file,
             specific && specific[0] ? specific : (text ? text : "unreadable"));
   }
+  // The reader puts the whole mesh on rank 0; the other ranks hold no points and may lack
+  // the physical-name labels. Decide on rank 0 and broadcast, so every rank raises the same
+  // error and lists the same boundaries (a check failing on one rank only would hang).
   PetscInt dim, c_start, c_end, f_start, f_end, nlabels;
   PetscCall(DMGetDimension(*dm, &dim));
   PetscCall(DMPlexGetHeightStratum(*dm, 0, &c_start, &c_end));
@@ -209,19 +212,27 @@ PetscErrorCode createFromGmsh(MPI_Comm comm, const char *file, DM *dm, const std
   for (size_t r = 0; r < regions.size(); ++r) {
     DMLabel label;
     PetscCall(DMGetLabel(*dm, regions[r].c_str(), &label));
-    PetscCheck(label, comm, PETSC_ERR_USER_INPUT, "-regions names '%s', but %s has no physical group of that name; allowed: the names of its physical groups",
+    int found = label != nullptr;
+    PetscCallMPI(MPI_Bcast(&found, 1, MPI_INT, 0, comm));
+    PetscCheck(found, comm, PETSC_ERR_USER_INPUT, "-regions names '%s', but %s has no physical group of that name; allowed: the names of its physical groups",
                regions[r].c_str(), file);
+    if (!label) continue;
     for (PetscInt c = c_start; c < c_end; ++c) {
       PetscInt value;
       PetscCall(DMLabelGetValue(label, c, &value));
       if (value >= 0) PetscCall(DMLabelSetValue(region_label, c, (PetscInt)r));
     }
   }
-  for (PetscInt c = c_start; c < c_end; ++c) {
+  PetscInt orphan = -1;
+  for (PetscInt c = c_start; c < c_end && orphan < 0; ++c) {
     PetscInt value;
     PetscCall(DMLabelGetValue(region_label, c, &value));
-    PetscCheck(value >= 0, comm, PETSC_ERR_USER_INPUT, "cell %" PetscInt_FMT " of %s belongs to none of the regions listed in -regions; allowed: every cell in a listed region", c, file);
+    if (value < 0) orphan = c;
   }
+  PetscCallMPI(MPI_Bcast(&orphan, 1, MPIU_INT, 0, comm));
+  PetscCheck(orphan < 0, comm, PETSC_ERR_USER_INPUT, "cell %" PetscInt_FMT " of %s belongs to none of the regions listed in -regions; allowed: every cell in a listed region", orphan,
+             file);
+  std::string names; // rank 0's face labels, comma-separated
   PetscCall(DMGetNumLabels(*dm, &nlabels));
   for (PetscInt l = 0; l < nlabels; ++l) {
     const char *name;
@@ -234,7 +245,19 @@ PetscErrorCode createFromGmsh(MPI_Comm comm, const char *file, DM *dm, const std
       PetscCall(DMLabelGetValue(label, f, &value));
       on_faces = value >= 0;
     }
-    if (on_faces && std::strcmp(name, "Face Sets") != 0 && std::strcmp(name, "celltype") != 0) boundaries->push_back(name);
+    // PETSc's own labels ("depth" and "celltype" hold every point; the "* Sets" labels hold
+    // the physical group numbers) are not boundaries.
+    bool internal = false;
+    for (const char *own : {"depth", "celltype", "Face Sets", "Cell Sets", "Vertex Sets", "Edge Sets", kRegionLabel}) internal = internal || std::strcmp(name, own) == 0;
+    if (on_faces && !internal) names += (names.empty() ? "" : ",") + std::string(name);
+  }
+  int len = (int)names.size();
+  PetscCallMPI(MPI_Bcast(&len, 1, MPI_INT, 0, comm));
+  names.resize(len);
+  PetscCallMPI(MPI_Bcast(names.data(), len, MPI_CHAR, 0, comm));
+  for (const std::string &name : splitNames(names.c_str())) {
+    PetscCall(DMCreateLabel(*dm, name.c_str())); // no-op where it exists
+    boundaries->push_back(name);
   }
   PetscFunctionReturn(0);
 }
