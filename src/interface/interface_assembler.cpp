@@ -1,0 +1,216 @@
+#include "slipwave/interface/interface_assembler.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace slipwave::interface {
+namespace {
+
+// A right-handed tangent basis of the plane normal to n: in 2D t = (-n_y, n_x) (spec §2);
+// in 3D t1 along the axis least aligned with n, projected, and t2 = n x t1.
+void tangentBasis(PetscInt dim, const double *n, double *t) {
+  if (dim == 2) {
+    t[0] = -n[1];
+    t[1] = n[0];
+    return;
+  }
+  double e[3] = {0, 0, 0};
+  int    k    = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::fabs(n[i]) < std::fabs(n[k])) k = i;
+  e[k]         = 1;
+  const double d = e[0] * n[0] + e[1] * n[1] + e[2] * n[2];
+  double       len = 0;
+  for (int i = 0; i < 3; ++i) {
+    t[i] = e[i] - d * n[i];
+    len += t[i] * t[i];
+  }
+  len = std::sqrt(len);
+  for (int i = 0; i < 3; ++i) t[i] /= len;
+  t[3] = n[1] * t[2] - n[2] * t[1];
+  t[4] = n[2] * t[0] - n[0] * t[2];
+  t[5] = n[0] * t[1] - n[1] * t[0];
+}
+
+template <int Dim>
+double updatePairs(const physics::InterfaceLaw &law, const mesh::InterfacePairs &pairs, const double *tangent, std::vector<physics::InterfaceState<Dim>> &states,
+                   std::vector<double> &jump_prev, const PetscScalar *pu, PetscScalar *pf) {
+  constexpr int NT = Dim - 1;
+  double        max_drift = 0;
+  for (size_t p = 0; p < states.size(); ++p) {
+    const double *n = &pairs.normal[p * Dim];
+    const double *t = &tangent[p * NT * Dim];
+    double        dj[Dim];
+    for (int i = 0; i < Dim; ++i) {
+      const double jump = PetscRealPart(pu[p * 2 * Dim + Dim + i]) - PetscRealPart(pu[p * 2 * Dim + i]);
+      dj[i]             = jump - jump_prev[p * Dim + i];
+      jump_prev[p * Dim + i] = jump;
+    }
+    double dw_N = 0, dw_T[NT];
+    for (int i = 0; i < Dim; ++i) dw_N += dj[i] * n[i];
+    for (int k = 0; k < NT; ++k) {
+      dw_T[k] = 0;
+      for (int i = 0; i < Dim; ++i) dw_T[k] += dj[i] * t[k * Dim + i];
+    }
+    physics::InterfaceState<Dim> &s = states[p];
+    max_drift                       = std::max(max_drift, physics::interfaceUpdate<Dim>(law, s, dw_T, dw_N));
+    // tau: force per unit area of the structure on the soil (spec §2).
+    const double A = pairs.area[p];
+    for (int i = 0; i < Dim; ++i) {
+      double tau = s.sigma_N * n[i];
+      for (int k = 0; k < NT; ++k) tau += s.sigma_T[k] * t[k * Dim + i];
+      pf[p * 2 * Dim + i]       = A * tau;
+      pf[p * 2 * Dim + Dim + i] = -A * tau;
+    }
+  }
+  return max_drift;
+}
+
+template <int Dim>
+void totalsOf(const physics::InterfaceLaw &law, const mesh::InterfacePairs &pairs, const std::vector<physics::InterfaceState<Dim>> &states, InterfaceTotals *t) {
+  for (size_t p = 0; p < states.size(); ++p) {
+    const auto &s = states[p];
+    t->stored += pairs.area[p] * physics::detail::storedEnergy<Dim>(law, s);
+    t->dissipated += pairs.area[p] * s.dissipation;
+    t->n_stick += s.status == physics::InterfaceStatus::Stick;
+    t->n_slip += s.status == physics::InterfaceStatus::Slip;
+    t->n_open += s.status == physics::InterfaceStatus::Open;
+  }
+}
+
+// opening w_N, slip vector (tangential jump in x,y,z), sigma_N, sigma_T vector (x,y,z),
+// plastic opening, accumulated slip, status (0 stick, 1 slip, 2 open), dissipation [J/m^2].
+template <int Dim>
+void fieldsOf(const mesh::InterfacePairs &pairs, const double *tangent, const std::vector<physics::InterfaceState<Dim>> &states, const std::vector<double> &jump,
+              std::vector<double> *out) {
+  constexpr int NT = Dim - 1;
+  for (size_t p = 0; p < states.size(); ++p) {
+    const auto   &s = states[p];
+    const double *n = &pairs.normal[p * Dim];
+    const double *t = &tangent[p * NT * Dim];
+    double        wn = 0, slip[3] = {0, 0, 0}, st[3] = {0, 0, 0};
+    for (int i = 0; i < Dim; ++i) wn += jump[p * Dim + i] * n[i];
+    for (int i = 0; i < Dim; ++i) {
+      slip[i] = jump[p * Dim + i] - wn * n[i];
+      for (int k = 0; k < NT; ++k) st[i] += s.sigma_T[k] * t[k * Dim + i];
+    }
+    out->push_back(wn);
+    out->insert(out->end(), slip, slip + 3);
+    out->push_back(s.sigma_N);
+    out->insert(out->end(), st, st + 3);
+    out->push_back(s.wp_N);
+    out->push_back(s.slip);
+    out->push_back((double)s.status);
+    out->push_back(s.dissipation);
+  }
+}
+
+} // namespace
+
+std::vector<std::string> InterfaceAssembler::pairFieldNames(PetscInt) {
+  return {"opening", "slip", "sigma_N", "sigma_T", "plastic_opening", "accumulated_slip", "status", "dissipation"};
+}
+
+PetscErrorCode InterfaceAssembler::Setup(MPI_Comm comm, PetscInt dim, const mesh::InterfaceSpec &spec, const mesh::InterfacePairs &pairs,
+                                         const physics::InterfaceParams &params, double sigma_N0, Vec u_template) {
+  PetscFunctionBeginUser;
+  comm_   = comm;
+  dim_    = dim;
+  spec_   = spec;
+  pairs_  = pairs;
+  params_ = params;
+  const PetscInt np = (PetscInt)pairs_.id.size();
+  tangent_.resize(np * (dim - 1) * dim);
+  for (PetscInt p = 0; p < np; ++p) tangentBasis(dim, &pairs_.normal[p * dim], &tangent_[p * (dim - 1) * dim]);
+  jump_prev_.assign(np * dim, 0.0);
+  const physics::InterfaceLaw law(params_);
+  if (dim == 2) states2_.assign(np, physics::interfaceInitialState<2>(law, sigma_N0));
+  else states3_.assign(np, physics::interfaceInitialState<3>(law, sigma_N0));
+
+  std::vector<PetscInt> from(np * 2 * dim);
+  for (PetscInt p = 0; p < np; ++p)
+    for (PetscInt i = 0; i < dim; ++i) {
+      from[p * 2 * dim + i]       = pairs_.soil_dof[p] + i;
+      from[p * 2 * dim + dim + i] = pairs_.structure_dof[p] + i;
+    }
+  IS is_from, is_to;
+  PetscCall(ISCreateGeneral(PETSC_COMM_SELF, np * 2 * dim, from.data(), PETSC_COPY_VALUES, &is_from));
+  PetscCall(ISCreateStride(PETSC_COMM_SELF, np * 2 * dim, 0, 1, &is_to));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, np * 2 * dim, &pair_u_));
+  PetscCall(VecDuplicate(pair_u_, &pair_f_));
+  PetscCall(VecScatterCreate(u_template, is_from, pair_u_, is_to, &scatter_));
+  PetscCall(ISDestroy(&is_from));
+  PetscCall(ISDestroy(&is_to));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceAssembler::AddForces(Vec u, Vec f) {
+  PetscFunctionBeginUser;
+  PetscCall(VecScatterBegin(scatter_, u, pair_u_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(scatter_, u, pair_u_, INSERT_VALUES, SCATTER_FORWARD));
+  const PetscScalar *pu;
+  PetscScalar       *pf;
+  PetscCall(VecGetArrayRead(pair_u_, &pu));
+  PetscCall(VecGetArray(pair_f_, &pf));
+  const physics::InterfaceLaw law(params_);
+  const double drift = dim_ == 2 ? updatePairs<2>(law, pairs_, tangent_.data(), states2_, jump_prev_, pu, pf)
+                                 : updatePairs<3>(law, pairs_, tangent_.data(), states3_, jump_prev_, pu, pf);
+  max_drift_ = std::max(max_drift_, drift);
+  PetscCall(VecRestoreArray(pair_f_, &pf));
+  PetscCall(VecRestoreArrayRead(pair_u_, &pu));
+  PetscCall(VecScatterBegin(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecScatterEnd(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceAssembler::AddStiffnessRowAbsSums(Vec rowabs) {
+  PetscScalar *pf;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(pair_f_, &pf));
+  for (size_t p = 0; p < pairs_.id.size(); ++p) {
+    const double *n = &pairs_.normal[p * dim_];
+    for (PetscInt i = 0; i < dim_; ++i) {
+      double row = 0;
+      for (PetscInt j = 0; j < dim_; ++j) row += std::fabs(params_.E * n[i] * n[j] + params_.G * ((i == j ? 1.0 : 0.0) - n[i] * n[j]));
+      // The pair couples the two nodes with +k and -k: each row sees |k| twice.
+      pf[p * 2 * dim_ + i] = pf[p * 2 * dim_ + dim_ + i] = 2 * pairs_.area[p] * row;
+    }
+  }
+  PetscCall(VecRestoreArray(pair_f_, &pf));
+  PetscCall(VecScatterBegin(scatter_, pair_f_, rowabs, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecScatterEnd(scatter_, pair_f_, rowabs, ADD_VALUES, SCATTER_REVERSE));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceAssembler::Totals(InterfaceTotals *t) const {
+  PetscFunctionBeginUser;
+  const physics::InterfaceLaw law(params_);
+  InterfaceTotals             local;
+  if (dim_ == 2) totalsOf<2>(law, pairs_, states2_, &local);
+  else totalsOf<3>(law, pairs_, states3_, &local);
+  double   sums[2] = {local.stored, local.dissipated};
+  PetscInt counts[3] = {local.n_stick, local.n_slip, local.n_open};
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, counts, 3, MPIU_INT, MPI_SUM, comm_));
+  double drift = max_drift_;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &drift, 1, MPI_DOUBLE, MPI_MAX, comm_));
+  *t = InterfaceTotals{sums[0], sums[1], drift, counts[0], counts[1], counts[2]};
+  PetscFunctionReturn(0);
+}
+
+void InterfaceAssembler::pairFields(std::vector<double> *values, int *per_pair) const {
+  values->clear();
+  if (dim_ == 2) fieldsOf<2>(pairs_, tangent_.data(), states2_, jump_prev_, values);
+  else fieldsOf<3>(pairs_, tangent_.data(), states3_, jump_prev_, values);
+  *per_pair = 12;
+}
+
+PetscErrorCode InterfaceAssembler::Destroy() {
+  PetscFunctionBeginUser;
+  PetscCall(VecScatterDestroy(&scatter_));
+  PetscCall(VecDestroy(&pair_u_));
+  PetscCall(VecDestroy(&pair_f_));
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::interface
