@@ -44,6 +44,15 @@ PetscErrorCode cellCentroid(DM dm, PetscInt cell, PetscReal *centroid) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode broadcastFromRoot(MPI_Comm comm, std::string *text) {
+  int len = (int)text->size();
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Bcast(&len, 1, MPI_INT, 0, comm));
+  text->resize(len);
+  if (len) PetscCallMPI(MPI_Bcast(&(*text)[0], len, MPI_CHAR, 0, comm));
+  PetscFunctionReturn(0);
+}
+
 // Box meshes: each cell goes to the last listed region whose box holds its centroid; a region
 // given without a box takes every cell no other box claims.
 PetscErrorCode labelBoxRegions(MPI_Comm comm, DM dm, const std::vector<std::string> &regions, const BoxSpec &box) {
@@ -78,6 +87,7 @@ PetscErrorCode labelBoxRegions(MPI_Comm comm, DM dm, const std::vector<std::stri
   PetscCall(DMGetLabel(dm, kRegionLabel, &label));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
   std::vector<PetscInt> count(regions.size(), 0);
+  std::string           problem;
   for (PetscInt c = c_start; c < c_end; ++c) {
     PetscReal x[3];
     PetscCall(cellCentroid(dm, c, x));
@@ -88,14 +98,19 @@ PetscErrorCode labelBoxRegions(MPI_Comm comm, DM dm, const std::vector<std::stri
       for (PetscInt d = 0; d < dim; ++d) inside = inside && x[d] >= bounds[r][2 * d] && x[d] <= bounds[r][2 * d + 1];
       if (inside) region = (PetscInt)r;
     }
-    PetscCheck(region >= 0, comm, PETSC_ERR_USER_INPUT,
-               "the cell with centroid (%g, %g%s) lies in no region box; allowed: region boxes that cover the mesh, or one region without -region_<name>_box",
-               (double)x[0], (double)x[1], dim == 3 ? ", ..." : "");
+    if (region < 0) {
+      char msg[256];
+      std::snprintf(msg, sizeof msg,
+                    "the cell with centroid (%g, %g%s) lies in no region box; allowed: region boxes that cover the mesh, or one region without -region_<name>_box",
+                    (double)x[0], (double)x[1], dim == 3 ? ", ..." : "");
+      problem = msg;
+      break;
+    }
     PetscCall(DMLabelSetValue(label, c, region));
     ++count[region];
   }
-  if (c_end > c_start) {
-    for (size_t r = 0; r < regions.size(); ++r) {
+  if (c_end > c_start && problem.empty()) {
+    for (size_t r = 0; r < regions.size() && problem.empty(); ++r) {
       std::string given = "not given, so it only takes cells no box claims";
       if (!bounds[r].empty()) {
         given = "=";
@@ -105,12 +120,19 @@ PetscErrorCode labelBoxRegions(MPI_Comm comm, DM dm, const std::vector<std::stri
           given += v;
         }
       }
-      PetscCheck(count[r] > 0, comm, PETSC_ERR_USER_INPUT,
-                 "region '%s' contains no cell of the mesh (-region_%s_box %s); allowed: a box holding at least one cell centroid (the mesh spans [%g, %g] x [%g, %g]%s)",
-                 regions[r].c_str(), regions[r].c_str(), given.c_str(),
-                 (double)box.lower[0], (double)box.upper[0], (double)box.lower[1], (double)box.upper[1], dim == 3 ? " x ..." : "");
+      if (count[r] == 0) {
+        char msg[512];
+        std::snprintf(msg, sizeof msg,
+                      "region '%s' contains no cell of the mesh (-region_%s_box %s); allowed: a box holding at least one cell centroid (the mesh spans [%g, %g] x [%g, %g]%s)",
+                      regions[r].c_str(), regions[r].c_str(), given.c_str(), (double)box.lower[0], (double)box.upper[0], (double)box.lower[1],
+                      (double)box.upper[1], dim == 3 ? " x ..." : "");
+        problem = msg;
+      }
     }
   }
+  // Only rank 0 holds the serial mesh: it decides, and every rank raises the same error.
+  PetscCall(broadcastFromRoot(comm, &problem));
+  PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "%s", problem.c_str());
   PetscFunctionReturn(0);
 }
 
@@ -251,10 +273,7 @@ PetscErrorCode createFromGmsh(MPI_Comm comm, const char *file, DM *dm, const std
     for (const char *own : {"depth", "celltype", "Face Sets", "Cell Sets", "Vertex Sets", "Edge Sets", kRegionLabel}) internal = internal || std::strcmp(name, own) == 0;
     if (on_faces && !internal) names += (names.empty() ? "" : ",") + std::string(name);
   }
-  int len = (int)names.size();
-  PetscCallMPI(MPI_Bcast(&len, 1, MPI_INT, 0, comm));
-  names.resize(len);
-  PetscCallMPI(MPI_Bcast(names.data(), len, MPI_CHAR, 0, comm));
+  PetscCall(broadcastFromRoot(comm, &names));
   for (const std::string &name : splitNames(names.c_str())) {
     PetscCall(DMCreateLabel(*dm, name.c_str())); // no-op where it exists
     boundaries->push_back(name);
