@@ -149,8 +149,8 @@ PetscErrorCode report(Run *r, TS ts) {
   PetscCall(VecGetSize(r->model.mass, &n_nodes));
   PetscCallMPI(MPI_Allreduce(&ncell_local, &ncell, 1, MPIU_INT, MPI_SUM, comm));
   PetscCall(TSGetTimeStep(ts, &dt));
-  PetscCall(PetscPrintf(comm, "slipwave: explicit elastodynamics, %" PetscInt_FMT "D %s, %d rank%s\n", r->model.dim, r->model.dim == 2 ? "plane strain" : "",
-                        size, size > 1 ? "s" : ""));
+  PetscCall(PetscPrintf(comm, "slipwave: explicit elastodynamics, %" PetscInt_FMT "D %s, %d rank%s (partitioner %s)\n", r->model.dim,
+                        r->model.dim == 2 ? "plane strain" : "", size, size > 1 ? "s" : "", r->model.mesh.partitioner.c_str()));
   PetscCall(PetscPrintf(comm, "  mesh: %s, %" PetscInt_FMT " cells, %" PetscInt_FMT " nodes, %" PetscInt_FMT " distinct element matrices on rank 0\n",
                         r->model.mesh.source.c_str(), ncell, n_nodes / r->model.dim, r->model.bulk.distinctMatrices()));
   const double fmax = r->model.bc.input.active() ? r->model.bc.input.topFrequency() : 0.0;

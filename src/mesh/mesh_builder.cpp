@@ -1,4 +1,5 @@
 #include "slipwave/mesh/mesh_builder.hpp"
+#include "slipwave/mesh/partition_metis.hpp"
 
 #include <cstdio>
 #include <cstring>
@@ -330,7 +331,13 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   PetscPartitioner part;
   DM               dist = nullptr;
   PetscCall(DMPlexGetPartitioner(serial, &part));
+  // METIS is the default (this PETSc has none of its own; slipwave registers it); the user can
+  // still pick another with -petscpartitioner_type.
+  PetscCall(PetscPartitionerSetType(part, kPartitionerMetis));
   PetscCall(PetscPartitionerSetFromOptions(part));
+  PetscPartitionerType part_type;
+  PetscCall(PetscPartitionerGetType(part, &part_type));
+  desc->partitioner = part_type;
   PetscCall(DMPlexDistribute(serial, 0, nullptr, &dist));
   if (dist) {
     PetscCall(DMDestroy(&serial));

@@ -21,6 +21,7 @@ struct MeshDescription {
   std::vector<std::string> regions;    // region names, in label-value order
   std::vector<std::string> boundaries; // boundary label names
   std::string              source;     // "box NxM" or the file name, for the report
+  std::string              partitioner; // the PetscPartitioner type that distributed the mesh
 };
 
 // Reads the -mesh_* and -regions options, creates, labels and distributes the mesh.
