@@ -1,0 +1,31 @@
+// An interface as its own XDMF grid, interface_<name>.xmf/h5: lines in 2D, faces in 3D, one
+// node per pair (numbered by pair id, so the grid does not depend on the partition), with
+// per step: opening w_N, slip (tangential jump vector), sigma_N, sigma_T (vector), plastic
+// opening, accumulated slip, status (0 stick, 1 slip, 2 open), dissipation [J/m^2].
+#pragma once
+#include <petscvec.h>
+
+#include <string>
+#include <vector>
+
+#include "slipwave/interface/interface_assembler.hpp"
+#include "slipwave/io/field_writer.hpp"
+
+namespace slipwave::io {
+
+class InterfaceOutput {
+public:
+  PetscErrorCode Open(MPI_Comm comm, PetscInt dim, const interface::InterfaceAssembler &iface, const std::string &dir);
+  PetscErrorCode Write(const interface::InterfaceAssembler &iface, PetscInt step, PetscReal t);
+  PetscErrorCode Close();
+
+private:
+  PetscErrorCode fill(const interface::InterfaceAssembler &iface);
+  FieldWriter      writer_;
+  Vec              geometry_ = nullptr;
+  IS               topology_ = nullptr;
+  std::vector<Vec> fields_;
+  std::vector<int> widths_;
+};
+
+} // namespace slipwave::io
