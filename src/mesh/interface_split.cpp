@@ -82,7 +82,15 @@ PetscErrorCode InterfaceSplitSerialMesh(DM serial, const std::vector<std::string
   PetscCall(DMPlexGetDepthStratum(serial, 0, &v_start, &v_end));
   PetscCall(DMPlexGetHeightStratum(serial, 1, &f_start, &f_end));
   PetscCall(DMGetLabel(serial, kRegionLabel, &region_label));
-  PetscCheck(region_label, comm, PETSC_ERR_ARG_WRONG, "InterfaceSplitSerialMesh: the mesh has no '%s' label; label the regions first", kRegionLabel);
+  {
+    // Labels may exist only on rank 0 (the one holding the cells): decide there, for everyone.
+    PetscInt depth, ok[2];
+    PetscCall(DMPlexGetDepth(serial, &depth));
+    ok[0] = region_label != nullptr, ok[1] = depth == dim;
+    PetscCallMPI(MPI_Bcast(ok, 2, MPIU_INT, 0, comm));
+    PetscCheck(ok[0], comm, PETSC_ERR_ARG_WRONG, "InterfaceSplitSerialMesh: the mesh has no '%s' label; label the regions first", kRegionLabel);
+    PetscCheck(ok[1], comm, PETSC_ERR_ARG_WRONG, "InterfaceSplitSerialMesh: the mesh is not interpolated (no faces); create it with interpolate = PETSC_TRUE");
+  }
   {
     // The split must see every cell: a mesh already spread over ranks would lose the faces
     // between ranks (and PETSc's own split corrupts distributed meshes, see the notes).
@@ -120,7 +128,9 @@ PetscErrorCode InterfaceSplitSerialMesh(DM serial, const std::vector<std::string
     PetscInt             touching   = -1; // an earlier interface that shares a vertex with this one
     if (!sp.face_label.empty()) {
       PetscCall(DMGetLabel(serial, sp.face_label.c_str(), &face_label));
-      PetscCheck(face_label, comm, PETSC_ERR_USER_INPUT, "interface '%s': face label '%s' does not exist in the mesh; allowed: a face group of the mesh (%s)", sp.name.c_str(),
+      PetscInt exists = face_label != nullptr;
+      PetscCallMPI(MPI_Bcast(&exists, 1, MPIU_INT, 0, comm));
+      PetscCheck(exists, comm, PETSC_ERR_USER_INPUT, "interface '%s': face label '%s' does not exist in the mesh; allowed: a face group of the mesh (%s)", sp.name.c_str(),
                  sp.face_label.c_str(), joinNames(boundaries).c_str());
     }
     for (PetscInt f = f_start; f < f_end; ++f) {
@@ -159,8 +169,8 @@ PetscErrorCode InterfaceSplitSerialMesh(DM serial, const std::vector<std::string
     PetscInt nfaces = (PetscInt)iface_faces[s].size();
     PetscCallMPI(MPI_Bcast(&nfaces, 1, MPIU_INT, 0, comm));
     PetscCheck(nfaces > 0, comm, PETSC_ERR_USER_INPUT, "interface '%s': regions '%s' (soil) and '%s' (structure) share no face%s%s%s; allowed: two regions that touch along faces",
-               sp.name.c_str(), sp.soil_region.c_str(), sp.structure_region.c_str(), face_label ? " within face label '" : "", face_label ? sp.face_label.c_str() : "",
-               face_label ? "'" : "");
+               sp.name.c_str(), sp.soil_region.c_str(), sp.structure_region.c_str(), sp.face_label.empty() ? "" : " within face label '", sp.face_label.c_str(),
+               sp.face_label.empty() ? "" : "'");
     // Pair ids in the order of the original vertex numbers: deterministic for a given mesh.
     std::sort(iface_verts[s].begin(), iface_verts[s].end());
   }
@@ -236,8 +246,10 @@ PetscErrorCode InterfaceSplitSerialMesh(DM serial, const std::vector<std::string
              nv_end - nv_start, ncells, nv_new);
   // Everything below relies on PETSc keeping the cell and vertex numbers of the list (cell k
   // = nc_start + k, vertex k = nv_start + k) and on the closure returning the vertices in the
-  // order given: check both, cheaply, instead of trusting them (a twisted hexahedron would
-  // otherwise only show up as wrong physics).
+  // order given: check both, cheaply, instead of trusting them. (PETSc reproduces any order it
+  // is given, so this does not prove the cells valid: that follows from passing the closure
+  // order of the valid original cells; tests/unit/test_interface_split.cpp checks it with
+  // DMPlexCheck and cell-by-cell coordinates for quads, hexes, triangles and tets.)
   for (PetscInt c = 0; c < (rank == 0 ? ncells : 0); ++c) {
     PetscCall(closureVertices(dm, nc_start + c, nv_start, nv_end, &cverts));
     bool same = (PetscInt)cverts.size() == ncorners;
