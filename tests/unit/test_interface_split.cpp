@@ -5,6 +5,8 @@
 //   test_interface_split -distribute   2+ ranks (tests/cases/interface_split_mpi.sh): the split
 //                                      8x8 mesh distributed by the options' partitioner (metis)
 //                                      and by a forced partition that cuts the interface
+//   test_interface_split -gmsh_file f.msh -gmsh_plane h   one rank: an unstructured Gmsh mesh
+//                                      split along "last coordinate = h" (from the case script)
 // Expected areas are the lumped face weights ∫ N_a dA of the faces around a pair: a segment of
 // length L gives L/2 to each end, a unit square face 1/4 to each corner, a triangle of area A
 // gives A/3 to each corner.
@@ -568,6 +570,48 @@ PetscErrorCode testSeveralAndErrors() {
   PetscFunctionReturn(0);
 }
 
+// A Gmsh mesh (unstructured triangles or tetrahedra from tests/cases/interface_split_mpi.sh)
+// of two bodies meshed conformingly along the plane "last coordinate = h": soil below, block
+// above by centroid. Checks the generic split properties, one pair per mesh vertex on the
+// plane, total area = the plane's extent (product of the other extents), normals straight up.
+PetscErrorCode testGmsh(const char *file, double h) {
+  DM       dm, split;
+  PetscInt dim, v_start, v_end, on_plane = 0;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexCreateFromFile(PETSC_COMM_WORLD, file, "gmsh", PETSC_TRUE, &dm));
+  PetscCall(DMGetDimension(dm, &dim));
+  PetscCall(labelRegions(dm, [dim, h](const double *x) -> PetscInt { return x[dim - 1] < h ? 0 : 1; }));
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &v_start, &v_end));
+  for (PetscInt v = v_start; v < v_end; ++v) {
+    double x[3];
+    PetscCall(vertexCoords(dm, v, x));
+    for (PetscInt d = 0; d < dim; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
+    on_plane += std::fabs(x[dim - 1] - h) < 1e-9;
+  }
+  std::vector<std::string> sides;
+  PetscCall(labelSides(dm, lo, hi, &sides));
+  const std::string tag = std::string("gmsh ") + (dim == 2 ? "triangles" : "tets");
+  const std::vector<InterfaceSpec> specs = {{"base", "soil", "block", ""}};
+  PetscCall(slipwave::mesh::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, specs, &split));
+  PetscCall(checkSplit(tag, dm, split, sides, specs, {1}, {0}, {on_plane}));
+  std::vector<Pair> pairs;
+  PetscCall(buildPairs(split, specs[0], &pairs));
+  double total = 0, extent = 1;
+  bool   up = pairs.size() == (size_t)on_plane;
+  for (const Pair &p : pairs) {
+    total += p.area;
+    for (PetscInt d = 0; d < dim; ++d) up = up && std::fabs(p.n[d] - (d == dim - 1 ? 1 : 0)) < 1e-12;
+    up = up && std::fabs(p.x[dim - 1] - h) < 1e-9 && p.area > 0;
+  }
+  for (PetscInt d = 0; d < dim - 1; ++d) extent *= hi[d] - lo[d];
+  unit::check(up, tag + ": " + std::to_string(on_plane) + " pairs (the mesh vertices on the plane), on the plane, normal up, positive area");
+  unit::near(total, extent, 1e-12, 0, tag + ": total area = extent of the plane");
+  PetscCall(DMDestroy(&split));
+  PetscCall(DMDestroy(&dm));
+  PetscFunctionReturn(0);
+}
+
 // ---- distributed ----------------------------------------------------------------------
 
 // 8x8 unit quads, soil y < 4, block y > 4: 9 pairs along y = 4, areas 0.5, 1 x 7, 0.5.
@@ -719,7 +763,16 @@ PetscErrorCode distributedCase(const char *how) {
 }
 
 PetscErrorCode Run(bool distribute) {
+  char      gmsh[PETSC_MAX_PATH_LEN];
+  PetscBool has_gmsh;
+  PetscReal h = 0;
   PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-gmsh_file", gmsh, sizeof gmsh, &has_gmsh));
+  if (has_gmsh) {
+    PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-gmsh_plane", &h, nullptr));
+    PetscCall(testGmsh(gmsh, h));
+    PetscFunctionReturn(0);
+  }
   if (distribute) {
     PetscCall(slipwave::mesh::PartitionerRegisterMetis());
     PetscCall(distributedCase("options"));
