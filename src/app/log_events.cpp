@@ -2,7 +2,7 @@
 
 namespace slipwave::app {
 
-PetscLogEvent event_bulk_force, event_boundary, event_energy, event_stations, event_output, event_guard;
+PetscLogEvent event_bulk_force, event_boundary, event_interface, event_energy, event_stations, event_output, event_guard;
 PetscLogStage stage_setup, stage_solve;
 
 PetscErrorCode LogEventsRegister() {
@@ -11,6 +11,7 @@ PetscErrorCode LogEventsRegister() {
   PetscCall(PetscClassIdRegister("slipwave", &id));
   PetscCall(PetscLogEventRegister("SW:Bulk:Force", id, &event_bulk_force));
   PetscCall(PetscLogEventRegister("SW:Boundary:Apply", id, &event_boundary));
+  PetscCall(PetscLogEventRegister("SW:Interface:Update", id, &event_interface));
   PetscCall(PetscLogEventRegister("SW:Energy:Ledger", id, &event_energy));
   PetscCall(PetscLogEventRegister("SW:IO:Stations", id, &event_stations));
   PetscCall(PetscLogEventRegister("SW:IO:Fields", id, &event_output));

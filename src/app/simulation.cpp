@@ -4,10 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "slipwave/app/log_events.hpp"
 #include "slipwave/app/options_check.hpp"
+#include "slipwave/io/interface_output.hpp"
 #include "slipwave/io/stations.hpp"
 #include "slipwave/io/volume_output.hpp"
 #include "slipwave/model/elastodynamics.hpp"
@@ -35,6 +37,7 @@ struct Run {
   model::EnergyLedger  ledger;
   io::Stations         stations;
   io::VolumeOutput     volume;
+  std::vector<std::unique_ptr<io::InterfaceOutput>> interface_outputs;
   FILE                *energy_csv = nullptr;
   PetscReal            next_output = 0, max_time = 0;
   PetscInt             frames = 0;
@@ -117,14 +120,24 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   PetscCall(model::EnergyLedgerUpdate(&r->model, ts, h, &r->ledger));
   PetscCall(divergenceGuard(r, h, step, t, u, v));
   PetscCall(r->stations.Sample(r->model.dm, t, u, v, a));
+  interface::InterfaceTotals totals;
+  for (const auto &iface : r->model.interfaces) {
+    interface::InterfaceTotals one;
+    PetscCall(iface.Totals(&one));
+    totals.stored += one.stored;
+    totals.dissipated += one.dissipated;
+  }
   if (r->rank == 0 && r->energy_csv) {
     const model::EnergyLedger &e = r->ledger;
-    std::fprintf(r->energy_csv, "%" PetscInt_FMT ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.3e\n", step, (double)t, e.kinetic, e.strain, e.input,
-                 e.external + e.reactions, e.absorbed, e.damped, e.shadow - e.shadow_start, e.balance_error, e.relativeError());
+    std::fprintf(r->energy_csv, "%" PetscInt_FMT ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.3e\n", step, (double)t, e.kinetic, e.strain,
+                 e.input, e.external + e.reactions, e.absorbed, e.damped, e.interface_work, totals.stored, totals.dissipated, e.shadow - e.shadow_start,
+                 e.balance_error, e.relativeError());
   }
   const bool last = t >= r->max_time * (1 - 1e-12);
   if (r->opt.fields && (t >= r->next_output * (1 - 1e-12) || last || step == 0)) {
-    PetscCall(r->volume.Write(r->model.dm, r->model.bulk, r->frames++, t, u, v, a));
+    PetscCall(r->volume.Write(r->model.dm, r->model.bulk, r->frames, t, u, v, a));
+    for (size_t k = 0; k < r->interface_outputs.size(); ++k) PetscCall(r->interface_outputs[k]->Write(r->model.interfaces[k], r->frames, t));
+    ++r->frames;
     while (r->next_output <= t * (1 + 1e-12)) r->next_output += r->opt.output_interval;
   }
   PetscLogDouble now;
@@ -169,7 +182,18 @@ PetscErrorCode report(Run *r, TS ts) {
   if (r->model.damping_ratio > 0)
     PetscCall(PetscPrintf(comm, "  Rayleigh damping %.3g %% at %g and %g Hz: alpha %.4g 1/s, beta %.4g s\n", 100 * r->model.damping_ratio, r->model.damping_f1,
                           r->model.damping_f2, r->model.rayleigh.alpha, r->model.rayleigh.beta));
+  for (size_t k = 0; k < r->model.interfaces.size(); ++k) {
+    const auto &iface = r->model.interfaces[k];
+    const auto &p     = iface.params();
+    PetscCall(PetscPrintf(comm, "  interface %s between %s (soil side) and %s: %" PetscInt_FMT " node pairs; phi %.4g deg, psi %.4g deg, c %.4g Pa, e_ini %.4g m\n",
+                          iface.spec().name.c_str(), iface.spec().soil_region.c_str(), iface.spec().structure_region.c_str(), iface.pairs().n_global,
+                          p.phi * 180 / PETSC_PI, p.psi * 180 / PETSC_PI, p.c, p.e_ini));
+    PetscCall(PetscPrintf(comm, "    %s\n", r->model.penalty_notes[k].c_str()));
+  }
   PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", r->step.dt_limit, r->step.governing.c_str(), r->step.dt_cfl));
+  if (r->step.dt_limit < r->step.dt_without_interfaces * (1 - 1e-12))
+    PetscCall(PetscPrintf(comm, "  warning: the interface penalty lowers the stable step from %.4e s (bulk alone) to %.4e s (-%.1f %%)\n", r->step.dt_without_interfaces,
+                          r->step.dt_limit, 100 * (1 - r->step.dt_limit / r->step.dt_without_interfaces)));
   PetscCall(PetscPrintf(comm, "  time step %.4e s = %.3f of the limit; %.0f steps to t = %g s\n", (double)dt, dt / r->step.dt_limit, std::ceil(r->max_time / dt),
                         (double)r->max_time));
   PetscCall(PetscPrintf(comm, "  output: %s/\n", r->opt.output_dir));
@@ -230,9 +254,16 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
       std::filesystem::create_directories(r->opt.output_dir);
       r->energy_csv = std::fopen((std::string(r->opt.output_dir) + "/energy.csv").c_str(), "w");
       PetscCheck(r->energy_csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output_dir = %s: cannot write energy.csv there", r->opt.output_dir);
-      std::fprintf(r->energy_csv, "step,time,kinetic,strain,input_work,external_work,absorbed,damped,stored_change,balance_error,relative_balance_error\n");
+      std::fprintf(r->energy_csv, "step,time,kinetic,strain,input_work,external_work,absorbed,damped,interface_work,interface_stored,interface_dissipated,stored_change,balance_error,"
+                                   "relative_balance_error\n");
     }
-    if (r->opt.fields) PetscCall(r->volume.Open(r->model.dm, r->model.bulk, r->opt.output_dir));
+    if (r->opt.fields) {
+      PetscCall(r->volume.Open(r->model.dm, r->model.bulk, r->opt.output_dir));
+      for (const auto &iface : r->model.interfaces) {
+        r->interface_outputs.push_back(std::make_unique<io::InterfaceOutput>());
+        PetscCall(r->interface_outputs.back()->Open(comm, r->model.dim, iface, r->opt.output_dir));
+      }
+    }
     PetscCall(DMCreateGlobalVector(r->model.dm, &u));
     PetscCall(VecDuplicate(u, &v));
     PetscCall(VecZeroEntries(u));
@@ -261,10 +292,19 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
     PetscCall(TSGetStepNumber(ts, &steps));
     if (r->energy_csv) std::fclose(r->energy_csv);
     PetscCall(r->stations.Write(comm, r->opt.output_dir));
-    if (r->opt.fields) PetscCall(r->volume.Close());
+    if (r->opt.fields) {
+      PetscCall(r->volume.Close());
+      for (auto &out : r->interface_outputs) PetscCall(out->Close());
+    }
+    for (const auto &iface : r->model.interfaces) {
+      interface::InterfaceTotals t;
+      PetscCall(iface.Totals(&t));
+      PetscCall(PetscPrintf(comm, "interface %s: %" PetscInt_FMT " stick, %" PetscInt_FMT " slip, %" PetscInt_FMT " open at the end; dissipated %.4g J; largest yield-surface drift corrected %.3g Pa\n",
+                            iface.spec().name.c_str(), t.n_stick, t.n_slip, t.n_open, t.dissipated, t.max_drift));
+    }
     PetscCall(PetscPrintf(comm, "done: %" PetscInt_FMT " steps in %.2f s wall (%.3g s per step); energy balance error %.2e of the largest energy\n", steps,
                           wall_end - r->wall_start, (wall_end - r->wall_start) / std::max<PetscInt>(steps, 1), r->ledger.relativeError()));
-    PetscCall(PetscPrintf(comm, "output in %s/: volume.xmf (open in ParaView), energy.csv%s\n", r->opt.output_dir, r->stations.empty() ? "" : ", stations/*.csv, stations.h5"));
+    PetscCall(PetscPrintf(comm, "output in %s/: volume.xmf%s (open in ParaView), energy.csv%s\n", r->opt.output_dir, r->model.interfaces.empty() ? "" : ", interface_<name>.xmf", r->stations.empty() ? "" : ", stations/*.csv, stations.h5"));
     PetscCall(VecDestroy(&u));
     PetscCall(VecDestroy(&v));
   }

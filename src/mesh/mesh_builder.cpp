@@ -1,6 +1,7 @@
 #include "slipwave/mesh/mesh_builder.hpp"
 #include "slipwave/mesh/partition_metis.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <sstream>
@@ -298,6 +299,36 @@ PetscErrorCode checkCellTypes(MPI_Comm comm, DM dm) {
   PetscFunctionReturn(0);
 }
 
+// -interfaces a,b with -interface_<name>_regions soil_region,structure_region and an
+// optional -interface_<name>_faces <face label> (Gmsh physical group).
+PetscErrorCode readInterfaceSpecs(MPI_Comm comm, const std::vector<std::string> &regions, std::vector<InterfaceSpec> *specs) {
+  char list[1024] = "";
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, "", "Interfaces (split nodes)", "slipwave");
+  PetscCall(PetscOptionsString("-interfaces", "comma-separated names of soil-structure interfaces (each with -interface_<name>_regions)", "MeshCreate", list, list,
+                               sizeof list, nullptr));
+  PetscOptionsEnd();
+  for (const std::string &name : splitNames(list)) {
+    const std::string prefix = "interface_" + name + "_";
+    const std::string title  = "Interface " + name + " (geometry)";
+    char              pair[512] = "", faces[256] = "";
+    PetscBool         has_pair;
+    PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
+    PetscCall(PetscOptionsString("-regions", "soil_region,structure_region: the interface is every face between them", "MeshCreate", pair, pair, sizeof pair, &has_pair));
+    PetscCall(PetscOptionsString("-faces", "restrict the interface to the faces of this label (Gmsh physical group)", "MeshCreate", faces, faces, sizeof faces, nullptr));
+    PetscOptionsEnd();
+    const std::vector<std::string> two = splitNames(pair);
+    PetscCheck(has_pair && two.size() == 2, comm, PETSC_ERR_USER_INPUT, "-interface_%s_regions = '%s'; allowed: two region names soil_region,structure_region", name.c_str(),
+               pair);
+    for (const std::string &r : two)
+      PetscCheck(std::find(regions.begin(), regions.end(), r) != regions.end(), comm, PETSC_ERR_USER_INPUT,
+                 "-interface_%s_regions names '%s', which is not a region; allowed: names listed in -regions", name.c_str(), r.c_str());
+    PetscCheck(two[0] != two[1], comm, PETSC_ERR_USER_INPUT, "-interface_%s_regions = '%s'; allowed: two different regions", name.c_str(), pair);
+    specs->push_back(InterfaceSpec{name, two[0], two[1], faces});
+  }
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
@@ -327,6 +358,13 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
     PetscCall(labelBoxSides(serial, box, &desc->boundaries));
   }
   PetscCall(checkCellTypes(comm, serial));
+  PetscCall(readInterfaceSpecs(comm, desc->regions, &desc->interfaces));
+  if (!desc->interfaces.empty()) {
+    DM split;
+    PetscCall(InterfaceSplitSerialMesh(serial, desc->regions, desc->boundaries, desc->interfaces, &split));
+    PetscCall(DMDestroy(&serial));
+    serial = split;
+  }
 
   PetscPartitioner part;
   DM               dist = nullptr;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "slipwave/app/log_events.hpp"
 #include "slipwave/model/node_fields.hpp"
@@ -112,6 +113,45 @@ PetscErrorCode stiffnessTimes(Elastodynamics *m, Vec x, Vec f) {
   PetscFunctionReturn(0);
 }
 
+// The penalty `auto`: the interface as stiff as factor x one layer of the softer adjacent
+// material one cell thick, E = factor (lambda + 2 mu)/h, G = factor mu/h (h: the smallest
+// cell size). Factor 1 adds about as much to a surface node's Gershgorin row as its cells do.
+PetscErrorCode createInterfaces(Elastodynamics *m) {
+  PetscFunctionBeginUser;
+  for (const mesh::InterfaceSpec &spec : m->mesh.interfaces) {
+    const std::string prefix = "interface_" + spec.name + "_";
+    interface::InterfaceOptions opt;
+    PetscCall(interface::InterfaceOptionsRead(m->comm, prefix.c_str(), &opt));
+    PetscReal factor = 1.0;
+    const std::string title = "Interface " + spec.name + " (penalty)";
+    PetscOptionsBegin(m->comm, prefix.c_str(), title.c_str(), "slipwave");
+    PetscCall(PetscOptionsReal("-penalty_factor", "E, G given as auto: factor x (lambda+2mu)/h and factor x mu/h of the softer side [-]", "ElastodynamicsCreate", factor,
+                               &factor, nullptr));
+    PetscOptionsEnd();
+    PetscCheck(factor > 0, m->comm, PETSC_ERR_USER_INPUT, "-%spenalty_factor = %g; allowed: > 0", prefix.c_str(), (double)factor);
+    double m_soft = 1e300, mu_soft = 1e300;
+    for (const auto &info : m->materials)
+      if (info.region == spec.soil_region || info.region == spec.structure_region) {
+        m_soft  = std::min(m_soft, info.fe.lame.lambda + 2 * info.fe.lame.mu);
+        mu_soft = std::min(mu_soft, info.fe.lame.mu);
+      }
+    const double h = m->bulk.minCellSize();
+    char         note[256];
+    std::snprintf(note, sizeof note, "interface %s: E = %.4g Pa/m%s, G = %.4g Pa/m%s (penalty factor %g, h = %.3g m)", spec.name.c_str(),
+                  opt.E_auto ? factor * m_soft / h : opt.params.E, opt.E_auto ? " (auto)" : "", opt.G_auto ? factor * mu_soft / h : opt.params.G,
+                  opt.G_auto ? " (auto)" : "", (double)factor, h);
+    if (opt.E_auto) opt.params.E = factor * m_soft / h;
+    if (opt.G_auto) opt.params.G = factor * mu_soft / h;
+    PetscCall(interface::InterfaceOptionsCheck(m->comm, prefix.c_str(), opt));
+    mesh::InterfacePairs pairs;
+    PetscCall(mesh::InterfacePairsBuild(m->dm, spec, &pairs));
+    m->interfaces.emplace_back();
+    PetscCall(m->interfaces.back().Setup(m->comm, m->dim, spec, pairs, opt.params, opt.sigma_N0, m->mass));
+    m->penalty_notes.push_back(note);
+  }
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
@@ -135,12 +175,17 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(VecDuplicate(m->mass, &m->f_input));
   PetscCall(VecDuplicate(m->mass, &m->f_stiffness_damping));
   PetscCall(VecZeroEntries(m->f_stiffness_damping));
+  PetscCall(VecDuplicate(m->mass, &m->f_interface));
+  PetscCall(VecZeroEntries(m->f_interface));
+  PetscCall(createInterfaces(m));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
   PetscFunctionBeginUser;
   PetscCall(BoundaryConditionsDestroy(&m->bc));
+  for (auto &iface : m->interfaces) PetscCall(iface.Destroy());
+  PetscCall(VecDestroy(&m->f_interface));
   for (Vec *v : {&m->mass, &m->inv_mass, &m->damping_blocks, &m->u_local, &m->f_local, &m->f_internal, &m->f_external, &m->f_input, &m->f_stiffness_damping})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&m->dm));
@@ -159,6 +204,12 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
     PetscCall(VecScale(m->f_stiffness_damping, m->rayleigh.beta));
   }
   PetscCall(PetscLogEventEnd(app::event_bulk_force, 0, 0, 0, 0));
+  if (!m->interfaces.empty()) {
+    PetscCall(PetscLogEventBegin(app::event_interface, 0, 0, 0, 0));
+    PetscCall(VecZeroEntries(m->f_interface));
+    for (auto &iface : m->interfaces) PetscCall(iface.AddForces(u, m->f_interface));
+    PetscCall(PetscLogEventEnd(app::event_interface, 0, 0, 0, 0));
+  }
 
   PetscCall(PetscLogEventBegin(app::event_boundary, 0, 0, 0, 0));
   const double v_in = m->bc.input.active() && m->bc.input_wave != "none" ? m->bc.input.velocity(t) : 0.0;
@@ -166,17 +217,19 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscCall(VecWAXPY(m->f_external, 1.0, m->bc.constant_force, m->f_input));
   PetscInt           n;
   PetscScalar       *acc;
-  const PetscScalar *fe, *fi, *fd, *im, *mask;
+  const PetscScalar *fe, *fi, *fd, *fif, *im, *mask;
   PetscCall(VecGetLocalSize(a, &n));
   PetscCall(VecGetArray(a, &acc));
   PetscCall(VecGetArrayRead(m->f_external, &fe));
   PetscCall(VecGetArrayRead(m->f_internal, &fi));
   PetscCall(VecGetArrayRead(m->f_stiffness_damping, &fd));
+  PetscCall(VecGetArrayRead(m->f_interface, &fif));
   PetscCall(VecGetArrayRead(m->inv_mass, &im));
   PetscCall(VecGetArrayRead(m->bc.free_mask, &mask));
-  for (PetscInt i = 0; i < n; ++i) acc[i] = mask[i] * im[i] * (fe[i] - fi[i] - fd[i]);
+  for (PetscInt i = 0; i < n; ++i) acc[i] = mask[i] * im[i] * (fe[i] - fi[i] - fd[i] + fif[i]);
   PetscCall(VecRestoreArrayRead(m->bc.free_mask, &mask));
   PetscCall(VecRestoreArrayRead(m->inv_mass, &im));
+  PetscCall(VecRestoreArrayRead(m->f_interface, &fif));
   PetscCall(VecRestoreArrayRead(m->f_stiffness_damping, &fd));
   PetscCall(VecRestoreArrayRead(m->f_internal, &fi));
   PetscCall(VecRestoreArrayRead(m->f_external, &fe));
@@ -199,19 +252,36 @@ PetscErrorCode ElastodynamicsStableStep(Elastodynamics *m, StableStep *step) {
   PetscCall(VecZeroEntries(rowabs));
   PetscCall(DMLocalToGlobal(m->dm, m->u_local, ADD_VALUES, rowabs));
   // Gershgorin on M^{-1} K (similar to M^{-1/2} K M^{-1/2}): every eigenvalue omega^2 is at
-  // most max_i sum_j |K_ij| / m_i. Held dofs do not vibrate and are left out.
-  PetscCall(VecPointwiseMult(rowabs, rowabs, m->inv_mass));
-  PetscCall(VecPointwiseMult(rowabs, rowabs, m->bc.free_mask));
-  PetscReal omega2;
-  PetscCall(VecMax(rowabs, nullptr, &omega2));
+  // most max_i sum_j |K_ij| / m_i, with K the bulk and the interface springs together (adding
+  // the rows, not taking the larger of two frequencies). Held dofs do not vibrate.
+  auto omegaMax = [&](Vec rows, PetscReal *omega) -> PetscErrorCode {
+    Vec w;
+    PetscFunctionBeginUser;
+    PetscCall(VecDuplicate(rows, &w));
+    PetscCall(VecPointwiseMult(w, rows, m->inv_mass));
+    PetscCall(VecPointwiseMult(w, w, m->bc.free_mask));
+    PetscReal omega2;
+    PetscCall(VecMax(w, nullptr, &omega2));
+    PetscCall(VecDestroy(&w));
+    *omega = std::sqrt(std::max(omega2, (PetscReal)0));
+    PetscFunctionReturn(0);
+  };
+  PetscReal omega_bulk, omega_all;
+  PetscCall(omegaMax(rowabs, &omega_bulk));
+  for (auto &iface : m->interfaces) PetscCall(iface.AddStiffnessRowAbsSums(rowabs));
+  PetscCall(omegaMax(rowabs, &omega_all));
   PetscCall(VecDestroy(&rowabs));
-  step->omega_max_bulk = std::sqrt(std::max(omega2, (PetscReal)0));
-  step->dt_bulk        = step->omega_max_bulk > 0 ? physics::centralDifferenceStableStep(step->omega_max_bulk, m->rayleigh.beta) : 1e300;
+  auto dtOf = [&](double omega) { return omega > 0 ? physics::centralDifferenceStableStep(omega, m->rayleigh.beta) : 1e300; };
+  step->omega_max_bulk        = omega_all;
+  step->dt_bulk               = dtOf(omega_all);
+  step->dt_without_interfaces = dtOf(omega_bulk);
   double vp_max        = 0;
   for (const auto &info : m->materials) vp_max = std::max(vp_max, info.elastic.vp);
   step->dt_cfl    = m->bulk.minCellSize() / vp_max;
   step->dt_limit  = step->dt_bulk;
-  step->governing = m->rayleigh.beta > 0 ? "bulk stiffness with stiffness-proportional damping (Gershgorin bound)" : "bulk stiffness (Gershgorin bound)";
+  const bool interfaces_matter = step->dt_bulk < step->dt_without_interfaces * (1 - 1e-12);
+  step->governing = std::string(interfaces_matter ? "bulk stiffness and interface penalty springs" : "bulk stiffness") +
+                    (m->rayleigh.beta > 0 ? " with stiffness-proportional damping" : "") + " (Gershgorin bound)";
   PetscFunctionReturn(0);
 }
 

@@ -7,6 +7,7 @@ namespace slipwave::app {
 
 extern PetscLogEvent event_bulk_force;  // SW:Bulk:Force      element loop + ghost exchange
 extern PetscLogEvent event_boundary;    // SW:Boundary:Apply  loads, incident wave, held dofs
+extern PetscLogEvent event_interface;   // SW:Interface:Update  gather, law per pair, scatter
 extern PetscLogEvent event_energy;      // SW:Energy:Ledger
 extern PetscLogEvent event_stations;    // SW:IO:Stations
 extern PetscLogEvent event_output;      // SW:IO:Fields

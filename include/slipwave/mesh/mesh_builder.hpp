@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "slipwave/mesh/interface_split.hpp"
+
 namespace slipwave::mesh {
 
 inline constexpr char kRegionLabel[] = "region";
@@ -22,6 +24,7 @@ struct MeshDescription {
   std::vector<std::string> boundaries; // boundary label names
   std::string              source;     // "box NxM" or the file name, for the report
   std::string              partitioner; // the PetscPartitioner type that distributed the mesh
+  std::vector<InterfaceSpec> interfaces; // split along these before distribution
 };
 
 // Reads the -mesh_* and -regions options, creates, labels and distributes the mesh.

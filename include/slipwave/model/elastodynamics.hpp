@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "slipwave/fem/bulk_operator.hpp"
+#include "slipwave/interface/interface_assembler.hpp"
 #include "slipwave/mesh/mesh_builder.hpp"
 #include "slipwave/model/boundary_conditions.hpp"
 #include "slipwave/model/materials.hpp"
@@ -22,6 +23,7 @@ struct StableStep {
   double dt_bulk = 0;        // critical step of the bulk (with stiffness damping) [s]
   double dt_cfl = 0;         // h_min / vp_max, for comparison only [s]
   double dt_limit = 0;       // the limit a run must respect [s]
+  double dt_without_interfaces = 0; // the bulk alone, to report what the penalty costs [s]
   std::string governing;     // which constraint sets dt_limit
 };
 
@@ -35,13 +37,15 @@ struct Elastodynamics {
   BoundaryConditions              bc;
   double                          damping_ratio = 0, damping_f1 = 0, damping_f2 = 0;
   physics::RayleighCoefficients   rayleigh{0, 0};
+  std::vector<interface::InterfaceAssembler> interfaces;
+  std::vector<std::string>        penalty_notes; // how each auto penalty was chosen, for the report
 
   Vec mass = nullptr, inv_mass = nullptr; // lumped, per dof
   Vec damping_blocks = nullptr;           // per node (C_abs + alpha M)/m, held dofs decoupled; null if none
   std::vector<PetscInt> absorbing_nodes;  // owned nodes (global-vector order) with a dashpot
   Vec u_local = nullptr, f_local = nullptr;
   // Parts of the last RHS evaluation, for the energy ledger.
-  Vec       f_internal = nullptr, f_external = nullptr, f_input = nullptr, f_stiffness_damping = nullptr;
+  Vec       f_internal = nullptr, f_external = nullptr, f_input = nullptr, f_stiffness_damping = nullptr, f_interface = nullptr;
   PetscReal rhs_time = 0;
   TS        ts = nullptr; // set by the driver: the RHS reads the half-step velocity from it
 };
