@@ -244,7 +244,9 @@ PetscErrorCode report(Run *r, TS ts) {
     PetscCall(PetscPrintf(comm, "  interface %s between %s (soil side) and %s: %" PetscInt_FMT " node pairs; phi %.4g deg, psi %.4g deg, c %.4g Pa, e_ini %.4g m\n",
                           iface.spec().name.c_str(), iface.spec().soil_region.c_str(), iface.spec().structure_region.c_str(), iface.pairs().n_global,
                           p.phi * 180 / PETSC_PI, p.psi * 180 / PETSC_PI, p.c, p.e_ini));
-    PetscCall(PetscPrintf(comm, "    %s\n", r->model.penalty_notes[k].c_str()));
+    PetscInt cut;
+    PetscCall(iface.CountCutPairs(r->model.mass, &cut));
+    PetscCall(PetscPrintf(comm, "    %s; %" PetscInt_FMT " pairs have their two nodes on different ranks\n", r->model.penalty_notes[k].c_str(), cut));
   }
   PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", r->step.dt_limit, r->step.governing.c_str(), r->step.dt_cfl));
   if (r->step.dt_limit < r->step.dt_without_interfaces * (1 - 1e-12))

@@ -198,6 +198,15 @@ PetscErrorCode InterfaceAssembler::Totals(InterfaceTotals *t) const {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode InterfaceAssembler::CountCutPairs(Vec u_template, PetscInt *cut) const {
+  PetscInt lo, hi, local = 0;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetOwnershipRange(u_template, &lo, &hi));
+  for (size_t p = 0; p < pairs_.id.size(); ++p) local += pairs_.structure_dof[p] < lo || pairs_.structure_dof[p] >= hi;
+  PetscCallMPI(MPI_Allreduce(&local, cut, 1, MPIU_INT, MPI_SUM, comm_));
+  PetscFunctionReturn(0);
+}
+
 void InterfaceAssembler::pairFields(std::vector<double> *values, int *per_pair) const {
   values->clear();
   if (dim_ == 2) fieldsOf<2>(pairs_, tangent_.data(), states2_, jump_prev_, values);

@@ -1,6 +1,7 @@
 #include "slipwave/model/boundary_conditions.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "slipwave/model/boundary_faces.hpp"
@@ -96,11 +97,17 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
   PetscCall(VecZeroEntries(input_local));
   PetscCall(VecZeroEntries(block_local));
 
+  PetscReal gravity_dir[3] = {0, 0, 0};
+  PetscBool gravity_dir_set = PETSC_FALSE;
+  gravity_dir[dim - 1]      = -1;
   char      wave[16] = "none", input_boundary[256] = "bottom", component[8] = "", constrain_all[16] = "";
   PetscBool input_component_set;
   PetscOptionsBegin(comm, "", "Loads and incident wave", "slipwave");
-  PetscCall(PetscOptionsReal("-gravity", "gravitational acceleration [m/s^2], acting downward along the last axis", "BoundaryConditionsCreate", bc->gravity,
+  PetscCall(PetscOptionsReal("-gravity", "gravitational acceleration [m/s^2], along -gravity_direction", "BoundaryConditionsCreate", bc->gravity,
                              &bc->gravity, nullptr));
+  PetscInt ndir = dim;
+  PetscCall(PetscOptionsRealArray("-gravity_direction", "direction of gravity gx,gy[,gz] (normalised; default: down the last axis; tilt it to model a slope)",
+                                  "BoundaryConditionsCreate", gravity_dir, &ndir, &gravity_dir_set));
   PetscCall(PetscOptionsString("-constrain_components", "components fixed at every node, e.g. y for a 1D shear column (x,y,z)", "BoundaryConditionsCreate",
                                constrain_all, constrain_all, sizeof constrain_all, nullptr));
   PetscCall(PetscOptionsString("-input_wave", "vertically incident plane wave entering through an absorbing boundary: none, sv, p", "BoundaryConditionsCreate", wave,
@@ -125,7 +132,14 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
       bc->input_component = c[0];
     }
   }
-  PetscCheck(bc->gravity >= 0, comm, PETSC_ERR_USER_INPUT, "-gravity = %g; allowed: >= 0 (it acts downward along the last axis)", (double)bc->gravity);
+  PetscCheck(bc->gravity >= 0, comm, PETSC_ERR_USER_INPUT, "-gravity = %g; allowed: >= 0 (its direction is -gravity_direction)", (double)bc->gravity);
+  {
+    double len = 0;
+    for (PetscInt d = 0; d < dim; ++d) len += gravity_dir[d] * gravity_dir[d];
+    len = std::sqrt(len);
+    PetscCheck(len > 0, comm, PETSC_ERR_USER_INPUT, "-gravity_direction is the zero vector; allowed: %" PetscInt_FMT " components, not all zero", dim);
+    for (PetscInt d = 0; d < dim; ++d) bc->gravity_direction[d] = gravity_dir[d] / len;
+  }
 
   bool input_found = false;
   for (const std::string &name : boundaries) {
@@ -245,7 +259,7 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
     PetscCall(VecGetLocalSize(mass, &n));
     PetscCall(VecGetArray(bc->constant_force, &f));
     PetscCall(VecGetArrayRead(mass, &m));
-    for (PetscInt i = dim - 1; i < n; i += dim) f[i] -= bc->gravity * m[i];
+    for (PetscInt i = 0; i < n; ++i) f[i] += bc->gravity * bc->gravity_direction[i % dim] * m[i];
     PetscCall(VecRestoreArrayRead(mass, &m));
     PetscCall(VecRestoreArray(bc->constant_force, &f));
   }

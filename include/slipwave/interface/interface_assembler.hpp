@@ -35,6 +35,8 @@ public:
   // k = A (E n n + G (I - n n)), to a global vector laid out like u.
   PetscErrorCode AddStiffnessRowAbsSums(Vec rowabs);
   PetscErrorCode Totals(InterfaceTotals *totals) const;
+  // Pairs (over all ranks) whose soil and structure nodes are owned by different ranks.
+  PetscErrorCode CountCutPairs(Vec u_template, PetscInt *cut) const;
   // Per-pair fields of this rank's pairs for output, each value with its pair id.
   void pairFields(std::vector<double> *values, int *per_pair) const;
   static std::vector<std::string> pairFieldNames(PetscInt dim);

@@ -5,7 +5,8 @@
 //   -bc_<boundary>_traction tx,ty[,tz]  (traction) [Pa]
 //   -bc_<boundary>_stf ... (velocity: its history, see TimeFunction)
 //   -input_wave none|sv|p -input_boundary <absorbing boundary> -input_stf ...  (incident plane wave)
-//   -gravity g [m/s^2] downward along the last axis;  -constrain_components y (every node)
+//   -gravity g [m/s^2] along -gravity_direction (default down the last axis);
+//   -constrain_components y (every node)
 #pragma once
 #include <petscdmplex.h>
 
@@ -38,6 +39,7 @@ struct BoundaryConditions {
   std::string               input_wave = "none", input_boundary;
   PetscInt                  input_component = 0;
   PetscReal                 gravity = 0;
+  double                    gravity_direction[3] = {0, 0, 0}; // unit vector
   bool                      has_absorbing = false;
 };
 
