@@ -299,6 +299,46 @@ PetscErrorCode checkCellTypes(MPI_Comm comm, DM dm) {
   PetscFunctionReturn(0);
 }
 
+// -void_regions a,b: box regions whose cells are removed, so that a footing can rest on the
+// soil surface of a box mesh (the box would otherwise fill the space beside it). The rest is
+// labelled again by the same rule; a void region needs no material.
+PetscErrorCode removeVoidRegions(MPI_Comm comm, DM *dm, std::vector<std::string> *regions, const BoxSpec &box) {
+  char list[1024] = "";
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, "", "Mesh and regions", "slipwave");
+  PetscCall(PetscOptionsString("-void_regions", "box regions (from -regions) whose cells are removed from the mesh, e.g. the space beside a footing", "MeshCreate",
+                               list, list, sizeof list, nullptr));
+  PetscOptionsEnd();
+  const std::vector<std::string> voids = splitNames(list);
+  if (voids.empty()) PetscFunctionReturn(0);
+  std::vector<std::string> kept;
+  for (const std::string &r : *regions)
+    if (std::find(voids.begin(), voids.end(), r) == voids.end()) kept.push_back(r);
+  for (const std::string &v : voids)
+    PetscCheck(std::find(regions->begin(), regions->end(), v) != regions->end(), comm, PETSC_ERR_USER_INPUT,
+               "-void_regions names '%s', which is not in -regions; allowed: region names listed in -regions", v.c_str());
+  PetscCheck(!kept.empty(), comm, PETSC_ERR_USER_INPUT, "-void_regions removes every region; allowed: at least one region that is not void");
+  DMLabel region_label, keep;
+  PetscInt c_start, c_end;
+  PetscCall(DMGetLabel(*dm, kRegionLabel, &region_label));
+  PetscCall(DMLabelCreate(PETSC_COMM_SELF, "keep", &keep));
+  PetscCall(DMPlexGetHeightStratum(*dm, 0, &c_start, &c_end));
+  for (PetscInt c = c_start; c < c_end; ++c) {
+    PetscInt r;
+    PetscCall(DMLabelGetValue(region_label, c, &r));
+    if (std::find(voids.begin(), voids.end(), (*regions)[r]) == voids.end()) PetscCall(DMLabelSetValue(keep, c, 1));
+  }
+  DM sub;
+  PetscCall(DMPlexFilter(*dm, keep, 1, &sub));
+  PetscCall(DMLabelDestroy(&keep));
+  PetscCall(DMDestroy(dm));
+  *dm = sub;
+  *regions = kept;
+  PetscCall(DMRemoveLabel(*dm, kRegionLabel, nullptr));
+  PetscCall(labelBoxRegions(comm, *dm, *regions, box));
+  PetscFunctionReturn(0);
+}
+
 // -interfaces a,b with -interface_<name>_regions soil_region,structure_region and an
 // optional -interface_<name>_faces <face label> (Gmsh physical group).
 PetscErrorCode readInterfaceSpecs(MPI_Comm comm, const std::vector<std::string> &regions, std::vector<InterfaceSpec> *specs) {
@@ -355,6 +395,7 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   } else {
     PetscCall(createBox(comm, desc->dim, &serial, &box, &desc->source));
     PetscCall(labelBoxRegions(comm, serial, desc->regions, box));
+    PetscCall(removeVoidRegions(comm, &serial, &desc->regions, box));
     PetscCall(labelBoxSides(serial, box, &desc->boundaries));
   }
   PetscCall(checkCellTypes(comm, serial));
