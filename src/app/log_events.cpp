@@ -3,7 +3,7 @@
 namespace slipwave::app {
 
 PetscLogEvent event_bulk_force, event_boundary, event_interface, event_energy, event_stations, event_output, event_guard;
-PetscLogStage stage_setup, stage_solve;
+PetscLogStage stage_setup, stage_geostatic, stage_solve;
 
 PetscErrorCode LogEventsRegister() {
   PetscClassId id;
@@ -17,6 +17,7 @@ PetscErrorCode LogEventsRegister() {
   PetscCall(PetscLogEventRegister("SW:IO:Fields", id, &event_output));
   PetscCall(PetscLogEventRegister("SW:Guard:Check", id, &event_guard));
   PetscCall(PetscLogStageRegister("Setup", &stage_setup));
+  PetscCall(PetscLogStageRegister("Geostatic", &stage_geostatic));
   PetscCall(PetscLogStageRegister("Solve", &stage_solve));
   PetscFunctionReturn(0);
 }

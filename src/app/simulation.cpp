@@ -14,6 +14,7 @@
 #include "slipwave/io/volume_output.hpp"
 #include "slipwave/model/elastodynamics.hpp"
 #include "slipwave/model/energy_ledger.hpp"
+#include "slipwave/model/geostatic.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 namespace slipwave::app {
@@ -43,6 +44,7 @@ struct Run {
   model::Elastodynamics model;
   model::StableStep    step;
   model::EnergyLedger  ledger;
+  model::GeostaticOptions geostatic;
   io::Stations         stations;
   io::VolumeOutput     volume;
   std::vector<std::unique_ptr<io::InterfaceOutput>> interface_outputs;
@@ -87,7 +89,10 @@ PetscErrorCode divergenceGuard(Run *r, PetscReal h, PetscInt step, PetscReal t, 
   // them non-finite, so no extra pass is needed to detect it, only to locate it.
   const model::EnergyLedger &e = r->ledger;
   if (std::isfinite(e.kinetic) && std::isfinite(e.strain) && std::isfinite(e.shadow)) {
-    const double put_in = std::fabs(r->ledger.shadow_start) + std::fabs(r->ledger.input) + std::fabs(r->ledger.external) + std::fabs(r->ledger.reactions);
+    // Net work the interfaces did on the bulk is energy put in too: an interface started under
+    // a normal traction (-interface_<name>_sigma_N0) stores energy and releases it at once.
+    const double put_in = std::fabs(r->ledger.shadow_start) + std::fabs(r->ledger.input) + std::fabs(r->ledger.external) + std::fabs(r->ledger.reactions) +
+                          std::fmax(r->ledger.interface_work, 0.0);
     const double energy = r->ledger.kinetic + std::fabs(r->ledger.strain);
     PetscCheck(!(put_in > 0 && energy > r->opt.energy_growth_limit * put_in), comm, PETSC_ERR_NOT_CONVERGED,
                "diverged at step %" PetscInt_FMT ", t = %g s: kinetic + strain energy %g J exceeds %g x the energy put in (%g J); the time step %g s may be above the stable limit %g s",
@@ -145,7 +150,7 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   }
   const bool last = t >= r->max_time * (1 - 1e-12);
   if (r->opt.fields && (t >= r->next_output * (1 - 1e-12) || last || step == 0)) {
-    PetscCall(r->volume.Write(r->model.dm, r->model.bulk, r->frames, t, u, v, a));
+    PetscCall(r->volume.Write(r->model.dm, r->model.bulk, r->frames, t, u, v, a, r->model.initial_stress));
     for (size_t k = 0; k < r->interface_outputs.size(); ++k) PetscCall(r->interface_outputs[k]->Write(r->model.interfaces[k], r->frames, t));
     ++r->frames;
     while (r->next_output <= t * (1 + 1e-12)) r->next_output += r->opt.output_interval;
@@ -274,6 +279,7 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
   PetscCall(model::ElastodynamicsStableStep(&r->model, &r->step));
   PetscCall(r->stations.Setup(r->model.dm, r->model.bulk));
   PetscCall(readRegionInitialVelocities(r));
+  PetscCall(model::GeostaticOptionsRead(comm, &r->geostatic));
 
   if (!r->opt.safety_set) r->opt.safety = r->model.interfaces.empty() ? kSafetyBulk : kSafetyInterfaces;
   PetscCall(TSCreate(comm, &ts));
@@ -316,6 +322,14 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
       PetscCheck(r->energy_csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output_dir = %s: cannot write energy.csv there", r->opt.output_dir);
       std::fprintf(r->energy_csv, "step,time,kinetic,strain,input_work,external_work,absorbed,damped,interface_work,interface_stored,interface_dissipated,stored_change,balance_error,"
                                    "relative_balance_error\n");
+    }
+    if (r->geostatic.enabled) {
+      model::GeostaticReport g;
+      PetscReal              dt_geo;
+      PetscCall(TSGetTimeStep(ts, &dt_geo));
+      PetscCall(model::GeostaticStage(&r->model, r->geostatic, dt_geo, &g));
+      PetscCall(PetscPrintf(comm, "geostatic stage: at rest after %" PetscInt_FMT " relaxation steps (unbalanced-force ratio %.2e < %.1e) in %.2f s wall\n", g.steps, g.ratio,
+                            (double)r->geostatic.tolerance, g.wall));
     }
     if (r->opt.fields) {
       PetscCall(r->volume.Open(r->model.dm, r->model.bulk, r->opt.output_dir));

@@ -52,7 +52,8 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a) {
+PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a,
+                                   const std::vector<double> &initial_stress) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(app::event_output, 0, 0, 0, 0));
   PetscCall(DMGlobalToLocal(dm, u, INSERT_VALUES, u_local_));
@@ -61,6 +62,7 @@ PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscIn
   PetscCall(VecGetArrayRead(u_local_, &ul));
   PetscCall(VecGetArray(stress_, &s));
   bulk.cellStress(ul, s);
+  for (size_t k = 0; k < initial_stress.size(); ++k) s[k] += initial_stress[k];
   PetscCall(VecRestoreArray(stress_, &s));
   PetscCall(VecRestoreArrayRead(u_local_, &ul));
   for (Vec x : {u, v, a}) PetscCall(VecSetBlockSize(x, bulk.dimension()));

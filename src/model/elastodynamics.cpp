@@ -212,7 +212,7 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   }
 
   PetscCall(PetscLogEventBegin(app::event_boundary, 0, 0, 0, 0));
-  const double v_in = m->bc.input.active() && m->bc.input_wave != "none" ? m->bc.input.velocity(t) : 0.0;
+  const double v_in = m->input_enabled && m->bc.input.active() && m->bc.input_wave != "none" ? m->bc.input.velocity(t) : 0.0;
   PetscCall(VecAXPBY(m->f_input, v_in, 0.0, m->bc.input_force));
   PetscCall(VecWAXPY(m->f_external, 1.0, m->bc.constant_force, m->f_input));
   PetscInt           n;
@@ -282,6 +282,21 @@ PetscErrorCode ElastodynamicsStableStep(Elastodynamics *m, StableStep *step) {
   const bool interfaces_matter = step->dt_bulk < step->dt_without_interfaces * (1 - 1e-12);
   step->governing = std::string(interfaces_matter ? "bulk stiffness and interface penalty springs" : "bulk stiffness") +
                     (m->rayleigh.beta > 0 ? " with stiffness-proportional damping" : "") + " (Gershgorin bound)";
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::model
+
+namespace slipwave::model {
+
+PetscErrorCode ElastodynamicsSetInitialStress(Elastodynamics *m, Vec u) {
+  const PetscScalar *ul;
+  PetscFunctionBeginUser;
+  PetscCall(DMGlobalToLocal(m->dm, u, INSERT_VALUES, m->u_local));
+  m->initial_stress.assign(6 * m->bulk.cellCount(), 0.0);
+  PetscCall(VecGetArrayRead(m->u_local, &ul));
+  m->bulk.cellStress(ul, m->initial_stress.data());
+  PetscCall(VecRestoreArrayRead(m->u_local, &ul));
   PetscFunctionReturn(0);
 }
 

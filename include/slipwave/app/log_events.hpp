@@ -12,7 +12,7 @@ extern PetscLogEvent event_energy;      // SW:Energy:Ledger
 extern PetscLogEvent event_stations;    // SW:IO:Stations
 extern PetscLogEvent event_output;      // SW:IO:Fields
 extern PetscLogEvent event_guard;       // SW:Guard:Check     divergence detection
-extern PetscLogStage stage_setup, stage_solve;
+extern PetscLogStage stage_setup, stage_geostatic, stage_solve;
 
 PetscErrorCode LogEventsRegister();
 

@@ -35,6 +35,9 @@ public:
   // k = A (E n n + G (I - n n)), to a global vector laid out like u.
   PetscErrorCode AddStiffnessRowAbsSums(Vec rowabs);
   PetscErrorCode Totals(InterfaceTotals *totals) const;
+  // Measures jumps from the current displacement as zero again (after the geostatic stage the
+  // displacements restart from zero); tractions and state are kept.
+  void ResetJumpReference() { jump_prev_.assign(jump_prev_.size(), 0.0); }
   // Pairs (over all ranks) whose soil and structure nodes are owned by different ranks.
   PetscErrorCode CountCutPairs(Vec u_template, PetscInt *cut) const;
   // Per-pair fields of this rank's pairs for output, each value with its pair id.

@@ -5,6 +5,7 @@
 #include <petscdm.h>
 
 #include <string>
+#include <vector>
 
 #include "slipwave/fem/bulk_operator.hpp"
 #include "slipwave/io/field_writer.hpp"
@@ -14,7 +15,8 @@ namespace slipwave::io {
 class VolumeOutput {
 public:
   PetscErrorCode Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir);
-  PetscErrorCode Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a);
+  // initial_stress: 6 per local cell added to the stress of u (the geostatic state), or empty.
+  PetscErrorCode Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a, const std::vector<double> &initial_stress);
   PetscErrorCode Close();
 
 private:

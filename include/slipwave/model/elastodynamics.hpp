@@ -47,6 +47,8 @@ struct Elastodynamics {
   // Parts of the last RHS evaluation, for the energy ledger.
   Vec       f_internal = nullptr, f_external = nullptr, f_input = nullptr, f_stiffness_damping = nullptr, f_interface = nullptr;
   PetscReal rhs_time = 0;
+  bool      input_enabled = true;       // off during the geostatic stage
+  std::vector<double> initial_stress;   // 6 per local cell: the geostatic state, added to the output
   TS        ts = nullptr; // set by the driver: the RHS reads the half-step velocity from it
 };
 
@@ -54,5 +56,7 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);
 PetscErrorCode ElastodynamicsDestroy(Elastodynamics *model);
 PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx);
 PetscErrorCode ElastodynamicsStableStep(Elastodynamics *model, StableStep *step);
+// Stores the cell stresses of the global displacement u as the initial stress.
+PetscErrorCode ElastodynamicsSetInitialStress(Elastodynamics *model, Vec u);
 
 } // namespace slipwave::model

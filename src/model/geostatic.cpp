@@ -1,0 +1,144 @@
+#include "slipwave/model/geostatic.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "slipwave/app/log_events.hpp"
+
+namespace slipwave::model {
+namespace {
+
+// Fraction of the unbalanced force taken out by local damping (the usual value in explicit
+// geomechanics codes; the stage's speed is not sensitive to it between 0.5 and 0.9).
+constexpr double kLocalDamping = 0.8;
+
+// 1 on dofs free during the geostatic stage: free in the run and not on an absorbing node.
+PetscErrorCode geostaticMask(Elastodynamics *m, Vec mask) {
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(m->bc.free_mask, mask));
+  PetscCall(VecGetArray(mask, &a));
+  for (PetscInt node : m->absorbing_nodes)
+    for (PetscInt d = 0; d < m->dim; ++d) a[node * m->dim + d] = 0;
+  PetscCall(VecRestoreArray(mask, &a));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode unbalancedRatio(Elastodynamics *m, Vec a, Vec mask, double *ratio) {
+  Vec       r;
+  PetscReal unbalanced, applied;
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(a, &r));
+  PetscCall(VecPointwiseMult(r, a, m->mass));
+  PetscCall(VecPointwiseMult(r, r, mask));
+  PetscCall(VecNorm(r, NORM_INFINITY, &unbalanced));
+  PetscCall(VecPointwiseMult(r, m->bc.constant_force, mask));
+  PetscCall(VecNorm(r, NORM_INFINITY, &applied));
+  PetscCall(VecDestroy(&r));
+  *ratio = applied > 0 ? unbalanced / applied : 0.0;
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode GeostaticOptionsRead(MPI_Comm comm, GeostaticOptions *o) {
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, "geostatic_", "Geostatic stage (gravity equilibrium before shaking)", "slipwave");
+  PetscCall(PetscOptionsBool("-stage", "bring the model to rest under gravity and loads first (dynamic relaxation)", "GeostaticStage", o->enabled, &o->enabled, nullptr));
+  PetscCall(PetscOptionsReal("-tolerance", "unbalanced-force ratio max|M a| / max|f| that ends the stage [-]", "GeostaticStage", o->tolerance, &o->tolerance, nullptr));
+  PetscCall(PetscOptionsInt("-max_steps", "steps allowed before the stage is declared not converged", "GeostaticStage", o->max_steps, &o->max_steps, nullptr));
+  PetscOptionsEnd();
+  PetscCheck(o->tolerance > 0 && o->tolerance < 1, comm, PETSC_ERR_USER_INPUT, "-geostatic_tolerance = %g; allowed: 0 < tolerance < 1", (double)o->tolerance);
+  PetscCheck(o->max_steps > 0, comm, PETSC_ERR_USER_INPUT, "-geostatic_max_steps = %" PetscInt_FMT "; allowed: > 0", o->max_steps);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode GeostaticStage(Elastodynamics *m, const GeostaticOptions &o, double dt, GeostaticReport *report) {
+  Vec            u, v, a, mask, run_mask;
+  PetscLogDouble t0, t1;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogStagePush(app::stage_geostatic));
+  PetscCall(PetscTime(&t0));
+  PetscCall(DMCreateGlobalVector(m->dm, &u));
+  PetscCall(VecDuplicate(u, &v));
+  PetscCall(VecDuplicate(u, &a));
+  PetscCall(VecDuplicate(u, &mask));
+  PetscCall(geostaticMask(m, mask));
+  PetscCall(VecZeroEntries(u));
+  PetscCall(VecZeroEntries(v));
+  // The RHS sees the geostatic supports and no incident wave or stiffness damping.
+  run_mask          = m->bc.free_mask;
+  m->bc.free_mask   = mask;
+  m->input_enabled  = false;
+  const double beta = m->rayleigh.beta;
+  m->rayleigh.beta  = 0;
+
+  PetscCall(ElastodynamicsRHS(nullptr, 0.0, u, a, m));
+  double   ratio = 1;
+  PetscInt step  = 0;
+  for (; step < o.max_steps; ++step) {
+    // Local damping: each dof's unbalanced force f = M a is opposed by alpha |f| sign(v), so
+    // the damping always works against the motion and cannot feed any mode (unlike zeroing
+    // the velocities at kinetic-energy peaks, which pumped the modes near the step limit).
+    PetscInt           n;
+    PetscScalar       *va;
+    const PetscScalar *aa;
+    PetscCall(VecGetLocalSize(v, &n));
+    PetscCall(VecGetArray(v, &va));
+    PetscCall(VecGetArrayRead(a, &aa));
+    for (PetscInt i = 0; i < n; ++i) {
+      const double sv = (va[i] > 0) - (va[i] < 0), sa = (aa[i] > 0) - (aa[i] < 0);
+      va[i] += dt * aa[i] * (1.0 - kLocalDamping * sv * sa);
+    }
+    PetscCall(VecRestoreArrayRead(a, &aa));
+    PetscCall(VecRestoreArray(v, &va));
+    PetscCall(VecAXPY(u, dt, v));
+    PetscCall(ElastodynamicsRHS(nullptr, 0.0, u, a, m));
+    if (step % 10 == 0) {
+      PetscCall(unbalancedRatio(m, a, mask, &ratio));
+      PetscCheck(std::isfinite(ratio), m->comm, PETSC_ERR_NOT_CONVERGED, "geostatic stage diverged at step %" PetscInt_FMT "; the relaxation step %g s may be too large", step,
+                 dt);
+      if (ratio < o.tolerance) break;
+    }
+  }
+  PetscCheck(ratio < o.tolerance, m->comm, PETSC_ERR_NOT_CONVERGED,
+             "geostatic stage not converged after %" PetscInt_FMT " steps: unbalanced-force ratio %.3e; allowed: below -geostatic_tolerance = %g (raise -geostatic_max_steps)",
+             step, ratio, (double)o.tolerance);
+
+  // The new constant load: what the state leaves unbalanced on the geostatic-free dofs, and the
+  // support reactions (minus the interface force there) on the held absorbing nodes, so that
+  // M a = 0 at the start of the dynamic stage.
+  {
+    PetscInt           n;
+    PetscScalar       *fc;
+    const PetscScalar *fi, *fif, *mk;
+    PetscCall(VecGetLocalSize(u, &n));
+    PetscCall(VecGetArray(m->bc.constant_force, &fc));
+    PetscCall(VecGetArrayRead(m->f_internal, &fi));
+    PetscCall(VecGetArrayRead(m->f_interface, &fif));
+    PetscCall(VecGetArrayRead(mask, &mk));
+    for (PetscInt i = 0; i < n; ++i) fc[i] = mk[i] > 0 ? fc[i] - fi[i] : -fif[i];
+    PetscCall(VecRestoreArrayRead(mask, &mk));
+    PetscCall(VecRestoreArrayRead(m->f_interface, &fif));
+    PetscCall(VecRestoreArrayRead(m->f_internal, &fi));
+    PetscCall(VecRestoreArray(m->bc.constant_force, &fc));
+  }
+  PetscCall(ElastodynamicsSetInitialStress(m, u));
+  for (auto &iface : m->interfaces) iface.ResetJumpReference();
+
+  m->bc.free_mask  = run_mask;
+  m->input_enabled = true;
+  m->rayleigh.beta = beta;
+  PetscCall(VecDestroy(&mask));
+  PetscCall(VecDestroy(&a));
+  PetscCall(VecDestroy(&v));
+  PetscCall(VecDestroy(&u));
+  PetscCall(PetscTime(&t1));
+  report->steps = step;
+  report->ratio = ratio;
+  report->wall  = t1 - t0;
+  PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::model
