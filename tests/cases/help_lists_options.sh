@@ -2,7 +2,7 @@
 # help text), prints units, and stops before the first step.
 set -eu
 . tests/tools/lib.sh
-$SW -options_file config/scenes/default.yaml -help > "$WORK/help.txt"
+$SW -options_file config/scenes/site_response_2d.yaml -help > "$WORK/help.txt"
 if grep -q "^step " "$WORK/help.txt"; then echo "-help ran time steps"; exit 1; fi
 missing=0
 for opt in -mesh_file -mesh_dim -mesh_box_faces -regions -material_soil_rho -material_rock_vs -bc_bottom_type -bc_left_components \

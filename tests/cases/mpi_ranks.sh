@@ -4,7 +4,7 @@
 # (issue 2).
 set -eu
 . tests/tools/lib.sh
-opts="-options_file config/scenes/default.yaml -ts_max_time 2 -output_fields 0 -progress_interval 100"
+opts="-options_file config/scenes/site_response_2d.yaml -ts_max_time 2 -output_fields 0 -progress_interval 100"
 $SW $opts -output_dir "$WORK/np1"
 $MPIEXEC -n 2 $SW $opts -output_dir "$WORK/np2"
 $CHECK stations-equal "$WORK/np1" "$WORK/np2" --names surface,layer_base,bedrock_base --tol 1e-10
