@@ -1,0 +1,129 @@
+#!/bin/bash
+# slipwave batch job for PBS (PBS Pro / OpenPBS; Torque: see the commented line). Submit from
+# the slipwave directory:
+#     qsub scripts/pbs_job.sh
+#     qsub -v SCENE=my_scene.yaml,EXTRA="-ts_max_time 10" scripts/pbs_job.sh
+# Outside PBS (no PBS_JOBID) it runs locally with mpiexec:
+#     NP=2 bash scripts/pbs_job.sh
+# Steps: copy the scene into OUT, record provenance, dry run (OUT/dry_run.txt), the run
+# (-output_dir OUT, log in OUT/run.log), plots (OUT/plots/) if /usr/bin/python3 has matplotlib.
+# The exit status is that of the run.
+#
+# Edit the #PBS lines for your site: they must stay before the first command.
+# select=<nodes>:ncpus=<cores per node>:mpiprocs=<ranks per node>
+#PBS -N slipwave
+#PBS -l select=1:ncpus=4:mpiprocs=4
+#PBS -l walltime=01:00:00
+#PBS -j oe
+#PBS -o slipwave.out
+##PBS -l nodes=1:ppn=4
+##PBS -q workq
+##PBS -A my_project
+
+# ---------------------------------------------------------------------------------------
+# Variables to edit. Each can also be set in the environment when submitting; the
+# environment wins (qsub -v SCENE=...,NP=... scripts/pbs_job.sh).
+#   SCENE  options file of the scene (YAML or PETSc format), relative to the submit
+#          directory or to the slipwave directory
+#   NP     MPI ranks (default: the lines of $PBS_NODEFILE, i.e. the mpiprocs; locally 2)
+#   OUT    output directory (default: $SCRATCH/run-<jobid>, or ./run-<jobid> without SCRATCH)
+#   EXTRA  more options, they override the scene: "-ts_max_time 2 -output_interval 0.02"
+#   SLIPWAVE_HOME  the slipwave directory (default: found from this script or the submit dir)
+#   SLIPWAVE_BIN   the executable (default: $SLIPWAVE_HOME/build/slipwave)
+#   MPIEXEC        the launcher, replaces "mpiexec -machinefile $PBS_NODEFILE" (e.g. "mpirun")
+SCENE=${SCENE:-config/scenes/default.yaml}
+if [ -z "${NP:-}" ] && [ -n "${PBS_NODEFILE:-}" ] && [ -f "$PBS_NODEFILE" ]; then NP=$(wc -l <"$PBS_NODEFILE"); fi
+NP=${NP:-2}
+OUT=${OUT:-}
+EXTRA=${EXTRA:-}
+SLIPWAVE_HOME=${SLIPWAVE_HOME:-}
+SLIPWAVE_BIN=${SLIPWAVE_BIN:-}
+MPIEXEC=${MPIEXEC:-}
+# Site modules, if slipwave was built with them:
+# module load openmpi petsc hdf5
+# ---------------------------------------------------------------------------------------
+
+set -eu
+die() { echo "pbs_job.sh: error: $*" >&2; exit 1; }
+
+if [ -n "${PBS_JOBID:-}" ]; then
+  MODE=pbs; JOBID=${PBS_JOBID%%.*}; START_DIR=${PBS_O_WORKDIR:-$PWD}
+else
+  MODE=local; JOBID=local-$(date +%Y%m%d-%H%M%S)-$$; START_DIR=$PWD
+fi
+cd "$START_DIR"
+
+# The slipwave directory: SLIPWAVE_HOME, else where this script lives (PBS runs a copy in
+# its spool, so also the submit directory).
+for d in "$SLIPWAVE_HOME" "$(dirname "$0")/.." "$START_DIR"; do
+  if [ -n "$d" ] && [ -f "$d/scripts/plot_results.py" ]; then SLIPWAVE_HOME=$(cd "$d" && pwd); break; fi
+done
+[ -n "$SLIPWAVE_HOME" ] || die "cannot find the slipwave directory; set SLIPWAVE_HOME"
+BIN=${SLIPWAVE_BIN:-$SLIPWAVE_HOME/build/slipwave}
+[ -x "$BIN" ] || die "no executable $BIN (run 'make build-only' in $SLIPWAVE_HOME, or set SLIPWAVE_BIN)"
+
+if [ -f "$SCENE" ]; then SCENE=$(cd "$(dirname "$SCENE")" && pwd)/$(basename "$SCENE")
+elif [ -f "$SLIPWAVE_HOME/$SCENE" ]; then SCENE=$SLIPWAVE_HOME/$SCENE
+else die "scene file $SCENE not found (in $START_DIR or $SLIPWAVE_HOME)"; fi
+
+OUT=${OUT:-${SCRATCH:-$START_DIR}/run-$JOBID}
+mkdir -p "$OUT"
+OUT=$(cd "$OUT" && pwd)
+read -r -a EXTRA_ARGS <<<"$EXTRA"
+
+if [ -n "$MPIEXEC" ]; then
+  read -r -a LAUNCH <<<"$MPIEXEC"
+  LAUNCH+=(-n "$NP")
+elif [ "$MODE" = pbs ]; then
+  LAUNCH=(mpiexec -n "$NP")
+  [ -n "${PBS_NODEFILE:-}" ] && LAUNCH+=(-machinefile "$PBS_NODEFILE")
+else
+  LAUNCH=(mpiexec -n "$NP")
+  if mpiexec --version 2>&1 | grep -qi 'open mpi\|openrte'; then
+    LAUNCH+=(--oversubscribe)
+    [ "$(id -u)" = 0 ] && LAUNCH+=(--allow-run-as-root)
+  fi
+fi
+RUN=("${LAUNCH[@]}" "$BIN" -options_file "$SCENE" ${EXTRA_ARGS[@]+"${EXTRA_ARGS[@]}"})
+
+# Provenance: the scene, the version, where and how it ran.
+cp "$SCENE" "$OUT/"
+{
+  echo "date:      $(date -Iseconds)"
+  echo "mode:      $MODE (job $JOBID)"
+  echo "host:      $(hostname)"
+  echo "nodes:     $(if [ -n "${PBS_NODEFILE:-}" ] && [ -f "$PBS_NODEFILE" ]; then sort -u "$PBS_NODEFILE" | tr '\n' ' '; else hostname; fi)"
+  echo "user:      ${USER:-$(id -un)}"
+  echo "ranks:     $NP"
+  echo "scene:     $SCENE (copied as $(basename "$SCENE"))"
+  echo "extra:     $EXTRA"
+  echo "slipwave:  $(git -C "$SLIPWAVE_HOME" describe --always --dirty --tags 2>/dev/null || echo 'unknown (not a git checkout)')"
+  echo "binary:    $BIN"
+  echo "command:   ${RUN[*]} -output_dir $OUT"
+  echo "modules:"
+  if type module >/dev/null 2>&1; then module list 2>&1 | sed 's/^/  /'; else echo "  (no module command)"; fi
+} >"$OUT/provenance.txt"
+echo "pbs_job.sh: $MODE run, job $JOBID, $NP ranks, scene $SCENE, output $OUT"
+
+# Dry run: the report (mesh, materials, points per wavelength, stable step) without stepping.
+if ! "${RUN[@]}" -dry_run -output_dir "$OUT" >"$OUT/dry_run.txt" 2>&1; then
+  cat "$OUT/dry_run.txt" >&2
+  die "the dry run failed (report in $OUT/dry_run.txt)"
+fi
+grep -E 'stable step|time step' "$OUT/dry_run.txt" || true
+
+# The run. Its output also goes to OUT/run.log.
+set +e
+"${RUN[@]}" -output_dir "$OUT" 2>&1 | tee "$OUT/run.log"
+rc=${PIPESTATUS[0]}
+set -e
+[ "$rc" -eq 0 ] || echo "pbs_job.sh: the run failed (exit $rc); see $OUT/run.log" >&2
+
+# Plots (also of a run that stopped early, from what it wrote).
+if [ -f "$OUT/energy.csv" ] && [ -x /usr/bin/python3 ] && /usr/bin/python3 -c 'import matplotlib, numpy, h5py' 2>/dev/null; then
+  /usr/bin/python3 "$SLIPWAVE_HOME/scripts/plot_results.py" "$OUT" || echo "pbs_job.sh: warning: plotting failed" >&2
+else
+  echo "pbs_job.sh: no plots (no energy.csv, or /usr/bin/python3 without matplotlib/numpy/h5py)"
+fi
+echo "pbs_job.sh: output in $OUT (open volume.xmf and interface_<name>.xmf in ParaView)"
+exit "$rc"

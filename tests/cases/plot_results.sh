@@ -1,0 +1,57 @@
+# Plots: scripts/plot_results.py on (1) a short 2D run with an interface (a stiff block on
+# soil, interface 'base') and two stations, (2) a short 3D run with the same kind of
+# interface and no station, (3) a directory with no output. Checks that every expected PNG
+# is written (and listed on stdout), is a valid PNG (signature, IHDR chunk, a size of at least
+# 400 x 300 pixels) and is not blank (the pixel values vary), that --out DIR is honoured,
+# that the 3D run says the station plot is skipped, and that an empty directory exits 1.
+set -eu
+. tests/tools/lib.sh
+BLOCK="-regions soil,block -material_soil_rho 2000 -material_soil_vp 600 -material_soil_vs 300
+ -material_block_rho 2400 -material_block_vp 3000 -material_block_vs 1800 -interfaces base -interface_base_regions soil,block
+ -bc_bottom_type absorbing -input_wave sv -input_stf ricker -input_f0 5 -input_amplitude 1 -gravity 9.81 -ts_max_time 0.3 -progress_interval 100"
+$SW $BLOCK -mesh_box_faces 20,6 -mesh_box_upper 20,6 -region_block_box 8,12,4,6 \
+  -station_coordinates 10,6,10,0 -station_names top,base -output_dir "$WORK/run2d"
+$SW $BLOCK -mesh_dim 3 -mesh_box_faces 8,8,4 -mesh_box_upper 8,8,4 -region_block_box 3,5,3,5,3,4 -output_dir "$WORK/run3d"
+
+$PY scripts/plot_results.py "$WORK/run2d" | tee "$WORK/plot2d.txt"
+$PY scripts/plot_results.py "$WORK/run3d" --out "$WORK/plots3d" | tee "$WORK/plot3d.txt"
+grep -q "station plot skipped" "$WORK/plot3d.txt"
+mkdir -p "$WORK/empty"
+if $PY scripts/plot_results.py "$WORK/empty" >"$WORK/plot_empty.txt" 2>&1; then
+  echo "plot_results.py exited 0 on a directory without output"; exit 1
+fi
+grep -q "nothing to plot" "$WORK/plot_empty.txt"
+
+$PY - "$WORK" <<'PY'
+import os, struct, sys, zlib
+import numpy as np
+import matplotlib.image as mpimg
+w = sys.argv[1]
+expected = {
+    "plot2d.txt": [f"{w}/run2d/plots/{n}" for n in
+                   ("stations_acceleration.png", "interface_base_history.png", "interface_base_profile.png", "energy.png")],
+    "plot3d.txt": [f"{w}/plots3d/{n}" for n in
+                   ("interface_base_history.png", "interface_base_profile.png", "energy.png")],
+}
+for log, files in expected.items():
+    listed = open(os.path.join(w, log)).read()
+    for path in files:
+        assert path in listed, f"{path} not in the list printed by plot_results.py ({log})"
+        with open(path, "rb") as f:
+            data = f.read()
+        assert len(data) > 5000, f"{path}: only {len(data)} bytes"
+        assert data[:8] == b"\x89PNG\r\n\x1a\n", f"{path}: no PNG signature"
+        length, kind = struct.unpack(">I4s", data[8:16])
+        assert kind == b"IHDR" and length == 13, f"{path}: first chunk is {kind!r}, not IHDR"
+        width, height = struct.unpack(">II", data[16:24])
+        crc = struct.unpack(">I", data[29:33])[0]
+        assert crc == zlib.crc32(data[12:29]), f"{path}: IHDR checksum wrong"
+        assert width >= 400 and height >= 300, f"{path}: {width} x {height} pixels"
+        assert data[-12:] == b"\x00\x00\x00\x00IEND\xaeB`\x82", f"{path}: does not end with the IEND chunk"
+        img = mpimg.imread(path)
+        assert img.shape[:2] == (height, width), (path, img.shape)
+        assert float(np.var(img[..., :3])) > 1e-4, f"{path}: blank image"
+        print(f"ok {path}: {width} x {height}, {len(data)} bytes, pixel variance {np.var(img[..., :3]):.3g}")
+assert not os.path.exists(f"{w}/run3d/plots"), "--out ignored: run3d/plots was created"
+print("plots: OK")
+PY
