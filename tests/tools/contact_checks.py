@@ -46,7 +46,10 @@ def energy_growth(args):
     bal = np.max(np.abs(d["relative_balance_error"]))
     print(f"energy: largest growth of kinetic+strain+interface stored+dissipated (net of loads) {growth:+.3e} of {ref:.6e} J "
           f"(bound {args.max_growth:.1e}); balance error {bal:.2e} of the largest energy (bound {args.max_balance:.1e}); {len(d)} rows")
-    return 0 if growth <= args.max_growth and bal <= args.max_balance and len(d) >= 2 else 1
+    peak_stored, dissipated = np.max(d["interface_stored"]), d["interface_dissipated"][-1]
+    print(f"energy: interface held at most {peak_stored:.4e} J (need > {args.min_stored:g}), dissipated {dissipated:.4e} J (need >= {args.min_dissipated:g})")
+    ok = growth <= args.max_growth and bal <= args.max_balance and len(d) >= 2
+    return 0 if ok and peak_stored > args.min_stored and dissipated >= args.min_dissipated else 1
 
 
 def bar_contact(args):
@@ -184,6 +187,8 @@ def main():
     e.add_argument("dir")
     e.add_argument("--max-growth", type=float, required=True)
     e.add_argument("--max-balance", type=float, required=True)
+    e.add_argument("--min-stored", type=float, default=-1.0, help="the interface must have held more than this [J] (contact happened)")
+    e.add_argument("--min-dissipated", type=float, default=-1.0, help="the interface must have dissipated at least this [J] (slip happened)")
     e.add_argument("--reference", type=float, help="energy to compare with (default: the total at t = 0)")
     c = sub.add_parser("bar-contact")
     c.add_argument("dir")
