@@ -176,6 +176,7 @@ def interface_equal(args):
         worst = max(worst, diff)
         print(f"interface {field}: {a.shape[0]} frames x {a.shape[1]} pairs, peak {peak:.4e}, largest difference {diff:.3e} of the peak (bound {args.tol:.1e})")
         if args.min_peak is not None and field in args.min_peak_fields.split(","):
+            print(f"interface {field}: peak {peak:.4e} (need >= {args.min_peak:g})")
             ok = ok and peak >= args.min_peak
     return 0 if worst <= args.tol and ok else 1
 
