@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "slipwave/app/checkpoint.hpp"
 #include "slipwave/app/log_events.hpp"
 #include "slipwave/app/options_check.hpp"
 #include "slipwave/io/interface_output.hpp"
@@ -37,6 +38,8 @@ struct RunOptions {
   PetscBool dry_run                        = PETSC_FALSE;
   PetscBool fields                         = PETSC_TRUE;
   PetscReal initial_velocity[3]            = {0, 0, 0};
+  PetscInt  checkpoint_interval            = 0;
+  char      restart[PETSC_MAX_PATH_LEN]    = "";
 };
 
 struct Run {
@@ -54,7 +57,14 @@ struct Run {
   PetscLogDouble       wall_start = 0, wall_last_progress = 0;
   PetscMPIInt          rank = 0;
   std::vector<std::vector<PetscReal>> region_velocity; // per region, empty if not given
+  std::vector<PetscReal> frame_times; // times of the output frames written
+  bool                   resumed = false; // TSSolve repeats the monitor of the restart step: skip it
+  PetscInt               restart_step = 0;
 };
+
+CheckpointState checkpointState(Run *r, TS ts) {
+  return CheckpointState{&r->model, ts, &r->ledger, &r->stations, &r->frame_times, &r->next_output};
+}
 
 PetscErrorCode readRunOptions(MPI_Comm comm, RunOptions *o) {
   PetscFunctionBeginUser;
@@ -73,10 +83,15 @@ PetscErrorCode readRunOptions(MPI_Comm comm, RunOptions *o) {
                              o->energy_growth_limit, &o->energy_growth_limit, nullptr));
   PetscCall(PetscOptionsBool("-dry_run", "print the setup report (stable step, what governs it, points per wavelength) and stop", "SimulationRun", o->dry_run,
                              &o->dry_run, nullptr));
+  PetscCall(PetscOptionsInt("-checkpoint_interval", "write the full state to OUTPUT_DIR/checkpoint.bin every N steps (0: never)", "SimulationRun",
+                            o->checkpoint_interval, &o->checkpoint_interval, nullptr));
+  PetscCall(PetscOptionsString("-restart", "continue from this checkpoint file (same scene options and number of ranks)", "SimulationRun", o->restart, o->restart,
+                               sizeof o->restart, nullptr));
   PetscInt nv = 3;
   PetscCall(PetscOptionsRealArray("-initial_velocity", "uniform initial velocity vx,vy[,vz] of every free node [m/s]", "SimulationRun", o->initial_velocity, &nv,
                                   nullptr));
   PetscOptionsEnd();
+  PetscCheck(o->checkpoint_interval >= 0, comm, PETSC_ERR_USER_INPUT, "-checkpoint_interval = %" PetscInt_FMT "; allowed: >= 0 steps", o->checkpoint_interval);
   PetscCheck(!o->safety_set || (o->safety > 0 && o->safety <= 1), comm, PETSC_ERR_USER_INPUT, "-time_step_safety = %g; allowed: 0 < s <= 1", (double)o->safety);
   PetscFunctionReturn(0);
 }
@@ -129,6 +144,10 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   Vec   v, a;
   PetscReal h;
   PetscFunctionBeginUser;
+  if (r->resumed) {
+    r->resumed = false;
+    PetscFunctionReturn(0);
+  }
   PetscCall(TS2GetSolution(ts, &u, &v));
   PetscCall(time::CentralDifferenceGetAcceleration(ts, &a));
   PetscCall(TSGetTimeStep(ts, &h));
@@ -153,7 +172,12 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
     PetscCall(r->volume.Write(r->model.dm, r->model.bulk, r->frames, t, u, v, a, r->model.initial_stress));
     for (size_t k = 0; k < r->interface_outputs.size(); ++k) PetscCall(r->interface_outputs[k]->Write(r->model.interfaces[k], r->frames, t));
     ++r->frames;
+    r->frame_times.push_back(t);
     while (r->next_output <= t * (1 + 1e-12)) r->next_output += r->opt.output_interval;
+  }
+  if (r->opt.checkpoint_interval > 0 && step > 0 && step % r->opt.checkpoint_interval == 0) {
+    if (r->energy_csv) std::fflush(r->energy_csv);
+    PetscCall(CheckpointWrite(std::string(r->opt.output_dir) + "/checkpoint.bin", checkpointState(r, ts)));
   }
   PetscLogDouble now;
   PetscCall(PetscTime(&now));
@@ -210,6 +234,31 @@ PetscErrorCode setRegionInitialVelocities(Run *r, Vec v) {
   PetscCall(DMLocalToGlobal(r->model.dm, local, INSERT_VALUES, v));
   PetscCall(VecPointwiseMult(v, v, r->model.bc.free_mask));
   PetscCall(DMRestoreLocalVector(r->model.dm, &local));
+  PetscFunctionReturn(0);
+}
+
+// energy.csv: a new file, or after a restart the rows up to the restart step, then appended.
+PetscErrorCode openEnergyCsv(Run *r) {
+  const std::string path = std::string(r->opt.output_dir) + "/energy.csv";
+  const char *header = "step,time,kinetic,strain,input_work,external_work,absorbed,damped,interface_work,interface_stored,interface_dissipated,stored_change,"
+                       "balance_error,relative_balance_error\n";
+  PetscFunctionBeginUser;
+  std::string kept = header;
+  if (r->opt.restart[0]) {
+    PetscInt restart_step = r->restart_step;
+    if (FILE *in = std::fopen(path.c_str(), "r")) {
+      char line[4096];
+      kept.clear();
+      while (std::fgets(line, sizeof line, in)) {
+        long step = 0;
+        if (kept.empty() || (std::sscanf(line, "%ld,", &step) == 1 && step <= restart_step)) kept += line;
+      }
+      std::fclose(in);
+    }
+  }
+  r->energy_csv = std::fopen(path.c_str(), "w");
+  PetscCheck(r->energy_csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output_dir = %s: cannot write energy.csv there", r->opt.output_dir);
+  std::fputs(kept.c_str(), r->energy_csv);
   PetscFunctionReturn(0);
 }
 
@@ -316,34 +365,32 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
   if (r->opt.dry_run || help) {
     PetscCall(PetscPrintf(comm, "%s: stopping before the first step\n", help ? "-help" : "dry run"));
   } else {
-    if (r->rank == 0) {
-      std::filesystem::create_directories(r->opt.output_dir);
-      r->energy_csv = std::fopen((std::string(r->opt.output_dir) + "/energy.csv").c_str(), "w");
-      PetscCheck(r->energy_csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output_dir = %s: cannot write energy.csv there", r->opt.output_dir);
-      std::fprintf(r->energy_csv, "step,time,kinetic,strain,input_work,external_work,absorbed,damped,interface_work,interface_stored,interface_dissipated,stored_change,balance_error,"
-                                   "relative_balance_error\n");
-    }
-    if (r->geostatic.enabled) {
-      model::GeostaticReport g;
-      PetscReal              dt_geo;
-      PetscCall(TSGetTimeStep(ts, &dt_geo));
-      PetscCall(model::GeostaticStage(&r->model, r->geostatic, dt_geo, &g));
-      PetscCall(PetscPrintf(comm, "geostatic stage: at rest after %" PetscInt_FMT " relaxation steps (unbalanced-force ratio %.2e < %.1e) in %.2f s wall\n", g.steps, g.ratio,
-                            (double)r->geostatic.tolerance, g.wall));
-    }
-    if (r->opt.fields) {
-      PetscCall(r->volume.Open(r->model.dm, r->model.bulk, r->opt.output_dir));
-      for (const auto &iface : r->model.interfaces) {
-        r->interface_outputs.push_back(std::make_unique<io::InterfaceOutput>());
-        PetscCall(r->interface_outputs.back()->Open(comm, r->model.dim, iface, r->opt.output_dir));
-      }
-    }
     PetscCall(DMCreateGlobalVector(r->model.dm, &u));
     PetscCall(VecDuplicate(u, &v));
     PetscCall(VecZeroEntries(u));
-    {
-      PetscInt     n;
-      PetscScalar *va;
+    std::vector<std::pair<PetscInt, PetscReal>> previous_frames;
+    if (r->opt.restart[0]) {
+      // Everything the geostatic stage and the steps so far produced comes from the file.
+      PetscCall(TS2SetSolution(ts, u, v));
+      PetscCall(CheckpointRead(r->opt.restart, checkpointState(r, ts)));
+      PetscCall(TSGetStepNumber(ts, &r->restart_step));
+      for (size_t k = 0; k < r->frame_times.size(); ++k) previous_frames.emplace_back((PetscInt)k, r->frame_times[k]);
+      r->frames  = (PetscInt)r->frame_times.size();
+      r->resumed = true;
+      PetscReal t;
+      PetscCall(TSGetTime(ts, &t));
+      PetscCall(PetscPrintf(comm, "restart: continuing from step %" PetscInt_FMT ", t = %g s (%s)\n", r->restart_step, (double)t, r->opt.restart));
+    } else {
+      if (r->geostatic.enabled) {
+        model::GeostaticReport g;
+        PetscReal              dt_geo;
+        PetscCall(TSGetTimeStep(ts, &dt_geo));
+        PetscCall(model::GeostaticStage(&r->model, r->geostatic, dt_geo, &g));
+        PetscCall(PetscPrintf(comm, "geostatic stage: at rest after %" PetscInt_FMT " relaxation steps (unbalanced-force ratio %.2e < %.1e) in %.2f s wall\n", g.steps,
+                              g.ratio, (double)r->geostatic.tolerance, g.wall));
+      }
+      PetscInt           n;
+      PetscScalar       *va;
       const PetscScalar *mask;
       PetscCall(VecGetLocalSize(v, &n));
       PetscCall(VecGetArray(v, &va));
@@ -351,11 +398,23 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
       for (PetscInt i = 0; i < n; ++i) va[i] = mask[i] * r->opt.initial_velocity[i % r->model.dim];
       PetscCall(VecRestoreArrayRead(r->model.bc.free_mask, &mask));
       PetscCall(VecRestoreArray(v, &va));
+      PetscCall(setRegionInitialVelocities(r, v));
+      PetscCall(TS2SetSolution(ts, u, v));
+      PetscCall(time::CentralDifferenceComputeInitialAcceleration(ts));
     }
-    PetscCall(setRegionInitialVelocities(r, v));
-    PetscCall(TS2SetSolution(ts, u, v));
+    if (r->rank == 0) {
+      std::filesystem::create_directories(r->opt.output_dir);
+      PetscCall(openEnergyCsv(r));
+    }
+    if (r->opt.fields) {
+      const auto *previous = r->opt.restart[0] ? &previous_frames : nullptr;
+      PetscCall(r->volume.Open(r->model.dm, r->model.bulk, r->opt.output_dir, previous));
+      for (const auto &iface : r->model.interfaces) {
+        r->interface_outputs.push_back(std::make_unique<io::InterfaceOutput>());
+        PetscCall(r->interface_outputs.back()->Open(comm, r->model.dim, iface, r->opt.output_dir, previous));
+      }
+    }
     PetscCall(TSMonitorSet(ts, monitor, r, nullptr));
-    PetscCall(time::CentralDifferenceComputeInitialAcceleration(ts));
     PetscCall(PetscTime(&r->wall_start));
     r->wall_last_progress = r->wall_start;
     PetscCall(PetscLogStagePush(stage_solve));

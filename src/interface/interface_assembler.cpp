@@ -214,6 +214,49 @@ void InterfaceAssembler::pairFields(std::vector<double> *values, int *per_pair) 
   *per_pair = 12;
 }
 
+namespace {
+
+template <int Dim>
+void packStates(const std::vector<physics::InterfaceState<Dim>> &states, const std::vector<double> &jump, std::vector<double> *out) {
+  for (size_t p = 0; p < states.size(); ++p) {
+    const auto &s = states[p];
+    out->insert(out->end(), s.sigma_T, s.sigma_T + Dim - 1);
+    out->push_back(s.sigma_N);
+    out->insert(out->end(), s.wp_T, s.wp_T + Dim - 1);
+    out->insert(out->end(), {s.wp_N, s.opening, s.slip, s.dissipation, (double)s.status});
+    out->insert(out->end(), &jump[p * Dim], &jump[p * Dim] + Dim);
+  }
+}
+
+template <int Dim>
+void unpackStates(const double *in, std::vector<physics::InterfaceState<Dim>> &states, std::vector<double> &jump) {
+  for (size_t p = 0; p < states.size(); ++p) {
+    auto &s = states[p];
+    for (int k = 0; k < Dim - 1; ++k) s.sigma_T[k] = *in++;
+    s.sigma_N = *in++;
+    for (int k = 0; k < Dim - 1; ++k) s.wp_T[k] = *in++;
+    s.wp_N        = *in++;
+    s.opening     = *in++;
+    s.slip        = *in++;
+    s.dissipation = *in++;
+    s.status      = (physics::InterfaceStatus)(int)*in++;
+    for (int k = 0; k < Dim; ++k) jump[p * Dim + k] = *in++;
+  }
+}
+
+} // namespace
+
+void InterfaceAssembler::saveState(std::vector<double> *out) const {
+  out->clear();
+  if (dim_ == 2) packStates<2>(states2_, jump_prev_, out);
+  else packStates<3>(states3_, jump_prev_, out);
+}
+
+void InterfaceAssembler::loadState(const double *in) {
+  if (dim_ == 2) unpackStates<2>(in, states2_, jump_prev_);
+  else unpackStates<3>(in, states3_, jump_prev_);
+}
+
 PetscErrorCode InterfaceAssembler::Destroy() {
   PetscFunctionBeginUser;
   PetscCall(VecScatterDestroy(&scatter_));

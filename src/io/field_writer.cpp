@@ -91,7 +91,7 @@ PetscErrorCode OnRootCollective(MPI_Comm comm, Action action, PetscErrorCode cod
 
 } // namespace
 
-PetscErrorCode FieldWriter::Open(MPI_Comm comm, const std::string &dir, const GridLayout &grid, Vec geometry, IS topology) {
+PetscErrorCode FieldWriter::CheckGrid(MPI_Comm comm, const GridLayout &grid, Vec geometry, IS topology) {
   PetscFunctionBeginUser;
   PetscCheck(comm_ == MPI_COMM_NULL, comm, PETSC_ERR_ORDER, "FieldWriter for grid '%s' is already open; Close() it first",
              grid_.name.c_str());
@@ -115,6 +115,17 @@ PetscErrorCode FieldWriter::Open(MPI_Comm comm, const std::string &dir, const Gr
              "grid '%s': topology size %" PetscInt_FMT " is not a multiple of %d nodes per cell", grid.name.c_str(), topology_size,
              grid.nodes_per_cell);
 
+  comm_ = comm;
+  grid_ = grid;
+  num_nodes_ = geometry_size / grid.dim;
+  num_cells_ = topology_size / grid.nodes_per_cell;
+  field_sets_.clear();
+  steps_.clear();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldWriter::Open(MPI_Comm comm, const std::string &dir, const GridLayout &grid, Vec geometry, IS topology) {
+  PetscFunctionBeginUser;
   PetscCall(OnRootCollective(
       comm,
       [&dir](char *message, size_t size) {
@@ -125,13 +136,8 @@ PetscErrorCode FieldWriter::Open(MPI_Comm comm, const std::string &dir, const Gr
       },
       PETSC_ERR_FILE_OPEN));
 
-  comm_ = comm;
+  PetscCall(CheckGrid(comm, grid, geometry, topology));
   dir_ = dir;
-  grid_ = grid;
-  num_nodes_ = geometry_size / grid.dim;
-  num_cells_ = topology_size / grid.nodes_per_cell;
-  field_sets_.clear();
-  steps_.clear();
 
   const std::string h5 = dir_ + "/" + grid_.name + ".h5";
   PetscCall(PetscViewerHDF5Open(comm_, h5.c_str(), FILE_MODE_WRITE, &viewer_));
@@ -195,16 +201,10 @@ PetscErrorCode FieldWriter::WriteRows(Vec source, int source_components, Centeri
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FieldWriter::WriteStep(PetscInt step, PetscReal time, const std::vector<FieldRef> &fields) {
+PetscErrorCode FieldWriter::FieldInfos(const std::vector<FieldRef> &fields, std::vector<FieldInfo> *out) const {
   PetscFunctionBeginUser;
-  PetscCheck(comm_ != MPI_COMM_NULL, PETSC_COMM_SELF, PETSC_ERR_ORDER, "FieldWriter::WriteStep before Open");
-  PetscCheck(steps_.empty() || (step > steps_.back().step && time > steps_.back().time), comm_, PETSC_ERR_ARG_WRONG,
-             "grid '%s': output step %" PetscInt_FMT " at t = %g does not follow step %" PetscInt_FMT " at t = %g",
-             grid_.name.c_str(), step, static_cast<double>(time), steps_.empty() ? 0 : steps_.back().step,
-             steps_.empty() ? 0.0 : static_cast<double>(steps_.back().time));
-  PetscCheck(step >= 0, comm_, PETSC_ERR_ARG_OUTOFRANGE, "grid '%s': output step %" PetscInt_FMT " < 0", grid_.name.c_str(), step);
-
-  std::vector<FieldInfo> infos;
+  std::vector<FieldInfo> &infos = *out;
+  infos.clear();
   for (const FieldRef &field : fields) {
     PetscInt components = 0, size = 0;
     PetscCall(VecGetBlockSize(field.values, &components));
@@ -223,6 +223,33 @@ PetscErrorCode FieldWriter::WriteStep(PetscInt step, PetscReal time, const std::
       PetscCheck(seen.name != field.name, comm_, PETSC_ERR_ARG_WRONG, "field '%s' given twice in one step", field.name.c_str());
     PetscCallCXX(infos.push_back(FieldInfo{field.name, field.centering, WrittenComponents(components)}));
   }
+
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldWriter::Resume(MPI_Comm comm, const std::string &dir, const GridLayout &grid, Vec geometry, IS topology,
+                                   const std::vector<std::pair<PetscInt, PetscReal>> &previous, const std::vector<FieldRef> &layout) {
+  PetscFunctionBeginUser;
+  PetscCall(CheckGrid(comm, grid, geometry, topology));
+  dir_ = dir;
+  std::vector<FieldInfo> infos;
+  PetscCall(FieldInfos(layout, &infos));
+  PetscCallCXX(field_sets_.push_back(std::move(infos)));
+  for (const auto &[step, time] : previous) PetscCallCXX(steps_.push_back(StepRecord{step, time, 0}));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldWriter::WriteStep(PetscInt step, PetscReal time, const std::vector<FieldRef> &fields) {
+  PetscFunctionBeginUser;
+  PetscCheck(comm_ != MPI_COMM_NULL, PETSC_COMM_SELF, PETSC_ERR_ORDER, "FieldWriter::WriteStep before Open");
+  PetscCheck(steps_.empty() || (step > steps_.back().step && time > steps_.back().time), comm_, PETSC_ERR_ARG_WRONG,
+             "grid '%s': output step %" PetscInt_FMT " at t = %g does not follow step %" PetscInt_FMT " at t = %g",
+             grid_.name.c_str(), step, static_cast<double>(time), steps_.empty() ? 0 : steps_.back().step,
+             steps_.empty() ? 0.0 : static_cast<double>(steps_.back().time));
+  PetscCheck(step >= 0, comm_, PETSC_ERR_ARG_OUTOFRANGE, "grid '%s': output step %" PetscInt_FMT " < 0", grid_.name.c_str(), step);
+
+  std::vector<FieldInfo> infos;
+  PetscCall(FieldInfos(fields, &infos));
 
   const std::string h5 = dir_ + "/" + grid_.name + ".h5";
   const std::string dataset = StepDataset(step);

@@ -19,7 +19,8 @@ PetscErrorCode pairVector(MPI_Comm comm, PetscInt npairs, PetscInt width, Vec *v
 
 } // namespace
 
-PetscErrorCode InterfaceOutput::Open(MPI_Comm comm, PetscInt dim, const interface::InterfaceAssembler &iface, const std::string &dir) {
+PetscErrorCode InterfaceOutput::Open(MPI_Comm comm, PetscInt dim, const interface::InterfaceAssembler &iface, const std::string &dir,
+                                     const std::vector<std::pair<PetscInt, PetscReal>> *previous) {
   const mesh::InterfacePairs &pairs = iface.pairs();
   PetscFunctionBeginUser;
   PetscCall(pairVector(comm, pairs.n_global, dim, &geometry_));
@@ -42,7 +43,14 @@ PetscErrorCode InterfaceOutput::Open(MPI_Comm comm, PetscInt dim, const interfac
   grid.dim            = (int)dim;
   grid.nodes_per_cell = (int)pairs.nodes_per_face;
   grid.cell_type      = dim == 2 ? "Polyline" : (pairs.nodes_per_face == 3 ? "Triangle" : "Quadrilateral");
-  PetscCall(writer_.Open(comm, dir, grid, geometry_, topology_));
+  if (previous) {
+    const std::vector<std::string> names = interface::InterfaceAssembler::pairFieldNames(dim);
+    std::vector<FieldRef>          layout;
+    for (size_t f = 0; f < fields_.size(); ++f) layout.push_back({names[f], Centering::Node, fields_[f]});
+    PetscCall(writer_.Resume(comm, dir, grid, geometry_, topology_, *previous, layout));
+  } else {
+    PetscCall(writer_.Open(comm, dir, grid, geometry_, topology_));
+  }
   PetscFunctionReturn(0);
 }
 

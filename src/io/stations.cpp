@@ -198,6 +198,16 @@ PetscErrorCode Stations::Write(MPI_Comm comm, const std::string &dir) const {
   PetscFunctionReturn(0);
 }
 
+void Stations::saveRecords(std::vector<double> *out) const {
+  out->clear();
+  for (const Local &l : local_) out->insert(out->end(), l.record.begin(), l.record.end());
+}
+
+void Stations::loadRecords(const double *in, size_t n) {
+  const size_t each = local_.empty() ? 0 : n / local_.size();
+  for (size_t k = 0; k < local_.size(); ++k) local_[k].record.assign(in + k * each, in + (k + 1) * each);
+}
+
 PetscErrorCode Stations::Destroy() {
   PetscFunctionBeginUser;
   for (Vec &w : work_) PetscCall(VecDestroy(&w));

@@ -6,7 +6,7 @@
 
 namespace slipwave::io {
 
-PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir) {
+PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir, const std::vector<std::pair<PetscInt, PetscReal>> *previous) {
   MPI_Comm     comm = PetscObjectComm((PetscObject)dm);
   const PetscInt dim = bulk.dimension(), nen = bulk.nodesPerCell(), ncell = bulk.cellCount();
   PetscSection gsection;
@@ -48,7 +48,17 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
   grid.dim            = (int)dim;
   grid.cell_type      = types[(int)bulk.shape()];
   grid.nodes_per_cell = (int)nen;
-  PetscCall(writer_.Open(comm, dir, grid, geometry_, topology_));
+  if (previous) {
+    // The node fields have the geometry's layout; the cell fields those of stress and region.
+    PetscCall(writer_.Resume(comm, dir, grid, geometry_, topology_, *previous,
+                             {{"displacement", Centering::Node, geometry_},
+                              {"velocity", Centering::Node, geometry_},
+                              {"acceleration", Centering::Node, geometry_},
+                              {"stress", Centering::Cell, stress_},
+                              {"region", Centering::Cell, region_}}));
+  } else {
+    PetscCall(writer_.Open(comm, dir, grid, geometry_, topology_));
+  }
   PetscFunctionReturn(0);
 }
 

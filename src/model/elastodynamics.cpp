@@ -266,7 +266,7 @@ PetscErrorCode ElastodynamicsStableStep(Elastodynamics *m, StableStep *step) {
     *omega = std::sqrt(std::max(omega2, (PetscReal)0));
     PetscFunctionReturn(0);
   };
-  PetscReal omega_bulk, omega_all;
+  PetscReal omega_bulk = 0, omega_all = 0;
   PetscCall(omegaMax(rowabs, &omega_bulk));
   for (auto &iface : m->interfaces) PetscCall(iface.AddStiffnessRowAbsSums(rowabs));
   PetscCall(omegaMax(rowabs, &omega_all));

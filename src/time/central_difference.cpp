@@ -234,4 +234,13 @@ PetscErrorCode CentralDifferenceComputeInitialAcceleration(TS ts) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CentralDifferenceSetAcceleration(TS ts, Vec a) {
+  PetscFunctionBeginUser;
+  PetscCall(requireCentralDifference(ts));
+  PetscCall(TSSetUp(ts));
+  PetscCall(VecCopy(a, data(ts)->accel));
+  data(ts)->have_accel = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
 } // namespace slipwave::time

@@ -38,6 +38,12 @@ public:
   // Measures jumps from the current displacement as zero again (after the geostatic stage the
   // displacements restart from zero); tractions and state are kept.
   void ResetJumpReference() { jump_prev_.assign(jump_prev_.size(), 0.0); }
+  // Checkpoints: each owned pair's state and jump reference as stateWidth() doubles.
+  int    stateWidth() const { return dim_ == 2 ? 10 : 13; }
+  void   saveState(std::vector<double> *out) const;
+  void   loadState(const double *in);
+  double maxDrift() const { return max_drift_; }
+  void   setMaxDrift(double drift) { max_drift_ = drift; }
   // Pairs (over all ranks) whose soil and structure nodes are owned by different ranks.
   PetscErrorCode CountCutPairs(Vec u_template, PetscInt *cut) const;
   // Per-pair fields of this rank's pairs for output, each value with its pair id.

@@ -17,6 +17,7 @@
 #include <petscvec.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace slipwave::io {
@@ -53,6 +54,11 @@ class FieldWriter {
   // Collective. Writes the fields of this output step, then rank 0 rewrites DIR/<name>.xmf
   // listing all steps so far. Steps and times must increase from call to call.
   PetscErrorCode WriteStep(PetscInt step, PetscReal time, const std::vector<FieldRef> &fields);
+  // Collective. After a restart: reopens DIR/<name>.h5 as written by an earlier Open/WriteStep
+  // run, keeping its geometry, topology and the output steps listed in `previous` (step, time),
+  // all with the fields of `layout` (only their names, centering and block sizes are used).
+  PetscErrorCode Resume(MPI_Comm comm, const std::string &dir, const GridLayout &grid, Vec geometry, IS topology,
+                        const std::vector<std::pair<PetscInt, PetscReal>> &previous, const std::vector<FieldRef> &layout);
   // Collective. Frees the work vectors; the files stay complete as after the last step.
   PetscErrorCode Close();
 
@@ -71,6 +77,8 @@ class FieldWriter {
     size_t field_set; // index into field_sets_
   };
 
+  PetscErrorCode CheckGrid(MPI_Comm comm, const GridLayout &grid, Vec geometry, IS topology);
+  PetscErrorCode FieldInfos(const std::vector<FieldRef> &fields, std::vector<FieldInfo> *infos) const;
   PetscErrorCode WorkVec(Centering centering, int components, PetscInt local_rows, Vec *work);
   PetscErrorCode WriteRows(Vec source, int source_components, Centering centering, const char *dataset);
   PetscErrorCode WriteIndex() const;

@@ -15,7 +15,9 @@ namespace slipwave::io {
 
 class InterfaceOutput {
 public:
-  PetscErrorCode Open(MPI_Comm comm, PetscInt dim, const interface::InterfaceAssembler &iface, const std::string &dir);
+  // previous: output steps (step, time) already in the file to keep (a restart), or null.
+  PetscErrorCode Open(MPI_Comm comm, PetscInt dim, const interface::InterfaceAssembler &iface, const std::string &dir,
+                      const std::vector<std::pair<PetscInt, PetscReal>> *previous = nullptr);
   PetscErrorCode Write(const interface::InterfaceAssembler &iface, PetscInt step, PetscReal t);
   PetscErrorCode Close();
 

@@ -22,6 +22,11 @@ public:
   PetscErrorCode Write(MPI_Comm comm, const std::string &dir) const;
   PetscErrorCode Destroy();
   const std::vector<std::string> &names() const { return names_; }
+  // Checkpoints: this rank's records, station after station (each the same length).
+  void saveRecords(std::vector<double> *out) const;
+  void loadRecords(const double *in, size_t n);
+  size_t localStations() const { return local_.size(); }
+  int    rowWidth() const { return 1 + 3 * (int)dim_; }
 
 private:
   struct Local {

@@ -14,7 +14,8 @@ namespace slipwave::io {
 
 class VolumeOutput {
 public:
-  PetscErrorCode Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir);
+  // previous: output steps (step, time) already in DIR/volume.h5 to keep (a restart), or null.
+  PetscErrorCode Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir, const std::vector<std::pair<PetscInt, PetscReal>> *previous = nullptr);
   // initial_stress: 6 per local cell added to the stress of u (the geostatic state), or empty.
   PetscErrorCode Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a, const std::vector<double> &initial_stress);
   PetscErrorCode Close();

@@ -36,4 +36,7 @@ PetscErrorCode CentralDifferenceGetAcceleration(TS ts, Vec *a);
 // needed. Call it again after changing u or v by hand (restart).
 PetscErrorCode CentralDifferenceComputeInitialAcceleration(TS ts);
 
+// Sets a_n from a saved state (restart), so the next step continues exactly.
+PetscErrorCode CentralDifferenceSetAcceleration(TS ts, Vec a);
+
 } // namespace slipwave::time

@@ -1,0 +1,33 @@
+// Checkpoint and restart: the full state of a run at the end of a step, so that a continued
+// run is identical to an uninterrupted one. The file (PETSc binary, written to a temporary
+// name and renamed, so a crash never leaves half a checkpoint) holds: time, step and step
+// size; u, v, a and the force parts of the last right-hand side (the energy ledger needs
+// them); the constant loads and initial stresses left by a geostatic stage; every interface
+// pair's state; the energy ledger; the station records and the output times so far.
+// A restart runs on the same number of ranks (pairs and stations are stored per rank).
+#pragma once
+#include <petscts.h>
+
+#include <string>
+#include <vector>
+
+#include "slipwave/io/stations.hpp"
+#include "slipwave/model/elastodynamics.hpp"
+#include "slipwave/model/energy_ledger.hpp"
+
+namespace slipwave::app {
+
+struct CheckpointState {
+  model::Elastodynamics *model       = nullptr;
+  TS                     ts          = nullptr;
+  model::EnergyLedger   *ledger      = nullptr;
+  io::Stations          *stations    = nullptr;
+  std::vector<PetscReal> *frame_times = nullptr; // times of the output frames written so far
+  PetscReal             *next_output = nullptr;
+};
+
+PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &state);
+// Restores everything into an already set-up run (TS solution vectors given).
+PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &state);
+
+} // namespace slipwave::app

@@ -1,0 +1,163 @@
+#include "slipwave/app/checkpoint.hpp"
+
+#include <cstdio>
+
+#include "slipwave/time/central_difference.hpp"
+
+namespace slipwave::app {
+namespace {
+
+constexpr PetscInt kMagic   = 0x53574350; // "SWCP"
+constexpr PetscInt kVersion = 1;
+constexpr PetscInt kHeader  = 9;
+
+// The ledger as a flat array, in a fixed order.
+std::vector<double> ledgerArray(const model::EnergyLedger &e) {
+  return {e.kinetic, e.strain,        e.input,        e.external,      e.reactions, e.absorbed,          e.damped, e.interface_work,
+          e.shadow,  e.shadow_start,  e.balance_error, e.scale,        e.h_prev,    e.started ? 1.0 : 0.0};
+}
+
+void ledgerFromArray(const double *a, model::EnergyLedger *e) {
+  e->kinetic = a[0], e->strain = a[1], e->input = a[2], e->external = a[3], e->reactions = a[4], e->absorbed = a[5], e->damped = a[6];
+  e->interface_work = a[7], e->shadow = a[8], e->shadow_start = a[9], e->balance_error = a[10], e->scale = a[11], e->h_prev = a[12];
+  e->started = a[13] != 0;
+}
+constexpr PetscInt kLedgerSize = 14;
+
+std::vector<Vec> stateVectors(const CheckpointState &s) {
+  Vec u, v, a;
+  TS2GetSolution(s.ts, &u, &v);
+  time::CentralDifferenceGetAcceleration(s.ts, &a);
+  model::Elastodynamics *m = s.model;
+  return {u, v, a, m->f_internal, m->f_external, m->f_input, m->f_stiffness_damping, m->f_interface, m->bc.constant_force};
+}
+
+// A Vec holding `values` on this rank (its layout defines what a restart must reproduce).
+PetscErrorCode viewLocalArray(MPI_Comm comm, const std::vector<double> &values, PetscViewer viewer) {
+  Vec          x;
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(VecCreateMPI(comm, (PetscInt)values.size(), PETSC_DETERMINE, &x));
+  PetscCall(VecGetArray(x, &a));
+  for (size_t i = 0; i < values.size(); ++i) a[i] = values[i];
+  PetscCall(VecRestoreArray(x, &a));
+  PetscCall(VecView(x, viewer));
+  PetscCall(VecDestroy(&x));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode loadLocalArray(MPI_Comm comm, PetscInt local_size, PetscViewer viewer, std::vector<double> *values) {
+  Vec                x;
+  const PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(VecCreateMPI(comm, local_size, PETSC_DETERMINE, &x));
+  PetscCall(VecLoad(x, viewer));
+  PetscCall(VecGetArrayRead(x, &a));
+  values->assign(a, a + local_size);
+  PetscCall(VecRestoreArrayRead(x, &a));
+  PetscCall(VecDestroy(&x));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s) {
+  MPI_Comm    comm = s.model->comm;
+  PetscMPIInt size, rank;
+  PetscViewer viewer;
+  PetscInt    step;
+  PetscReal   time, dt;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(TSGetStepNumber(s.ts, &step));
+  PetscCall(TSGetTime(s.ts, &time));
+  PetscCall(TSGetTimeStep(s.ts, &dt));
+  const std::string tmp = path + ".tmp";
+  PetscCall(PetscViewerBinaryOpen(comm, tmp.c_str(), FILE_MODE_WRITE, &viewer));
+  PetscCall(PetscViewerBinarySetSkipInfo(viewer, PETSC_TRUE));
+  std::vector<double> samples;
+  s.stations->saveRecords(&samples);
+  const PetscInt header[kHeader] = {kMagic, kVersion, size, s.model->dim, step, (PetscInt)s.model->interfaces.size(), (PetscInt)s.frame_times->size(),
+                                    (PetscInt)!s.model->initial_stress.empty(), 0};
+  PetscCall(PetscViewerBinaryWrite(viewer, header, kHeader, PETSC_INT));
+  std::vector<double> scalars = {time, dt, *s.next_output};
+  for (double x : ledgerArray(*s.ledger)) scalars.push_back(x);
+  for (PetscReal t : *s.frame_times) scalars.push_back(t);
+  for (const auto &iface : s.model->interfaces) scalars.push_back(iface.maxDrift());
+  PetscCall(PetscViewerBinaryWrite(viewer, scalars.data(), (PetscInt)scalars.size(), PETSC_DOUBLE));
+  for (Vec x : stateVectors(s)) PetscCall(VecView(x, viewer));
+  if (!s.model->initial_stress.empty()) PetscCall(viewLocalArray(comm, s.model->initial_stress, viewer));
+  for (const auto &iface : s.model->interfaces) {
+    std::vector<double> state;
+    iface.saveState(&state);
+    PetscCall(viewLocalArray(comm, state, viewer));
+  }
+  PetscCall(viewLocalArray(comm, samples, viewer));
+  PetscCall(PetscViewerDestroy(&viewer));
+  if (rank == 0) PetscCheck(std::rename(tmp.c_str(), path.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s", tmp.c_str(), path.c_str());
+  PetscCallMPI(MPI_Barrier(comm));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s) {
+  MPI_Comm    comm = s.model->comm;
+  PetscMPIInt size;
+  PetscViewer viewer;
+  PetscInt    header[kHeader];
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  int readable = 0;
+  if (FILE *fp = std::fopen(path.c_str(), "rb")) {
+    readable = 1;
+    std::fclose(fp);
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &readable, 1, MPI_INT, MPI_MIN, comm));
+  PetscCheck(readable, comm, PETSC_ERR_FILE_OPEN, "-restart = %s: cannot open the file; allowed: a checkpoint written by -checkpoint_interval", path.c_str());
+  PetscCall(PetscViewerBinaryOpen(comm, path.c_str(), FILE_MODE_READ, &viewer));
+  PetscCall(PetscViewerBinarySetSkipInfo(viewer, PETSC_TRUE));
+  PetscCall(PetscViewerBinaryRead(viewer, header, kHeader, nullptr, PETSC_INT));
+  PetscCheck(header[0] == kMagic && header[1] == kVersion, comm, PETSC_ERR_USER_INPUT, "-restart = %s is not a slipwave checkpoint (version %" PetscInt_FMT ")",
+             path.c_str(), kVersion);
+  PetscCheck(header[2] == size, comm, PETSC_ERR_USER_INPUT, "-restart = %s was written on %" PetscInt_FMT " ranks; allowed: restart on the same number of ranks (this run: %d)",
+             path.c_str(), header[2], size);
+  PetscCheck(header[3] == s.model->dim && header[5] == (PetscInt)s.model->interfaces.size(), comm, PETSC_ERR_USER_INPUT,
+             "-restart = %s belongs to another scene (%" PetscInt_FMT "D, %" PetscInt_FMT " interfaces); allowed: the scene options of the run that wrote it",
+             path.c_str(), header[3], header[5]);
+  const PetscInt      nframes = header[6], ninterfaces = header[5];
+  std::vector<double> scalars(3 + kLedgerSize + nframes + ninterfaces);
+  PetscCall(PetscViewerBinaryRead(viewer, scalars.data(), (PetscInt)scalars.size(), nullptr, PETSC_DOUBLE));
+  PetscCall(TSSetTime(s.ts, scalars[0]));
+  PetscCall(TSSetTimeStep(s.ts, scalars[1]));
+  PetscCall(TSSetStepNumber(s.ts, header[4]));
+  *s.next_output = scalars[2];
+  ledgerFromArray(&scalars[3], s.ledger);
+  s.frame_times->assign(scalars.begin() + 3 + kLedgerSize, scalars.begin() + 3 + kLedgerSize + nframes);
+  PetscCall(TSSetUp(s.ts)); // creates the TS's acceleration vector that the file fills
+  std::vector<Vec> vecs = stateVectors(s);
+  for (Vec x : vecs) {
+    PetscInt n_expected, n_file;
+    PetscCall(VecGetSize(x, &n_expected));
+    PetscCall(VecLoad(x, viewer));
+    PetscCall(VecGetSize(x, &n_file));
+    PetscCheck(n_file == n_expected, comm, PETSC_ERR_USER_INPUT, "-restart = %s belongs to another mesh; allowed: the scene options of the run that wrote it", path.c_str());
+  }
+  PetscCall(time::CentralDifferenceSetAcceleration(s.ts, vecs[2]));
+  if (header[7]) PetscCall(loadLocalArray(comm, 6 * s.model->bulk.cellCount(), viewer, &s.model->initial_stress));
+  for (size_t k = 0; k < s.model->interfaces.size(); ++k) {
+    auto               &iface = s.model->interfaces[k];
+    std::vector<double> state;
+    PetscCall(loadLocalArray(comm, (PetscInt)iface.pairs().id.size() * iface.stateWidth(), viewer, &state));
+    iface.loadState(state.data());
+    iface.setMaxDrift(scalars[3 + kLedgerSize + nframes + k]);
+  }
+  // Every station has one row per step taken so far (steps 0 .. step).
+  const PetscInt      samples = (header[4] + 1) * s.stations->rowWidth() * (PetscInt)s.stations->localStations();
+  std::vector<double> records;
+  PetscCall(loadLocalArray(comm, samples, viewer, &records));
+  s.stations->loadRecords(records.data(), records.size());
+  PetscCall(PetscViewerDestroy(&viewer));
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::app

@@ -1,0 +1,37 @@
+# Checkpoint/restart (issue 5): the default scene (geostatic stage, interface that slides and
+# opens, stations, fields), coarsened and shortened. Run C goes straight to the end; run A
+# stops halfway and writes a checkpoint there; run B continues from it in a copy of A's
+# output. B must equal C exactly: energy.csv and station files byte for byte, and every
+# volume and interface output frame with zero difference (the state is restored bit for bit
+# and the same operations follow).
+set -eu
+. tests/tools/lib.sh
+O="-options_file config/scenes/default.yaml -mesh_box_faces 60,30 -ts_max_time 0.8 -output_interval 0.1 -progress_interval 100"
+$SW $O -output_dir "$WORK/C" > "$WORK/C.log"
+steps=$(tail -1 "$WORK/C/energy.csv" | cut -d, -f1)
+half=$((steps / 2))
+$SW $O -ts_max_steps $half -checkpoint_interval $half -output_dir "$WORK/A" > "$WORK/A.log"
+cp -r "$WORK/A" "$WORK/B"
+$SW $O -restart "$WORK/B/checkpoint.bin" -output_dir "$WORK/B" | grep -E "^restart|^done"
+cmp "$WORK/B/energy.csv" "$WORK/C/energy.csv"
+for s in block_top block_base free_field bedrock; do cmp "$WORK/B/stations/$s.csv" "$WORK/C/stations/$s.csv"; done
+$PY scripts/check_output.py "$WORK/B"
+$PY - "$WORK" <<'PY'
+import sys
+import h5py
+import numpy as np
+work = sys.argv[1]
+for grid in ("volume", "interface_base"):
+    with h5py.File(f"{work}/B/{grid}.h5") as b, h5py.File(f"{work}/C/{grid}.h5") as c:
+        worst, frames = 0.0, 0
+        for field in c["/fields"]:
+            for step in c["/fields/" + field]:
+                worst = max(worst, float(np.abs(b[f"/fields/{field}/{step}"][:] - c[f"/fields/{field}/{step}"][:]).max()))
+                frames += 1
+    print(f"{grid}: {frames} field frames, largest difference {worst}")
+    if worst != 0.0:
+        sys.exit(1)
+PY
+# A restart on another number of ranks is refused with one clear line.
+if $MPIEXEC -n 2 $SW $O -restart "$WORK/B/checkpoint.bin" -output_dir "$WORK/D" 2> "$WORK/D.err" > /dev/null; then echo "2-rank restart of a 1-rank checkpoint accepted"; exit 1; fi
+grep -q "^slipwave: error: -restart = .* was written on 1 ranks; allowed: restart on the same number of ranks" "$WORK/D.err"
