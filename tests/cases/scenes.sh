@@ -1,0 +1,34 @@
+# The scenes of config/scenes that no other test runs, each against what its header promises.
+# column_1d: surface velocity 2 v_in(t - H/vs), L2 <= 1.5 %, late motion <= 1e-3 (as the SV
+#   column test). foundation_3d: runs to the end with the budget closed (1e-9); the block's
+#   starting base traction, area-weighted (lumped weights 1/4, 1/2, 1 for the corner, edge
+#   and centre pairs of its 2 x 2-cell base), equals its weight per area rho g h =
+#   2400*9.81*6 = 141264 Pa within 1 %; it slides (> 1 cm) and rocks (some pair opens).
+# (default.yaml: tests/cases/default_scene.sh; site_response_2d: mpi_ranks.sh, output_files.sh;
+# sliding_block, two_bar_impact and free_field_site: their interface_ and free_field_ tests.)
+set -eu
+. tests/tools/lib.sh
+$SW -options_file config/scenes/column_1d.yaml -output_dir "$WORK/column" > "$WORK/column.log"
+$CHECK column "$WORK/column/stations/top.csv" --component x --height 100 --speed 200 --amplitude 0.1 --f0 5 --t0 0.24 --l2-max 0.015 --late-max 1e-3
+$SW -options_file config/scenes/foundation_3d.yaml -output_dir "$WORK/f3d" > "$WORK/f3d.log"
+$CHECK energy "$WORK/f3d/energy.csv" --max-error 1e-9
+$PY scripts/check_output.py "$WORK/f3d"
+$PY scripts/check_output.py "$WORK/f3d" --grid interface_base
+$PY - "$WORK/f3d/interface_base.h5" <<'PY'
+import sys
+import h5py
+import numpy as np
+with h5py.File(sys.argv[1]) as f:
+    xyz = f["/geometry"][:]
+    steps = sorted(f["/fields/status"].keys())
+    sn = f["/fields/sigma_N/" + steps[0]][:, 0]
+    slip = max(f["/fields/accumulated_slip/" + k][:].max() for k in steps)
+    opened = sum(int(np.any(f["/fields/status/" + k][:] == 2)) for k in steps)
+edge_x = np.isclose(np.abs(xyz[:, 0]), 2.0)
+edge_y = np.isclose(np.abs(xyz[:, 1]), 2.0)
+w = np.where(edge_x & edge_y, 0.25, np.where(edge_x | edge_y, 0.5, 1.0))
+mean = np.sum(w * sn) / np.sum(w)
+rel = abs(mean / -141264.0 - 1)
+print(f"foundation_3d: weighted base traction {mean:.0f} Pa (weight/area -141264), error {rel:.2e}; slip {slip:.4f} m; {opened} frames with an open pair")
+sys.exit(0 if rel <= 0.01 and slip > 0.01 and opened > 0 else 1)
+PY
