@@ -37,6 +37,8 @@ run: deps
 
 run-only: build-only
 	mpiexec $(MPIEXEC_FLAGS) -n $(NP) $(BUILD)/slipwave -options_file config/scenes/default.yaml -output_dir $(BUILD)/run/default
+	/usr/bin/python3 scripts/plot_results.py $(BUILD)/run/default
+	@echo "Open $(BUILD)/run/default/volume.xmf and interface_base.xmf in ParaView (default reader); plots in $(BUILD)/run/default/plots/"
 
 test: deps
 	@$(MAKE) --no-print-directory test-only

@@ -262,6 +262,33 @@ PetscErrorCode openEnergyCsv(Run *r) {
   PetscFunctionReturn(0);
 }
 
+// Memory in use after setup (all ranks) and a run-time estimate: the element loop timed here
+// times the ratio of a whole step to it (measured: 2.6 on a 512^2 mesh, docs/performance.md;
+// 4.3 on the default scene, where the per-step vector work weighs more; 4 is used, so the
+// estimate is good to a factor 2), doubled with stiffness-proportional damping (a second loop).
+PetscErrorCode reportCost(Run *r, double steps) {
+  constexpr double kStepOverLoop = 4.0;
+  PetscLogDouble   memory, t0, t1;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemoryGetCurrentUsage(&memory));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &memory, 1, MPI_DOUBLE, MPI_SUM, r->model.comm));
+  std::vector<PetscScalar> u, f;
+  PetscInt                 n;
+  PetscCall(VecGetLocalSize(r->model.u_local, &n));
+  u.assign(n, 1e-6);
+  f.assign(n, 0.0);
+  PetscCall(PetscTime(&t0));
+  const int repeats = 5;
+  for (int k = 0; k < repeats; ++k) r->model.bulk.addStiffnessTimes(u.data(), f.data());
+  PetscCall(PetscTime(&t1));
+  double loop = (t1 - t0) / repeats;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &loop, 1, MPI_DOUBLE, MPI_MAX, r->model.comm));
+  const double per_step = loop * kStepOverLoop * (r->model.rayleigh.beta > 0 ? 2 : 1);
+  PetscCall(PetscPrintf(r->model.comm, "  memory in use after setup: %.1f MB (all ranks); estimated run time %.0f s (%.0f steps x %.3g ms; within a factor 2)\n",
+                        memory / 1048576.0, steps * per_step, steps, 1e3 * per_step));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode report(Run *r, TS ts) {
   MPI_Comm    comm = r->model.comm;
   PetscMPIInt size;
@@ -309,6 +336,7 @@ PetscErrorCode report(Run *r, TS ts) {
   PetscCall(PetscPrintf(comm, "  time step %.4e s = %.3f of the limit; %.0f steps to t = %g s\n", (double)dt, dt / r->step.dt_limit, std::ceil(r->max_time / dt),
                         (double)r->max_time));
   PetscCall(PetscPrintf(comm, "  output: %s/\n", r->opt.output_dir));
+  PetscCall(reportCost(r, std::ceil(r->max_time / dt)));
   PetscFunctionReturn(0);
 }
 
