@@ -11,7 +11,7 @@
 namespace slipwave::model {
 namespace {
 
-const char *const kTypeNames[] = {"free", "fixed", "absorbing", "traction", "velocity", "BoundaryType", "BC_", nullptr};
+const char *const kTypeNames[] = {"free", "fixed", "absorbing", "traction", "velocity", "freefield", "BoundaryType", "BC_", nullptr};
 
 // "x,y" -> {0,1}; an empty list means every component.
 PetscErrorCode parseComponents(MPI_Comm comm, const char *option, const char *list, PetscInt dim, std::vector<PetscInt> *components) {
@@ -157,11 +157,11 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
       char      value[64] = "";
       PetscBool set, known = PETSC_FALSE;
       PetscCall(PetscOptionsGetString(nullptr, prefix.c_str(), "-type", value, sizeof value, &set));
-      for (int i = 0; i < 5 && set && !known; ++i) PetscCall(PetscStrcasecmp(value, kTypeNames[i], &known));
-      PetscCheck(!set || known, comm, PETSC_ERR_USER_INPUT, "-%stype = %s; allowed: free, fixed, absorbing, traction, velocity", prefix.c_str(), value);
+      for (int i = 0; i < 6 && set && !known; ++i) PetscCall(PetscStrcasecmp(value, kTypeNames[i], &known));
+      PetscCheck(!set || known, comm, PETSC_ERR_USER_INPUT, "-%stype = %s; allowed: free, fixed, absorbing, traction, velocity, freefield", prefix.c_str(), value);
     }
     PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
-    PetscCall(PetscOptionsEList("-type", "boundary condition", "BoundaryConditionsCreate", kTypeNames, 5, kTypeNames[0], &type, nullptr));
+    PetscCall(PetscOptionsEList("-type", "boundary condition", "BoundaryConditionsCreate", kTypeNames, 6, kTypeNames[0], &type, nullptr));
     PetscCall(PetscOptionsString("-components", "components held (fixed, velocity): x,y[,z]; default all", "BoundaryConditionsCreate", comps, comps, sizeof comps,
                                  nullptr));
     PetscCall(PetscOptionsRealArray("-traction", "applied traction tx,ty[,tz] [Pa] (type traction)", "BoundaryConditionsCreate", traction, &ntraction, &traction_set));
@@ -199,9 +199,13 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
       bc->prescribed.push_back(std::move(pv));
       break;
     }
+    case BoundaryType::FreeField:
     case BoundaryType::Absorbing: {
-      bc->has_absorbing = true;
-      const bool is_input = bc->input_wave != "none" && name == bc->input_boundary;
+      // A free-field side has the same Lysmer dashpot (on v - v_ff; the v_ff part is the
+      // external force of model/free_field.cpp), and never the incident wave.
+      bc->has_absorbing  = true;
+      bc->has_free_field = bc->has_free_field || t == BoundaryType::FreeField;
+      const bool is_input = t == BoundaryType::Absorbing && bc->input_wave != "none" && name == bc->input_boundary;
       input_found         = input_found || is_input;
       PetscCall(VecGetArray(block_local, &ba));
       PetscCall(VecGetArray(input_local, &ia));

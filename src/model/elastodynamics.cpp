@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "slipwave/app/log_events.hpp"
+#include "slipwave/model/free_field.hpp"
 #include "slipwave/model/node_fields.hpp"
 #include "slipwave/physics/stable_time_step.hpp"
 #include "slipwave/time/central_difference.hpp"
@@ -170,6 +171,7 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(assembleMass(m));
   PetscCall(BoundaryConditionsCreate(m->dm, m->mesh.boundaries, m->materials, m->mass, &m->bc));
   PetscCall(assembleDampingBlocks(m));
+  if (m->bc.has_free_field) PetscCall(FreeFieldCreate(m->dm, m->bc, m->materials, m->rayleigh, m->bulk.minCellSize(), &m->free_field));
   PetscCall(VecDuplicate(m->mass, &m->f_internal));
   PetscCall(VecDuplicate(m->mass, &m->f_external));
   PetscCall(VecDuplicate(m->mass, &m->f_input));
@@ -184,6 +186,7 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
 PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
   PetscFunctionBeginUser;
   PetscCall(BoundaryConditionsDestroy(&m->bc));
+  PetscCall(FreeFieldDestroy(&m->free_field));
   for (auto &iface : m->interfaces) PetscCall(iface.Destroy());
   PetscCall(VecDestroy(&m->f_interface));
   for (Vec *v : {&m->mass, &m->inv_mass, &m->damping_blocks, &m->u_local, &m->f_local, &m->f_internal, &m->f_external, &m->f_input, &m->f_stiffness_damping})
@@ -215,6 +218,11 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   const double v_in = m->input_enabled && m->bc.input.active() && m->bc.input_wave != "none" ? m->bc.input.velocity(t) : 0.0;
   PetscCall(VecAXPBY(m->f_input, v_in, 0.0, m->bc.input_force));
   PetscCall(VecWAXPY(m->f_external, 1.0, m->bc.constant_force, m->f_input));
+  if (m->free_field) {
+    // The columns step here, once per new time; their force C v_ff + A t_ff at t is external.
+    PetscCall(FreeFieldUpdate(m->free_field, m->dm, ts, t, v_in, m->input_enabled));
+    PetscCall(VecAXPY(m->f_external, 1.0, m->free_field->force));
+  }
   PetscInt           n;
   PetscScalar       *acc;
   const PetscScalar *fe, *fi, *fd, *fif, *im, *mask;
@@ -279,9 +287,15 @@ PetscErrorCode ElastodynamicsStableStep(Elastodynamics *m, StableStep *step) {
   for (const auto &info : m->materials) vp_max = std::max(vp_max, info.elastic.vp);
   step->dt_cfl    = m->bulk.minCellSize() / vp_max;
   step->dt_limit  = step->dt_bulk;
+  // The free-field columns are 1D chains of the side's cells, so their Gershgorin bound is
+  // normally below the mesh's; checked anyway, since they step with the same dt.
+  step->dt_free_field = FreeFieldStableStep(m->free_field);
+  const bool free_field_governs = step->dt_free_field < step->dt_limit;
+  step->dt_limit = std::min(step->dt_limit, step->dt_free_field);
   const bool interfaces_matter = step->dt_bulk < step->dt_without_interfaces * (1 - 1e-12);
   step->governing = std::string(interfaces_matter ? "bulk stiffness and interface penalty springs" : "bulk stiffness") +
                     (m->rayleigh.beta > 0 ? " with stiffness-proportional damping" : "") + " (Gershgorin bound)";
+  if (free_field_governs) step->governing = "free-field column (Gershgorin bound)";
   PetscFunctionReturn(0);
 }
 

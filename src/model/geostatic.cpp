@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "slipwave/app/log_events.hpp"
+#include "slipwave/model/boundary_faces.hpp"
 
 namespace slipwave::model {
 namespace {
@@ -12,15 +13,51 @@ namespace {
 // geomechanics codes; the stage's speed is not sensitive to it between 0.5 and 0.9).
 constexpr double kLocalDamping = 0.8;
 
-// 1 on dofs free during the geostatic stage: free in the run and not on an absorbing node.
+// 1 on dofs free during the geostatic stage: free in the run, and not a component along the
+// normal of an absorbing or free-field boundary. Those boundaries carry no support in the
+// dynamic stage, so the stage holds them like rollers, normal component only (the usual
+// static supports: a base holds the vertical, a free-field side the horizontal, a corner
+// both), and their reactions then become constant loads. A free-field side must not be held
+// along the tangent: the free field moves freely up and down the side. A component counts as
+// normal where the face normal has a non-negligible part along it, so an inclined boundary
+// still holds all its in-plane components.
 PetscErrorCode geostaticMask(Elastodynamics *m, Vec mask) {
+  PetscSection s;
+  Vec          marks, local;
   PetscScalar *a;
   PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(m->dm, &s));
+  PetscCall(DMGetLocalVector(m->dm, &local));
+  PetscCall(VecZeroEntries(local));
+  PetscCall(VecGetArray(local, &a));
+  for (size_t b = 0; b < m->bc.names.size(); ++b) {
+    if (m->bc.types[b] != BoundaryType::Absorbing && m->bc.types[b] != BoundaryType::FreeField) continue;
+    std::vector<BoundaryFace> faces;
+    PetscCall(BoundaryFacesGet(m->dm, m->bc.names[b], &faces));
+    for (const BoundaryFace &f : faces)
+      for (PetscInt k = 0; k < f.nvert; ++k) {
+        PetscInt off;
+        PetscCall(PetscSectionGetOffset(s, f.vertices[k], &off));
+        for (PetscInt d = 0; d < m->dim; ++d)
+          if (std::fabs(f.normal[d]) > 1e-6) a[off + d] = 1;
+      }
+  }
+  PetscCall(VecRestoreArray(local, &a));
+  PetscCall(VecDuplicate(mask, &marks));
+  PetscCall(VecZeroEntries(marks));
+  PetscCall(DMLocalToGlobal(m->dm, local, ADD_VALUES, marks));
+  PetscCall(DMRestoreLocalVector(m->dm, &local));
+  PetscInt           n;
+  const PetscScalar *mk;
   PetscCall(VecCopy(m->bc.free_mask, mask));
+  PetscCall(VecGetLocalSize(mask, &n));
   PetscCall(VecGetArray(mask, &a));
-  for (PetscInt node : m->absorbing_nodes)
-    for (PetscInt d = 0; d < m->dim; ++d) a[node * m->dim + d] = 0;
+  PetscCall(VecGetArrayRead(marks, &mk));
+  for (PetscInt i = 0; i < n; ++i)
+    if (PetscRealPart(mk[i]) > 0) a[i] = 0;
+  PetscCall(VecRestoreArrayRead(marks, &mk));
   PetscCall(VecRestoreArray(mask, &a));
+  PetscCall(VecDestroy(&marks));
   PetscFunctionReturn(0);
 }
 

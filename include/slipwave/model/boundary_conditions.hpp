@@ -1,6 +1,8 @@
 // Boundary conditions and loads, read from options and assembled once into global vectors
 // in the displacement layout (or, for dashpot blocks, the dim x dim node-block layout):
-//   -bc_<boundary>_type free|fixed|absorbing|traction|velocity
+//   -bc_<boundary>_type free|fixed|absorbing|traction|velocity|freefield
+//     (freefield: a lateral side coupled to a 1D free-field column, see model/free_field.hpp;
+//      its Lysmer dashpot goes into absorbing_blocks here, the column's force is added by the RHS)
 //   -bc_<boundary>_components x,y[,z]   (fixed, velocity)
 //   -bc_<boundary>_traction tx,ty[,tz]  (traction) [Pa]
 //   -bc_<boundary>_stf ... (velocity: its history, see TimeFunction)
@@ -18,7 +20,7 @@
 
 namespace slipwave::model {
 
-enum class BoundaryType { Free, Fixed, Absorbing, Traction, Velocity };
+enum class BoundaryType { Free, Fixed, Absorbing, Traction, Velocity, FreeField };
 
 struct PrescribedVelocity {
   std::string  boundary;
@@ -40,7 +42,8 @@ struct BoundaryConditions {
   PetscInt                  input_component = 0;
   PetscReal                 gravity = 0;
   double                    gravity_direction[3] = {0, 0, 0}; // unit vector
-  bool                      has_absorbing = false;
+  bool                      has_absorbing = false;    // any dashpot (absorbing or freefield)
+  bool                      has_free_field = false;
 };
 
 PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &boundaries, const std::vector<RegionMaterialInfo> &materials, Vec mass,

@@ -18,12 +18,15 @@
 
 namespace slipwave::model {
 
+struct FreeField; // model/free_field.hpp
+
 struct StableStep {
   double omega_max_bulk = 0; // Gershgorin bound on the largest angular frequency [rad/s]
   double dt_bulk = 0;        // critical step of the bulk (with stiffness damping) [s]
   double dt_cfl = 0;         // h_min / vp_max, for comparison only [s]
   double dt_limit = 0;       // the limit a run must respect [s]
   double dt_without_interfaces = 0; // the bulk alone, to report what the penalty costs [s]
+  double dt_free_field = 1e300; // the free-field columns' own limit (normally above the bulk's) [s]
   std::string governing;     // which constraint sets dt_limit
 };
 
@@ -50,6 +53,7 @@ struct Elastodynamics {
   bool      input_enabled = true;       // off during the geostatic stage
   std::vector<double> initial_stress;   // 6 per local cell: the geostatic state, added to the output
   TS        ts = nullptr; // set by the driver: the RHS reads the half-step velocity from it
+  FreeField *free_field = nullptr; // free-field lateral columns (-bc_<side>_type freefield), or null
 };
 
 PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);

@@ -1,0 +1,96 @@
+// The free-field soil column of a lateral boundary (FLAC-style free-field boundary): a 1D
+// column per unit area, with nodes at the heights of the lateral boundary's nodes, that
+// carries the vertically propagating incident wave as if the model extended to infinity
+// sideways. Plain C++ (no PETSc), replicated on every rank.
+//
+// Discretisation, chosen so that a main-mesh column with rollers and this column give the
+// same motion to round-off:
+//  - segment e between heights z_e and z_{e+1} (length L_e) has the material of the
+//    main-mesh region next to it; lumped mass m_i = sum over adjacent segments rho L/2;
+//  - every component is an independent chain: horizontal components (0 .. dim-2) are shear
+//    motions with modulus mu (SV), the vertical one (dim-1, the last axis) has lambda + 2 mu
+//    (P); spring k_e = modulus / L_e. (A Q1/P1 main mesh gives exactly these nodal forces for
+//    a motion that depends only on height: the field is in the FE space and full Gauss
+//    quadrature integrates its energy exactly.)
+//  - base (node 0): Lysmer dashpot rho vs (horizontal) / rho vp (vertical) of the lowest
+//    segment, plus the incident-wave traction 2 rho c v_in(t) on the input component (the
+//    same equivalent force the main mesh's absorbing base receives); top free;
+//  - Rayleigh damping alpha M + beta K, treated as the main TS treats it: the nodal part
+//    (alpha, dashpot) centred, the stiffness part with the lagged half-step velocity;
+//  - time stepping: the velocity-Verlet central difference of the TS type "cd", with the
+//    same step h:
+//      v_{n+1/2} = v_n + h/2 a_n;  u_{n+1} = u_n + h v_{n+1/2}
+//      a* = (f_in(t_{n+1}) - K u_{n+1} - beta K v_{n+1/2}) / m
+//      (1 + h/2 D) v_{n+1} = v_{n+1/2} + h/2 a*;  a_{n+1} = a* - D v_{n+1},  D = c/m + alpha.
+//
+// Free-field stress of a vertically propagating wave (vertical axis z = last axis, u = u(z)):
+// the only strains are eps_xz = u_x'/2 (and eps_yz in 3D) for SV and eps_zz = u_z' for P, so
+//   tau_xz = mu u_x',  tau_yz = mu u_y',  sigma_zz = (lambda + 2 mu) u_z',
+//   sigma_xx = sigma_yy = lambda u_z' = lambda/(lambda + 2 mu) sigma_zz (lateral strain is zero),
+// and the other components vanish. The column returns it per segment (constant there, as in
+// the main mesh's cells), plus the stiffness-proportional viscous stress beta D:eps(v_{n+1/2}),
+// because the main mesh applies beta K v_{n+1/2} as an internal force as well.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "slipwave/physics/elastic_material.hpp"
+
+namespace slipwave::physics {
+
+class FreeFieldColumn {
+public:
+  // heights: strictly ascending node heights (node 0 is the base); materials: one per segment
+  // (heights.size() - 1). Returns "" or a sentence naming the problem.
+  std::string setup(int dim, const std::vector<double> &heights, const std::vector<ElasticMaterial> &materials, double alpha, double beta);
+  // The incident wave: particle-velocity component (0 .. dim-1) and its speed (vs for an S
+  // wave, vp for a P wave). Without a call the base only absorbs.
+  void setInput(int component, bool p_wave);
+
+  // State at rest at time t0; a_0 from the input velocity v_in(t0).
+  void start(double t0, double v_in0);
+  // One step of length h; v_in_new = v_in(t + h).
+  void step(double h, double v_in_new);
+
+  bool   started() const { return started_; }
+  double time() const { return t_; }
+  int    dim() const { return dim_; }
+  int    nodeCount() const { return (int)z_.size(); }
+  int    segmentCount() const { return (int)z_.size() - 1; }
+  double height(int node) const { return z_[node]; }
+  double displacement(int node, int c) const { return u_[node * dim_ + c]; }
+  double velocity(int node, int c) const { return v_[node * dim_ + c]; }
+  double acceleration(int node, int c) const { return a_[node * dim_ + c]; }
+  const ElasticMaterial &material(int segment) const { return mat_[segment]; }
+  // Stress of segment e (dim x dim, row-major): elastic at u_{n+1} plus beta times the
+  // viscous stress of v_{n+1/2}.
+  void segmentStress(int e, double *sigma) const;
+  // Node whose height is within tol of z, or -1.
+  int findNode(double z, double tol) const;
+  // Gershgorin bound on the column's highest angular frequency and its stable step (with
+  // the stiffness-proportional damping), for comparison with the main model's.
+  double omegaMax() const;
+  double stableStep() const;
+
+  // Full state for checkpoints: t, u, v, a, v_half.
+  std::vector<double> state() const;
+  bool                setState(const std::vector<double> &s);
+
+private:
+  void internalForce(const std::vector<double> &x, std::vector<double> &f) const; // K x
+  void nodalDamping(double s, double v_in);                                        // from a_star_ and v_
+
+  int                          dim_ = 2;
+  std::vector<double>          z_, mass_;
+  std::vector<ElasticMaterial> mat_;
+  std::vector<double>          k_; // per segment and component: modulus / L
+  double                       alpha_ = 0, beta_ = 0;
+  int                          input_component_ = -1;
+  double                       input_impedance_ = 0; // rho c of the base segment for the input
+  std::vector<double>          base_dashpot_;        // per component
+  std::vector<double>          u_, v_, a_, v_half_, a_star_, work_;
+  double                       t_ = 0;
+  bool                         started_ = false;
+};
+
+} // namespace slipwave::physics
