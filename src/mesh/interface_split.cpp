@@ -1,4 +1,5 @@
 #include "slipwave/mesh/interface_split.hpp"
+#include "slipwave/mesh/point_centroid.hpp"
 
 #include "slipwave/fem/element_kernels.hpp"
 #include "slipwave/mesh/mesh_builder.hpp"
@@ -49,21 +50,6 @@ std::string joinNames(const std::vector<std::string> &names) {
   std::string s;
   for (size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i];
   return s;
-}
-
-PetscErrorCode pointCentroid(DM dm, PetscInt p, PetscInt dim, double *x) {
-  PetscBool          is_dg;
-  PetscInt           n;
-  const PetscScalar *array;
-  PetscScalar       *coords = nullptr;
-  PetscFunctionBeginUser;
-  PetscCall(DMPlexGetCellCoordinates(dm, p, &is_dg, &n, &array, &coords));
-  for (PetscInt d = 0; d < dim; ++d) {
-    x[d] = 0;
-    for (PetscInt v = 0; v < n / dim; ++v) x[d] += PetscRealPart(coords[v * dim + d]) / (n / dim);
-  }
-  PetscCall(DMPlexRestoreCellCoordinates(dm, p, &is_dg, &n, &array, &coords));
-  PetscFunctionReturn(0);
 }
 
 } // namespace
@@ -443,8 +429,8 @@ PetscErrorCode InterfacePairsBuild(DM dm, const InterfaceSpec &spec, InterfacePa
     fem::faceLumpedWeights(shape, (int)dim, x, w);
     fem::faceNormal(shape, (int)dim, x, n);
     // Outward from the soil cell = towards the structure (interface-law.md §2).
-    PetscCall(pointCentroid(dm, supp[0], dim, xc));
-    PetscCall(pointCentroid(dm, f, dim, xf));
+    PetscCall(MeshPointCentroid(dm, supp[0], xc));
+    PetscCall(MeshPointCentroid(dm, f, xf));
     for (PetscInt d = 0; d < dim; ++d) dot += n[d] * (xf[d] - xc[d]);
     if (dot < 0)
       for (PetscInt d = 0; d < dim; ++d) n[d] = -n[d];

@@ -1,4 +1,5 @@
 #include "slipwave/mesh/mesh_builder.hpp"
+#include "slipwave/mesh/point_centroid.hpp"
 #include "slipwave/mesh/partition_metis.hpp"
 
 #include <algorithm>
@@ -27,23 +28,6 @@ std::vector<std::string> splitNames(const char *list) {
     if (!item.empty()) out.push_back(item);
   }
   return out;
-}
-
-PetscErrorCode cellCentroid(DM dm, PetscInt cell, PetscReal *centroid) {
-  PetscInt           dim, ncoords;
-  const PetscScalar *array;
-  PetscScalar       *coords = nullptr;
-  PetscBool          is_dg;
-  PetscFunctionBeginUser;
-  PetscCall(DMGetCoordinateDim(dm, &dim));
-  PetscCall(DMPlexGetCellCoordinates(dm, cell, &is_dg, &ncoords, &array, &coords));
-  const PetscInt nv = ncoords / dim;
-  for (PetscInt d = 0; d < dim; ++d) {
-    centroid[d] = 0;
-    for (PetscInt v = 0; v < nv; ++v) centroid[d] += PetscRealPart(coords[v * dim + d]) / nv;
-  }
-  PetscCall(DMPlexRestoreCellCoordinates(dm, cell, &is_dg, &ncoords, &array, &coords));
-  PetscFunctionReturn(0);
 }
 
 PetscErrorCode broadcastFromRoot(MPI_Comm comm, std::string *text) {
@@ -92,7 +76,7 @@ PetscErrorCode labelBoxRegions(MPI_Comm comm, DM dm, const std::vector<std::stri
   std::string           problem;
   for (PetscInt c = c_start; c < c_end; ++c) {
     PetscReal x[3];
-    PetscCall(cellCentroid(dm, c, x));
+    PetscCall(MeshPointCentroid(dm, c, x));
     PetscInt region = fill_region;
     for (size_t r = 0; r < regions.size(); ++r) {
       if (bounds[r].empty()) continue;
@@ -159,7 +143,7 @@ PetscErrorCode labelBoxSides(DM dm, const BoxSpec &box, std::vector<std::string>
     PetscCall(DMPlexGetSupportSize(dm, f, &support_size));
     if (support_size != 1) continue;
     PetscReal x[3];
-    PetscCall(cellCentroid(dm, f, x));
+    PetscCall(MeshPointCentroid(dm, f, x));
     for (PetscInt d = 0; d < dim; ++d) {
       const PetscReal tol = 1e-9 * (box.upper[d] - box.lower[d]);
       if (PetscAbsReal(x[d] - box.lower[d]) < tol) PetscCall(DMLabelSetValue(labels[2 * d], f, 1));

@@ -2,26 +2,9 @@
 
 #include "slipwave/fem/element_kernels.hpp"
 #include "slipwave/mesh/mesh_builder.hpp"
+#include "slipwave/mesh/point_centroid.hpp"
 
 namespace slipwave::model {
-namespace {
-
-PetscErrorCode pointCentroid(DM dm, PetscInt p, PetscInt dim, double *x) {
-  PetscBool          is_dg;
-  PetscInt           n;
-  const PetscScalar *array;
-  PetscScalar       *coords = nullptr;
-  PetscFunctionBeginUser;
-  PetscCall(DMPlexGetCellCoordinates(dm, p, &is_dg, &n, &array, &coords));
-  for (PetscInt d = 0; d < dim; ++d) {
-    x[d] = 0;
-    for (PetscInt v = 0; v < n / dim; ++v) x[d] += PetscRealPart(coords[v * dim + d]) / (n / dim);
-  }
-  PetscCall(DMPlexRestoreCellCoordinates(dm, p, &is_dg, &n, &array, &coords));
-  PetscFunctionReturn(0);
-}
-
-} // namespace
 
 PetscErrorCode BoundaryFacesGet(DM dm, const std::string &name, std::vector<BoundaryFace> *faces) {
   DMLabel  label, region_label;
@@ -82,8 +65,8 @@ PetscErrorCode BoundaryFacesGet(DM dm, const std::string &name, std::vector<Boun
       const PetscInt *support;
       PetscCall(DMPlexGetSupport(dm, f, &support));
       double xc[3], xf[3], dot = 0;
-      PetscCall(pointCentroid(dm, support[0], dim, xc));
-      PetscCall(pointCentroid(dm, f, dim, xf));
+      PetscCall(mesh::MeshPointCentroid(dm, support[0], xc));
+      PetscCall(mesh::MeshPointCentroid(dm, f, xf));
       for (PetscInt d = 0; d < dim; ++d) dot += face.normal[d] * (xf[d] - xc[d]);
       if (dot < 0)
         for (PetscInt d = 0; d < dim; ++d) face.normal[d] = -face.normal[d];
