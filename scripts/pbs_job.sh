@@ -86,44 +86,7 @@ else
 fi
 RUN=("${LAUNCH[@]}" "$BIN" -options_file "$SCENE" ${EXTRA_ARGS[@]+"${EXTRA_ARGS[@]}"})
 
-# Provenance: the scene, the version, where and how it ran.
-cp "$SCENE" "$OUT/"
-{
-  echo "date:      $(date -Iseconds)"
-  echo "mode:      $MODE (job $JOBID)"
-  echo "host:      $(hostname)"
-  echo "nodes:     $(if [ -n "${PBS_NODEFILE:-}" ] && [ -f "$PBS_NODEFILE" ]; then sort -u "$PBS_NODEFILE" | tr '\n' ' '; else hostname; fi)"
-  echo "user:      ${USER:-$(id -un)}"
-  echo "ranks:     $NP"
-  echo "scene:     $SCENE (copied as $(basename "$SCENE"))"
-  echo "extra:     $EXTRA"
-  echo "slipwave:  $(git -C "$SLIPWAVE_HOME" describe --always --dirty --tags 2>/dev/null || echo 'unknown (not a git checkout)')"
-  echo "binary:    $BIN"
-  echo "command:   ${RUN[*]} -output_dir $OUT"
-  echo "modules:"
-  if type module >/dev/null 2>&1; then module list 2>&1 | sed 's/^/  /'; else echo "  (no module command)"; fi
-} >"$OUT/provenance.txt"
-echo "pbs_job.sh: $MODE run, job $JOBID, $NP ranks, scene $SCENE, output $OUT"
-
-# Dry run: the report (mesh, materials, points per wavelength, stable step) without stepping.
-if ! "${RUN[@]}" -dry_run -output_dir "$OUT" >"$OUT/dry_run.txt" 2>&1; then
-  cat "$OUT/dry_run.txt" >&2
-  die "the dry run failed (report in $OUT/dry_run.txt)"
-fi
-grep -E 'stable step|time step' "$OUT/dry_run.txt" || true
-
-# The run. Its output also goes to OUT/run.log.
-set +e
-"${RUN[@]}" -output_dir "$OUT" 2>&1 | tee "$OUT/run.log"
-rc=${PIPESTATUS[0]}
-set -e
-[ "$rc" -eq 0 ] || echo "pbs_job.sh: the run failed (exit $rc); see $OUT/run.log" >&2
-
-# Plots (also of a run that stopped early, from what it wrote).
-if [ -f "$OUT/energy.csv" ] && [ -x /usr/bin/python3 ] && /usr/bin/python3 -c 'import matplotlib, numpy, h5py' 2>/dev/null; then
-  /usr/bin/python3 "$SLIPWAVE_HOME/scripts/plot_results.py" "$OUT" || echo "pbs_job.sh: warning: plotting failed" >&2
-else
-  echo "pbs_job.sh: no plots (no energy.csv, or /usr/bin/python3 without matplotlib/numpy/h5py)"
-fi
-echo "pbs_job.sh: output in $OUT (open volume.xmf and interface_<name>.xmf in ParaView)"
-exit "$rc"
+SELF=pbs_job.sh
+NODES=$(if [ -n "${PBS_NODEFILE:-}" ] && [ -f "$PBS_NODEFILE" ]; then sort -u "$PBS_NODEFILE" | tr '\n' ' '; else hostname; fi)
+# shellcheck source=scripts/job_run.sh
+. "$SLIPWAVE_HOME/scripts/job_run.sh"
