@@ -110,6 +110,10 @@ PetscErrorCode GeostaticStage(Elastodynamics *m, const GeostaticOptions &o, doub
   const double beta = m->rayleigh.beta;
   m->rayleigh.beta  = 0;
 
+  // Where the damping force opposes the velocity it adds up to alpha |f| to the unbalanced
+  // force: the effective stiffness grows by 1 + alpha, so the step shrinks by sqrt(1 + alpha)
+  // to stay inside the stability limit (the stage is pseudo-time; only the end state counts).
+  dt /= std::sqrt(1.0 + kLocalDamping);
   PetscCall(ElastodynamicsRHS(nullptr, 0.0, u, a, m));
   double   ratio = 1;
   PetscInt step  = 0;
