@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "slipwave/model/free_field.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 namespace slipwave::app {
@@ -79,7 +80,7 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
   std::vector<double> samples;
   s.stations->saveRecords(&samples);
   const PetscInt header[kHeader] = {kMagic, kVersion, size, s.model->dim, step, (PetscInt)s.model->interfaces.size(), (PetscInt)s.frame_times->size(),
-                                    (PetscInt)!s.model->initial_stress.empty(), 0};
+                                    (PetscInt)!s.model->initial_stress.empty(), s.model->free_field ? (PetscInt)s.model->free_field->sides.size() : 0};
   PetscCall(PetscViewerBinaryWrite(viewer, header, kHeader, PETSC_INT));
   std::vector<double> scalars = {time, dt, *s.next_output};
   for (double x : ledgerArray(*s.ledger)) scalars.push_back(x);
@@ -94,6 +95,13 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
     PetscCall(viewLocalArray(comm, state, viewer));
   }
   PetscCall(viewLocalArray(comm, samples, viewer));
+  // The free-field columns are replicated on every rank: rank 0's copy is the state.
+  for (PetscInt k = 0; k < header[8]; ++k) {
+    const std::vector<double> column = s.model->free_field->sides[k].column.state();
+    const PetscInt            n      = (PetscInt)column.size();
+    PetscCall(PetscViewerBinaryWrite(viewer, &n, 1, PETSC_INT));
+    PetscCall(PetscViewerBinaryWrite(viewer, column.data(), n, PETSC_DOUBLE));
+  }
   PetscCall(PetscViewerDestroy(&viewer));
   if (rank == 0) PetscCheck(std::rename(tmp.c_str(), path.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s", tmp.c_str(), path.c_str());
   PetscCallMPI(MPI_Barrier(comm));
@@ -156,6 +164,17 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
   std::vector<double> records;
   PetscCall(loadLocalArray(comm, samples, viewer, &records));
   s.stations->loadRecords(records.data(), records.size());
+  const PetscInt sides = s.model->free_field ? (PetscInt)s.model->free_field->sides.size() : 0;
+  PetscCheck(header[8] == sides, comm, PETSC_ERR_USER_INPUT, "-restart = %s has %" PetscInt_FMT " free-field sides, this scene %" PetscInt_FMT "; allowed: the scene options of the run that wrote it",
+             path.c_str(), header[8], sides);
+  for (PetscInt k = 0; k < sides; ++k) {
+    PetscInt n;
+    PetscCall(PetscViewerBinaryRead(viewer, &n, 1, nullptr, PETSC_INT));
+    std::vector<double> column(n);
+    PetscCall(PetscViewerBinaryRead(viewer, column.data(), n, nullptr, PETSC_DOUBLE));
+    PetscCheck(s.model->free_field->sides[k].column.setState(column), comm, PETSC_ERR_USER_INPUT,
+               "-restart = %s: free-field column %" PetscInt_FMT " does not fit this mesh; allowed: the scene options of the run that wrote it", path.c_str(), k);
+  }
   PetscCall(PetscViewerDestroy(&viewer));
   PetscFunctionReturn(0);
 }

@@ -35,3 +35,14 @@ PY
 # A restart on another number of ranks is refused with one clear line.
 if $MPIEXEC -n 2 $SW $O -restart "$WORK/B/checkpoint.bin" -output_dir "$WORK/D" 2> "$WORK/D.err" > /dev/null; then echo "2-rank restart of a 1-rank checkpoint accepted"; exit 1; fi
 grep -q "^slipwave: error: -restart = .* was written on 1 ranks; allowed: restart on the same number of ranks" "$WORK/D.err"
+# The same with free-field lateral boundaries: the replicated columns are part of the state.
+O="-options_file config/scenes/free_field_site.yaml -ts_max_time 0.6 -output_interval 0.1 -progress_interval 100"
+$SW $O -output_dir "$WORK/FC" > "$WORK/FC.log"
+steps=$(tail -1 "$WORK/FC/energy.csv" | cut -d, -f1)
+half=$((steps / 2))
+$SW $O -ts_max_steps $half -checkpoint_interval $half -output_dir "$WORK/FA" > "$WORK/FA.log"
+cp -r "$WORK/FA" "$WORK/FB"
+$SW $O -restart "$WORK/FB/checkpoint.bin" -output_dir "$WORK/FB" | grep -E "^restart|^done"
+cmp "$WORK/FB/energy.csv" "$WORK/FC/energy.csv"
+for f in "$WORK"/FC/stations/*.csv; do cmp "$f" "$WORK/FB/stations/$(basename "$f")"; done
+echo "free-field restart: energy.csv and $(ls "$WORK"/FC/stations/*.csv | wc -l) station files identical"
