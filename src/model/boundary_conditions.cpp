@@ -11,7 +11,8 @@
 namespace slipwave::model {
 namespace {
 
-const char *const kTypeNames[] = {"free", "fixed", "absorbing", "traction", "velocity", "freefield", "BoundaryType", "BC_", nullptr};
+const char *const kTypeNames[] = {"free", "fixed", "absorbing", "traction", "velocity", "freefield", "tied", "BoundaryType", "BC_", nullptr};
+constexpr int     kTypeCount   = 7;
 
 // "x,y" -> {0,1}; an empty list means every component.
 PetscErrorCode parseComponents(MPI_Comm comm, const char *option, const char *list, PetscInt dim, std::vector<PetscInt> *components) {
@@ -151,17 +152,21 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
     PetscInt          ntraction = dim;
     PetscBool         traction_set;
     TimeFunction      history;
+    char              tie_with[256] = "";
     {
       // PetscOptionsEList stops an unknown value with PETSc's multi-line traceback: check it
       // first so the user gets the one-line error.
       char      value[64] = "";
       PetscBool set, known = PETSC_FALSE;
       PetscCall(PetscOptionsGetString(nullptr, prefix.c_str(), "-type", value, sizeof value, &set));
-      for (int i = 0; i < 6 && set && !known; ++i) PetscCall(PetscStrcasecmp(value, kTypeNames[i], &known));
-      PetscCheck(!set || known, comm, PETSC_ERR_USER_INPUT, "-%stype = %s; allowed: free, fixed, absorbing, traction, velocity, freefield", prefix.c_str(), value);
+      for (int i = 0; i < kTypeCount && set && !known; ++i) PetscCall(PetscStrcasecmp(value, kTypeNames[i], &known));
+      PetscCheck(!set || known, comm, PETSC_ERR_USER_INPUT, "-%stype = %s; allowed: free, fixed, absorbing, traction, velocity, freefield, tied", prefix.c_str(), value);
     }
     PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
-    PetscCall(PetscOptionsEList("-type", "boundary condition", "BoundaryConditionsCreate", kTypeNames, 6, kTypeNames[0], &type, nullptr));
+    PetscCall(PetscOptionsEList("-type", "boundary condition", "BoundaryConditionsCreate", kTypeNames, kTypeCount, kTypeNames[0], &type, nullptr));
+    if ((BoundaryType)type == BoundaryType::Tied)
+      PetscCall(PetscOptionsString("-tie_with", "the opposite side whose facing nodes move with this one's (type tied)", "BoundaryConditionsCreate", tie_with, tie_with,
+                                   sizeof tie_with, nullptr));
     PetscCall(PetscOptionsString("-components", "components held (fixed, velocity): x,y[,z]; default all", "BoundaryConditionsCreate", comps, comps, sizeof comps,
                                  nullptr));
     PetscCall(PetscOptionsRealArray("-traction", "applied traction tx,ty[,tz] [Pa] (type traction)", "BoundaryConditionsCreate", traction, &ntraction, &traction_set));
@@ -180,6 +185,15 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
                ntraction, dim);
     switch (t) {
     case BoundaryType::Free: break;
+    case BoundaryType::Tied: {
+      const std::string other = tie_with;
+      PetscCheck(std::find(boundaries.begin(), boundaries.end(), other) != boundaries.end() && other != name, comm, PETSC_ERR_USER_INPUT,
+                 "-%stie_with = '%s'; allowed: another boundary of the mesh (the opposite side)", prefix.c_str(), tie_with);
+      bool seen = false;
+      for (const auto &p : bc->tied_pairs) seen = seen || (p.first == other && p.second == name);
+      if (!seen) bc->tied_pairs.emplace_back(name, other);
+      break;
+    }
     case BoundaryType::Fixed: PetscCall(markFaceDofs(dm, faces, components, constrained)); break;
     case BoundaryType::Traction:
       PetscCall(VecGetArray(force_local, &fa));

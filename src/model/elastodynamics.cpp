@@ -6,6 +6,7 @@
 
 #include "slipwave/app/log_events.hpp"
 #include "slipwave/model/free_field.hpp"
+#include "slipwave/model/lateral_tie.hpp"
 #include "slipwave/model/node_fields.hpp"
 #include "slipwave/physics/stable_time_step.hpp"
 #include "slipwave/time/central_difference.hpp"
@@ -171,6 +172,7 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(assembleMass(m));
   PetscCall(BoundaryConditionsCreate(m->dm, m->mesh.boundaries, m->materials, m->mass, &m->bc));
   PetscCall(assembleDampingBlocks(m));
+  PetscCall(LateralTieCreate(m->dm, m->bc, m->mass, &m->tie));
   if (m->bc.has_free_field) PetscCall(FreeFieldCreate(m->dm, m->bc, m->materials, m->rayleigh, m->bulk.minCellSize(), &m->free_field));
   PetscCall(VecDuplicate(m->mass, &m->f_internal));
   PetscCall(VecDuplicate(m->mass, &m->f_external));
@@ -187,6 +189,7 @@ PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
   PetscFunctionBeginUser;
   PetscCall(BoundaryConditionsDestroy(&m->bc));
   PetscCall(FreeFieldDestroy(&m->free_field));
+  PetscCall(LateralTieDestroy(&m->tie));
   for (auto &iface : m->interfaces) PetscCall(iface.Destroy());
   PetscCall(VecDestroy(&m->f_interface));
   for (Vec *v : {&m->mass, &m->inv_mass, &m->damping_blocks, &m->u_local, &m->f_local, &m->f_internal, &m->f_external, &m->f_input, &m->f_stiffness_damping})
@@ -243,6 +246,7 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscCall(VecRestoreArrayRead(m->f_external, &fe));
   PetscCall(VecRestoreArray(a, &acc));
   for (const PrescribedVelocity &p : m->bc.prescribed) PetscCall(VecAXPY(a, p.history.acceleration(t), p.dofs));
+  PetscCall(LateralTieApply(m->tie, a));
   m->rhs_time = t;
   PetscCall(PetscLogEventEnd(app::event_boundary, 0, 0, 0, 0));
   PetscFunctionReturn(0);

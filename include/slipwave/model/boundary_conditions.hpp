@@ -1,6 +1,7 @@
 // Boundary conditions and loads, read from options and assembled once into global vectors
 // in the displacement layout (or, for dashpot blocks, the dim x dim node-block layout):
-//   -bc_<boundary>_type free|fixed|absorbing|traction|velocity|freefield
+//   -bc_<boundary>_type free|fixed|absorbing|traction|velocity|freefield|tied
+//     (tied: with -bc_<boundary>_tie_with <opposite side>, nodes facing each other move together;
 //     (freefield: a lateral side coupled to a 1D free-field column, see model/free_field.hpp;
 //      its Lysmer dashpot goes into absorbing_blocks here, the column's force is added by the RHS)
 //   -bc_<boundary>_components x,y[,z]   (fixed, velocity)
@@ -20,7 +21,7 @@
 
 namespace slipwave::model {
 
-enum class BoundaryType { Free, Fixed, Absorbing, Traction, Velocity, FreeField };
+enum class BoundaryType { Free, Fixed, Absorbing, Traction, Velocity, FreeField, Tied };
 
 struct PrescribedVelocity {
   std::string  boundary;
@@ -42,6 +43,7 @@ struct BoundaryConditions {
   PetscInt                  input_component = 0;
   PetscReal                 gravity = 0;
   double                    gravity_direction[3] = {0, 0, 0}; // unit vector
+  std::vector<std::pair<std::string, std::string>> tied_pairs; // opposite sides moving together
   bool                      has_absorbing = false;    // any dashpot (absorbing or freefield)
   bool                      has_free_field = false;
 };

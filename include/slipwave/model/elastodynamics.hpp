@@ -18,7 +18,8 @@
 
 namespace slipwave::model {
 
-struct FreeField; // model/free_field.hpp
+struct FreeField;  // model/free_field.hpp
+struct LateralTie; // model/lateral_tie.hpp
 
 struct StableStep {
   double omega_max_bulk = 0; // Gershgorin bound on the largest angular frequency [rad/s]
@@ -53,7 +54,8 @@ struct Elastodynamics {
   bool      input_enabled = true;       // off during the geostatic stage
   std::vector<double> initial_stress;   // 6 per local cell: the geostatic state, added to the output
   TS        ts = nullptr; // set by the driver: the RHS reads the half-step velocity from it
-  FreeField *free_field = nullptr; // free-field lateral columns (-bc_<side>_type freefield), or null
+  FreeField  *free_field = nullptr; // free-field lateral columns (-bc_<side>_type freefield), or null
+  LateralTie *tie        = nullptr; // tied lateral sides (-bc_<side>_type tied), or null
 };
 
 PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);

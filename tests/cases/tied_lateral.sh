@@ -1,0 +1,38 @@
+# Tied lateral boundaries (issue 5 item 2, "optional ... tied lateral boundaries"): nodes
+# facing each other on the left and right sides move together (a periodic column).
+# 1. A narrow layered site (site_response_2d, 10 cells wide) under a vertically incident SV
+#    wave: with tied sides it must equal the same model with rollers (u_y = 0 on the sides),
+#    which is exact for a 1D wave: to 1e-10 of each quantity's peak.
+# 2. With a footing the motion is no longer 1D: the stations at equal heights on the two
+#    sides must still record the same motion (to 1e-12 of the peak: the pair gets one
+#    acceleration), and the energy balance must close to 1e-9: the tie forces are equal and
+#    opposite on nodes moving together, so they do no work and the ledger need not book them.
+# 3. The same on 2 ranks (pairs split across ranks): stations equal to 1 rank to 1e-10.
+set -eu
+. tests/tools/lib.sh
+site="-options_file config/scenes/site_response_2d.yaml -mesh_box_faces 10,54 -mesh_box_upper 14.925,30 -ts_max_time 2 -output_fields 0 -progress_interval 100"
+st="-station_coordinates 0,30,14.925,30,7.4625,30,0,10,14.925,10 -station_names left,right,centre,left10,right10"
+tied="-bc_left_type tied -bc_left_tie_with right -bc_right_type tied -bc_right_tie_with left"
+$SW $site $st -output_dir "$WORK/rollers" > /dev/null
+$SW $site $st $tied -output_dir "$WORK/tied" > /dev/null
+$CHECK stations-equal "$WORK/rollers" "$WORK/tied" --names left,right,centre,left10,right10 --tol 1e-10
+foot="-regions rock,soil,air,block -region_air_box 0,14.925,28.5,30 -region_block_box 4.4,10.5,28.5,30 -void_regions air -material_block_rho 2400
+ -material_block_vp 3000 -material_block_vs 1800 -interfaces base -interface_base_regions soil,block -input_amplitude 0.5"
+st2="-station_coordinates 0,28.5,14.925,28.5,0,10,14.925,10 -station_names left,right,left10,right10"
+$SW $site $tied $foot $st2 -output_dir "$WORK/footing" > /dev/null
+$PY - "$WORK/footing" <<'PY'
+import sys
+import numpy as np
+d = sys.argv[1]
+worst = 0.0
+for a, b in (("left", "right"), ("left10", "right10")):
+    x = np.genfromtxt(f"{d}/stations/{a}.csv", delimiter=",", names=True)
+    y = np.genfromtxt(f"{d}/stations/{b}.csv", delimiter=",", names=True)
+    for c in x.dtype.names[1:]:
+        worst = max(worst, np.abs(x[c] - y[c]).max() / max(np.abs(x[c]).max(), 1e-300))
+print(f"footing: facing stations differ by {worst:.2e} of the peak (bound 1e-12)")
+sys.exit(0 if worst <= 1e-12 else 1)
+PY
+$CHECK energy "$WORK/footing/energy.csv" --max-error 1e-9
+$MPIEXEC -n 2 $SW $site $tied $foot $st2 -output_dir "$WORK/footing2" > /dev/null
+$CHECK stations-equal "$WORK/footing" "$WORK/footing2" --names left,right,left10,right10 --tol 1e-10
