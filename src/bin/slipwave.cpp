@@ -3,7 +3,6 @@
 
 #include "slipwave/app/errors.hpp"
 #include "slipwave/app/simulation.hpp"
-#include "slipwave/mesh/partition_metis.hpp"
 
 static const char help[] = "slipwave: explicit elastodynamics on PETSc for seismic soil-structure interaction.\n"
                            "Options come from the command line and option files (-options_file scene.yaml).\n";
@@ -12,7 +11,6 @@ int main(int argc, char **argv) {
   PetscErrorCode ierr = PetscInitialize(&argc, &argv, nullptr, help);
   if (ierr) return 1;
   ierr = slipwave::app::ErrorsPushUserInputHandler("slipwave");
-  if (!ierr) ierr = slipwave::mesh::PartitionerRegisterMetis();
   if (!ierr) ierr = slipwave::app::SimulationRun(PETSC_COMM_WORLD);
   const PetscErrorCode fin = PetscFinalize();
   return (ierr || fin) ? 1 : 0;

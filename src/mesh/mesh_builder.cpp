@@ -394,8 +394,10 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   PetscPartitioner part;
   DM               dist = nullptr;
   PetscCall(DMPlexGetPartitioner(serial, &part));
-  // METIS is the default (this PETSc has none of its own; slipwave registers it); the user can
-  // still pick another with -petscpartitioner_type.
+  // METIS is the default (this PETSc has none of its own; slipwave registers it, here, so every
+  // program that builds a mesh has it); the user can still pick another with
+  // -petscpartitioner_type.
+  PetscCall(PartitionerRegisterMetis());
   PetscCall(PetscPartitionerSetType(part, kPartitionerMetis));
   PetscCall(PetscPartitionerSetFromOptions(part));
   PetscPartitionerType part_type;

@@ -98,22 +98,6 @@ PetscErrorCode assembleDampingBlocks(Elastodynamics *m) {
   PetscFunctionReturn(0);
 }
 
-// Global f = K x from a global x.
-PetscErrorCode stiffnessTimes(Elastodynamics *m, Vec x, Vec f) {
-  const PetscScalar *ul;
-  PetscScalar       *fl;
-  PetscFunctionBeginUser;
-  PetscCall(DMGlobalToLocal(m->dm, x, INSERT_VALUES, m->u_local));
-  PetscCall(VecZeroEntries(m->f_local));
-  PetscCall(VecGetArrayRead(m->u_local, &ul));
-  PetscCall(VecGetArray(m->f_local, &fl));
-  m->bulk.addStiffnessTimes(ul, fl);
-  PetscCall(VecRestoreArray(m->f_local, &fl));
-  PetscCall(VecRestoreArrayRead(m->u_local, &ul));
-  PetscCall(VecZeroEntries(f));
-  PetscCall(DMLocalToGlobal(m->dm, m->f_local, ADD_VALUES, f));
-  PetscFunctionReturn(0);
-}
 
 // The penalty `auto`: the interface as stiff as factor x one layer of the softer adjacent
 // material one cell thick, E = factor (lambda + 2 mu)/h, G = factor mu/h (h: the smallest
@@ -202,11 +186,11 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   auto *m = static_cast<Elastodynamics *>(ctx);
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(app::event_bulk_force, 0, 0, 0, 0));
-  PetscCall(stiffnessTimes(m, u, m->f_internal));
+  PetscCall(ElastodynamicsStiffnessTimes(m, u, m->f_internal));
   if (m->rayleigh.beta > 0) {
     Vec v_half;
     PetscCall(time::CentralDifferenceGetHalfStepVelocity(ts, &v_half));
-    PetscCall(stiffnessTimes(m, v_half, m->f_stiffness_damping));
+    PetscCall(ElastodynamicsStiffnessTimes(m, v_half, m->f_stiffness_damping));
     PetscCall(VecScale(m->f_stiffness_damping, m->rayleigh.beta));
   }
   PetscCall(PetscLogEventEnd(app::event_bulk_force, 0, 0, 0, 0));
@@ -315,6 +299,22 @@ PetscErrorCode ElastodynamicsSetInitialStress(Elastodynamics *m, Vec u) {
   PetscCall(VecGetArrayRead(m->u_local, &ul));
   m->bulk.cellStress(ul, m->initial_stress.data());
   PetscCall(VecRestoreArrayRead(m->u_local, &ul));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ElastodynamicsStiffnessTimes(Elastodynamics *m, Vec x, Vec f) {
+  const PetscScalar *ul;
+  PetscScalar       *fl;
+  PetscFunctionBeginUser;
+  PetscCall(DMGlobalToLocal(m->dm, x, INSERT_VALUES, m->u_local));
+  PetscCall(VecZeroEntries(m->f_local));
+  PetscCall(VecGetArrayRead(m->u_local, &ul));
+  PetscCall(VecGetArray(m->f_local, &fl));
+  m->bulk.addStiffnessTimes(ul, fl);
+  PetscCall(VecRestoreArray(m->f_local, &fl));
+  PetscCall(VecRestoreArrayRead(m->u_local, &ul));
+  PetscCall(VecZeroEntries(f));
+  PetscCall(DMLocalToGlobal(m->dm, m->f_local, ADD_VALUES, f));
   PetscFunctionReturn(0);
 }
 

@@ -61,6 +61,8 @@ struct Elastodynamics {
 PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);
 PetscErrorCode ElastodynamicsDestroy(Elastodynamics *model);
 PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx);
+// Global f = K x by the element loop (ghost exchange included), as the RHS computes it.
+PetscErrorCode ElastodynamicsStiffnessTimes(Elastodynamics *model, Vec x, Vec f);
 PetscErrorCode ElastodynamicsStableStep(Elastodynamics *model, StableStep *step);
 // Stores the cell stresses of the global displacement u as the initial stress.
 PetscErrorCode ElastodynamicsSetInitialStress(Elastodynamics *model, Vec u);
