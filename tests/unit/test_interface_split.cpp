@@ -15,7 +15,7 @@
 #include "slipwave/mesh/partition_metis.hpp"
 #include "slipwave/model/node_fields.hpp"
 
-#include "unit_check.hpp"
+#include "petsc_test_main.hpp"
 
 #include <petscdmplex.h>
 
@@ -795,12 +795,4 @@ PetscErrorCode Run(bool distribute) {
 
 } // namespace
 
-int main(int argc, char **argv) {
-  PetscBool distribute = PETSC_FALSE;
-  PetscCall(PetscInitialize(&argc, &argv, nullptr, nullptr));
-  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-distribute", &distribute, nullptr));
-  const PetscErrorCode ierr = Run(distribute == PETSC_TRUE);
-  unit::check(ierr == 0, "no PETSc error");
-  PetscCall(PetscFinalize());
-  return unit::failures();
-}
+int main(int argc, char **argv) { return unit::runPetscTest(argc, argv, Run); }
