@@ -1,6 +1,8 @@
 # slipwave build. `make run` and `make test` install missing Debian packages first
 # (scripts/install-deps.sh), then re-enter make so pkg-config sees the installed PETSc.
 BUILD    ?= build
+# Parallel compilation in the re-entered make (the recipes below are independent).
+JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 comma    := ,
 CXX      := mpicxx
 PETSC_CFLAGS := $(shell pkg-config --cflags PETSc 2>/dev/null) $(shell pkg-config --cflags hdf5-openmpi 2>/dev/null)
@@ -25,7 +27,7 @@ LIB      := $(BUILD)/libslipwave.a
 # Keep the objects of the programs (make would delete them as intermediates and relink).
 .SECONDARY:
 all: deps
-	@$(MAKE) --no-print-directory build-only
+	@$(MAKE) --no-print-directory -j$(JOBS) build-only
 
 deps:
 	@bash scripts/install-deps.sh
@@ -33,7 +35,7 @@ deps:
 build-only: $(BINS) $(UNITS) $(BENCHES)
 
 run: deps
-	@$(MAKE) --no-print-directory run-only
+	@$(MAKE) --no-print-directory -j$(JOBS) build-only && $(MAKE) --no-print-directory run-only
 
 run-only: build-only
 	mpiexec $(MPIEXEC_FLAGS) -n $(NP) $(BUILD)/slipwave -options_file config/scenes/default.yaml -output_dir $(BUILD)/run/default
@@ -41,13 +43,13 @@ run-only: build-only
 	@echo "Open $(BUILD)/run/default/volume.xmf and interface_base.xmf in ParaView (default reader); plots in $(BUILD)/run/default/plots/"
 
 test: deps
-	@$(MAKE) --no-print-directory test-only
+	@$(MAKE) --no-print-directory -j$(JOBS) build-only && $(MAKE) --no-print-directory test-only
 
 test-only: build-only
 	@bash tests/run_tests.sh
 
 bench: deps
-	@$(MAKE) --no-print-directory bench-only
+	@$(MAKE) --no-print-directory -j$(JOBS) build-only && $(MAKE) --no-print-directory bench-only
 
 bench-only: build-only
 	@bash bench/run_bench.sh
