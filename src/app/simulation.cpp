@@ -414,8 +414,7 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
         PetscReal              dt_geo;
         PetscCall(TSGetTimeStep(ts, &dt_geo));
         PetscCall(model::GeostaticStage(&r->model, r->geostatic, dt_geo, &g));
-        PetscCall(PetscPrintf(comm, "geostatic stage: at rest after %" PetscInt_FMT " relaxation steps (unbalanced-force ratio %.2e < %.1e) in %.2f s wall\n", g.steps,
-                              g.ratio, (double)r->geostatic.tolerance, g.wall));
+        PetscCall(PetscPrintf(comm, "%s\n", model::GeostaticReportLine(r->geostatic, g).c_str()));
       }
       PetscInt           n;
       PetscScalar       *va;
@@ -471,6 +470,7 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
     PetscCall(VecDestroy(&v));
   }
   PetscCall(TSDestroy(&ts));
+  PetscCall(model::GeostaticOptionsDestroy(&r->geostatic));
   PetscCall(r->stations.Destroy());
   PetscCall(model::ElastodynamicsDestroy(&r->model));
   delete r;
