@@ -67,7 +67,16 @@ PetscErrorCode StaticSolverCreate(MPI_Comm comm, KSP *ksp) {
   // the same with any preconditioner and partition.
   PetscCall(KSPSetNormType(*ksp, KSP_NORM_UNPRECONDITIONED));
   PetscCall(KSPSetTolerances(*ksp, 1e-12, 0.0, PETSC_DEFAULT, 10000));
-  PetscCall(KSPSetFromOptions(*ksp));
+  // A bad -geostatic_ksp_* / -geostatic_pc_* value stops with one line, not PETSc's traceback.
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
+  const PetscErrorCode bad = KSPSetFromOptions(*ksp);
+  PetscCall(PetscPopErrorHandler());
+  if (bad) {
+    const char *text;
+    char       *specific;
+    PetscCall(PetscErrorMessage(bad, &text, &specific));
+    SETERRQ(comm, PETSC_ERR_USER_INPUT, "-geostatic_ksp_* / -geostatic_pc_*: %s; allowed: a KSP and PC PETSc provides (see -help)", specific ? specific : text);
+  }
   PetscFunctionReturn(0);
 }
 
