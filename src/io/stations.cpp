@@ -128,15 +128,17 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const mesh:
     // The lowest key (priority, rank) owns the station: the same choice on any partition.
     PetscMPIInt claim = found >= 0 ? (PetscMPIInt)(best * size + rank) : 2 * size, key;
     PetscCallMPI(MPI_Allreduce(&claim, &key, 1, MPI_INT, MPI_MIN, comm));
-    PetscCheck(key < 2 * size, comm, PETSC_ERR_USER_INPUT, "station '%s' at (%g, %g%s) lies outside the mesh; allowed: points inside the mesh", names_[s].c_str(), x[0], x[1],
-               dim_ == 3 ? ", z" : "");
+    char point[96];
+    if (dim_ == 3) std::snprintf(point, sizeof point, "(%g, %g, %g)", x[0], x[1], x[2]);
+    else std::snprintf(point, sizeof point, "(%g, %g)", x[0], x[1]);
+    PetscCheck(key < 2 * size, comm, PETSC_ERR_USER_INPUT, "station '%s' at %s lies outside the mesh; allowed: points inside the mesh", names_[s].c_str(), point);
     for (size_t k = 0; k < nif; ++k)
       if (touch[k] == 3) {
         const auto &spec = mesh.interfaces[k];
         char        line[512];
-        std::snprintf(line, sizeof line, "station %s at (%g, %g%s) lies on interface %s (split nodes): records the %s side (%s); -station_side %s records the other",
-                      names_[s].c_str(), x[0], x[1], dim_ == 3 ? (", " + std::to_string(x[2])).c_str() : "", spec.name.c_str(), sides[side],
-                      side == 0 ? spec.structure_region.c_str() : spec.soil_region.c_str(), sides[1 - side]);
+        std::snprintf(line, sizeof line, "station %s at %s lies on interface %s (split nodes): records the %s side (%s); -station_side %s records the other",
+                      names_[s].c_str(), point, spec.name.c_str(), sides[side], side == 0 ? spec.structure_region.c_str() : spec.soil_region.c_str(),
+                      sides[1 - side]);
         ambiguities_.push_back(line);
       }
     if (key == claim) {
