@@ -329,6 +329,7 @@ PetscErrorCode report(Run *r, TS ts) {
     PetscCall(iface.CountCutPairs(r->model.mass, &cut));
     PetscCall(PetscPrintf(comm, "    %s; %" PetscInt_FMT " pairs have their two nodes on different ranks\n", r->model.penalty_notes[k].c_str(), cut));
   }
+  for (const std::string &line : r->stations.ambiguities()) PetscCall(PetscPrintf(comm, "  %s\n", line.c_str()));
   PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", r->step.dt_limit, r->step.governing.c_str(), r->step.dt_cfl));
   if (r->step.dt_limit < r->step.dt_without_interfaces * (1 - 1e-12))
     PetscCall(PetscPrintf(comm, "  warning: the interface penalty lowers the stable step from %.4e s (bulk alone) to %.4e s (-%.1f %%)\n", r->step.dt_without_interfaces,
@@ -354,7 +355,7 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
   PetscCall(readRunOptions(comm, &r->opt));
   PetscCall(model::ElastodynamicsCreate(comm, &r->model));
   PetscCall(model::ElastodynamicsStableStep(&r->model, &r->step));
-  PetscCall(r->stations.Setup(r->model.dm, r->model.bulk));
+  PetscCall(r->stations.Setup(r->model.dm, r->model.bulk, r->model.mesh));
   PetscCall(readRegionInitialVelocities(r));
   PetscCall(model::GeostaticOptionsRead(comm, &r->geostatic));
 
@@ -414,8 +415,7 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
         PetscReal              dt_geo;
         PetscCall(TSGetTimeStep(ts, &dt_geo));
         PetscCall(model::GeostaticStage(&r->model, r->geostatic, dt_geo, &g));
-        PetscCall(PetscPrintf(comm, "geostatic stage: at rest after %" PetscInt_FMT " relaxation steps (unbalanced-force ratio %.2e < %.1e) in %.2f s wall\n", g.steps,
-                              g.ratio, (double)r->geostatic.tolerance, g.wall));
+        PetscCall(PetscPrintf(comm, "%s\n", model::GeostaticReportLine(r->geostatic, g).c_str()));
       }
       PetscInt           n;
       PetscScalar       *va;
@@ -471,6 +471,7 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
     PetscCall(VecDestroy(&v));
   }
   PetscCall(TSDestroy(&ts));
+  PetscCall(model::GeostaticOptionsDestroy(&r->geostatic));
   PetscCall(r->stations.Destroy());
   PetscCall(model::ElastodynamicsDestroy(&r->model));
   delete r;

@@ -182,6 +182,39 @@ PetscErrorCode InterfaceAssembler::AddStiffnessRowAbsSums(Vec rowabs) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode InterfaceAssembler::AddStickStiffness(Mat K) const {
+  PetscFunctionBeginUser;
+  std::vector<PetscInt> rows(2 * dim_);
+  std::vector<double>   block(4 * dim_ * dim_);
+  const PetscInt        n = 2 * dim_;
+  for (size_t p = 0; p < pairs_.id.size(); ++p) {
+    const double *nrm = &pairs_.normal[p * dim_];
+    for (PetscInt i = 0; i < dim_; ++i) {
+      rows[i]        = pairs_.soil_dof[p] + i;
+      rows[dim_ + i] = pairs_.structure_dof[p] + i;
+      for (PetscInt j = 0; j < dim_; ++j) {
+        const double k = pairs_.area[p] * (params_.E * nrm[i] * nrm[j] + params_.G * ((i == j ? 1.0 : 0.0) - nrm[i] * nrm[j]));
+        block[i * n + j]                     = k;
+        block[(dim_ + i) * n + dim_ + j]     = k;
+        block[i * n + dim_ + j]              = -k;
+        block[(dim_ + i) * n + j]            = -k;
+      }
+    }
+    PetscCall(MatSetValues(K, n, rows.data(), n, rows.data(), block.data(), ADD_VALUES));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceAssembler::CountOffLinearStick(PetscInt *count) const {
+  PetscFunctionBeginUser;
+  const physics::InterfaceLaw law(params_);
+  PetscInt                    local = 0;
+  for (const auto &s : states2_) local += !physics::interfaceOnLinearStickBranch<2>(law, s);
+  for (const auto &s : states3_) local += !physics::interfaceOnLinearStickBranch<3>(law, s);
+  PetscCallMPI(MPI_Allreduce(&local, count, 1, MPIU_INT, MPI_SUM, comm_));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode InterfaceAssembler::Totals(InterfaceTotals *t) const {
   PetscFunctionBeginUser;
   const physics::InterfaceLaw law(params_);

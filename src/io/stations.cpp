@@ -3,6 +3,7 @@
 #include <hdf5.h>
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -41,8 +42,10 @@ PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, st
 
 } // namespace
 
-PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk) {
+PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const mesh::MeshDescription &mesh) {
   MPI_Comm  comm = PetscObjectComm((PetscObject)dm);
+  const char *sides[] = {"structure", "soil"};
+  char        side_name[64] = "structure";
   char      file[PETSC_MAX_PATH_LEN] = "", names[4096] = "";
   PetscReal xs[300];
   PetscInt  nx = 300;
@@ -54,7 +57,12 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk) {
   PetscCall(PetscOptionsRealArray("-station_coordinates", "x1,y1[,z1],x2,y2[,z2],... [m]", "Stations::Setup", xs, &nx, &has_coords));
   PetscCall(PetscOptionsString("-station_names", "comma-separated names for -station_coordinates (default S1, S2, ...)", "Stations::Setup", names, names, sizeof names,
                                nullptr));
+  PetscCall(PetscOptionsString("-station_side", "side recorded by a station on an interface (split nodes): structure or soil", "Stations::Setup", side_name, side_name,
+                               sizeof side_name, nullptr));
   PetscOptionsEnd();
+  // A string, not an EList: an unknown value then stops with one line, not PETSc's traceback.
+  PetscCheck(!std::strcmp(side_name, sides[0]) || !std::strcmp(side_name, sides[1]), comm, PETSC_ERR_USER_INPUT, "-station_side = %s; allowed: structure, soil", side_name);
+  const int side = std::strcmp(side_name, sides[0]) ? 1 : 0;
   if (has_file) PetscCall(readStationFile(comm, file, dim_, &names_, &coords_));
   if (has_coords) {
     PetscCheck(nx % dim_ == 0, comm, PETSC_ERR_USER_INPUT, "-station_coordinates has %" PetscInt_FMT " values; allowed: a multiple of %" PetscInt_FMT, nx, dim_);
@@ -71,11 +79,12 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk) {
   PetscCallMPI(MPI_Comm_size(comm, &size));
   const fem::CellShape shape = bulk.shape();
   const PetscInt       nen   = bulk.nodesPerCell();
+  const size_t nif = mesh.interfaces.size();
   for (size_t s = 0; s < names_.size(); ++s) {
-    const double *x     = &coords_[s * dim_];
-    PetscInt      found = -1;
-    double        xi[3], N[8];
-    for (PetscInt c = 0; c < bulk.cellCount() && found < 0; ++c) {
+    const double         *x = &coords_[s * dim_];
+    std::vector<PetscInt> holding; // this rank's cells that hold the point
+    std::vector<double>   xis;
+    for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
       const double *xc     = bulk.cellCoordinates(c);
       bool          inside = true;
       for (PetscInt d = 0; d < dim_ && inside; ++d) {
@@ -87,14 +96,54 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk) {
         const double tol = 1e-9 * (hi - lo);
         inside           = x[d] >= lo - tol && x[d] <= hi + tol;
       }
-      if (inside && fem::referenceCoordinates(shape, xc, x, xi, 1e-8)) found = c;
+      double xi[3];
+      if (inside && fem::referenceCoordinates(shape, xc, x, xi, 1e-8)) {
+        holding.push_back(c);
+        xis.insert(xis.end(), xi, xi + 3);
+      }
     }
-    PetscMPIInt claim = found >= 0 ? rank : size, owner;
-    PetscCallMPI(MPI_Allreduce(&claim, &owner, 1, MPI_INT, MPI_MIN, comm));
-    PetscCheck(owner < size, comm, PETSC_ERR_USER_INPUT, "station '%s' at (%g, %g%s) lies outside the mesh; allowed: points inside the mesh", names_[s].c_str(), x[0], x[1],
-               dim_ == 3 ? ", z" : "");
-    if (owner == rank) {
-      Local l;
+    // Per interface: bit 1 if a soil cell holds the point, bit 2 if a structure cell does.
+    std::vector<int> touch(nif, 0);
+    for (PetscInt c : holding)
+      for (size_t k = 0; k < nif; ++k) {
+        const std::string &region = mesh.regions[bulk.cellRegion(c)];
+        touch[k] |= (region == mesh.interfaces[k].soil_region ? 1 : 0) | (region == mesh.interfaces[k].structure_region ? 2 : 0);
+      }
+    if (nif) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, touch.data(), (int)nif, MPI_INT, MPI_BOR, comm));
+    // Priority 0: a cell of the chosen side of an interface the point lies on; 1: any other.
+    auto priority = [&](PetscInt c) {
+      const std::string &region = mesh.regions[bulk.cellRegion(c)];
+      for (size_t k = 0; k < nif; ++k)
+        if (touch[k] == 3 && region == (side == 0 ? mesh.interfaces[k].structure_region : mesh.interfaces[k].soil_region)) return 0;
+      return 1;
+    };
+    PetscInt found = -1, best = 2;
+    double   xi[3] = {0, 0, 0};
+    for (size_t h = 0; h < holding.size(); ++h)
+      if (priority(holding[h]) < best) {
+        best  = priority(holding[h]);
+        found = holding[h];
+        std::copy(&xis[3 * h], &xis[3 * h] + 3, xi);
+      }
+    // The lowest key (priority, rank) owns the station: the same choice on any partition.
+    PetscMPIInt claim = found >= 0 ? (PetscMPIInt)(best * size + rank) : 2 * size, key;
+    PetscCallMPI(MPI_Allreduce(&claim, &key, 1, MPI_INT, MPI_MIN, comm));
+    char point[96];
+    if (dim_ == 3) std::snprintf(point, sizeof point, "(%g, %g, %g)", x[0], x[1], x[2]);
+    else std::snprintf(point, sizeof point, "(%g, %g)", x[0], x[1]);
+    PetscCheck(key < 2 * size, comm, PETSC_ERR_USER_INPUT, "station '%s' at %s lies outside the mesh; allowed: points inside the mesh", names_[s].c_str(), point);
+    for (size_t k = 0; k < nif; ++k)
+      if (touch[k] == 3) {
+        const auto &spec = mesh.interfaces[k];
+        char        line[512];
+        std::snprintf(line, sizeof line, "station %s at %s lies on interface %s (split nodes): records the %s side (%s); -station_side %s records the other",
+                      names_[s].c_str(), point, spec.name.c_str(), sides[side], side == 0 ? spec.structure_region.c_str() : spec.soil_region.c_str(),
+                      sides[1 - side]);
+        ambiguities_.push_back(line);
+      }
+    if (key == claim) {
+      double N[8];
+      Local  l;
       l.station = (PetscInt)s;
       fem::shapeFunctions(shape, xi, N);
       for (PetscInt a = 0; a < nen; ++a) {

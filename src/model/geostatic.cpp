@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 
 #include "slipwave/app/log_events.hpp"
 #include "slipwave/model/boundary_faces.hpp"
+#include "slipwave/model/static_equilibrium.hpp"
 
 namespace slipwave::model {
 namespace {
@@ -79,15 +82,51 @@ PetscErrorCode unbalancedRatio(Elastodynamics *m, Vec a, Vec mask, double *ratio
 } // namespace
 
 PetscErrorCode GeostaticOptionsRead(MPI_Comm comm, GeostaticOptions *o) {
+  char method[64] = "static";
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, "geostatic_", "Geostatic stage (gravity equilibrium before shaking)", "slipwave");
-  PetscCall(PetscOptionsBool("-stage", "bring the model to rest under gravity and loads first (dynamic relaxation)", "GeostaticStage", o->enabled, &o->enabled, nullptr));
-  PetscCall(PetscOptionsReal("-tolerance", "unbalanced-force ratio max|M a| / max|f| that ends the stage [-]", "GeostaticStage", o->tolerance, &o->tolerance, nullptr));
-  PetscCall(PetscOptionsInt("-max_steps", "steps allowed before the stage is declared not converged", "GeostaticStage", o->max_steps, &o->max_steps, nullptr));
+  PetscCall(PetscOptionsBool("-stage", "bring the model to rest under gravity and loads first", "GeostaticStage", o->enabled, &o->enabled, nullptr));
+  PetscCall(PetscOptionsString("-method",
+                               "static: linear solve with the interfaces in stick (KSP options -geostatic_ksp_*, -geostatic_pc_*), relaxation where a pair would slip "
+                               "or open; relaxation: dynamic relaxation only",
+                               "GeostaticStage", method, method, sizeof method, nullptr));
+  PetscCall(PetscOptionsReal("-tolerance", "relaxation: unbalanced-force ratio max|M a| / max|f| that ends it [-], 0 < tol < 1", "GeostaticStage", o->tolerance,
+                             &o->tolerance, nullptr));
+  PetscCall(PetscOptionsInt("-max_steps", "relaxation: steps allowed before the stage is declared not converged, > 0", "GeostaticStage", o->max_steps, &o->max_steps,
+                            nullptr));
   PetscOptionsEnd();
+  // A string, not an EList: an unknown value then stops with one line, not PETSc's traceback.
+  PetscCheck(!std::strcmp(method, "static") || !std::strcmp(method, "relaxation"), comm, PETSC_ERR_USER_INPUT, "-geostatic_method = %s; allowed: static, relaxation",
+             method);
+  o->method = std::strcmp(method, "static") ? GeostaticMethod::Relaxation : GeostaticMethod::Static;
   PetscCheck(o->tolerance > 0 && o->tolerance < 1, comm, PETSC_ERR_USER_INPUT, "-geostatic_tolerance = %g; allowed: 0 < tolerance < 1", (double)o->tolerance);
   PetscCheck(o->max_steps > 0, comm, PETSC_ERR_USER_INPUT, "-geostatic_max_steps = %" PetscInt_FMT "; allowed: > 0", o->max_steps);
+  if (o->enabled && o->method == GeostaticMethod::Static) PetscCall(StaticSolverCreate(comm, &o->ksp));
   PetscFunctionReturn(0);
+}
+
+PetscErrorCode GeostaticOptionsDestroy(GeostaticOptions *o) {
+  PetscFunctionBeginUser;
+  PetscCall(KSPDestroy(&o->ksp));
+  PetscFunctionReturn(0);
+}
+
+std::string GeostaticReportLine(const GeostaticOptions &o, const GeostaticReport &g) {
+  char        buf[512];
+  std::string line;
+  if (g.solved_static) {
+    std::snprintf(buf, sizeof buf, "static solve (%s, %" PetscInt_FMT " iterations), unbalanced-force ratio %.2e; ", g.solver.c_str(), g.ksp_iterations, g.static_ratio);
+    line += buf;
+  }
+  if (g.solved_static && g.fallback.empty()) {
+    line += "every interface pair in stick";
+  } else {
+    if (!g.fallback.empty()) line += g.fallback + ", so relaxation follows: ";
+    std::snprintf(buf, sizeof buf, "at rest after %" PetscInt_FMT " relaxation steps (unbalanced-force ratio %.2e < %.1e)", g.steps, g.ratio, (double)o.tolerance);
+    line += buf;
+  }
+  std::snprintf(buf, sizeof buf, " in %.2f s wall", g.wall);
+  return "geostatic stage: " + line + buf;
 }
 
 PetscErrorCode GeostaticStage(Elastodynamics *m, const GeostaticOptions &o, double dt, GeostaticReport *report) {
@@ -114,10 +153,37 @@ PetscErrorCode GeostaticStage(Elastodynamics *m, const GeostaticOptions &o, doub
   // force: the effective stiffness grows by 1 + alpha, so the step shrinks by sqrt(1 + alpha)
   // to stay inside the stability limit (the stage is pseudo-time; only the end state counts).
   dt /= std::sqrt(1.0 + kLocalDamping);
-  PetscCall(ElastodynamicsRHS(nullptr, 0.0, u, a, m));
-  double   ratio = 1;
+  bool relax = true;
+  if (o.method == GeostaticMethod::Static && m->tie) {
+    report->fallback = "tied lateral sides (a constraint the static solve does not carry)";
+  } else if (o.method == GeostaticMethod::Static) {
+    StaticSolveReport s;
+    PetscCall(StaticEquilibriumSolve(m, o.ksp, mask, u, &s));
+    report->solved_static  = true;
+    report->solver         = s.method;
+    report->ksp_iterations = s.iterations;
+    if (s.reason < 0) {
+      report->fallback = std::string("the static solve did not converge (") + KSPConvergedReasons[s.reason] + ")";
+      PetscCall(VecZeroEntries(u));
+    } else {
+      // This evaluation advances every pair from its initial state by the whole static jump
+      // in one increment of the law: a pair that stays on the linear stick branch ends with
+      // exactly the spring's traction; one that would slip or open is flagged.
+      PetscCall(ElastodynamicsRHS(nullptr, 0.0, u, a, m));
+      PetscCall(unbalancedRatio(m, a, mask, &report->static_ratio));
+      for (const auto &iface : m->interfaces) {
+        PetscInt off;
+        PetscCall(iface.CountOffLinearStick(&off));
+        report->pairs_off_stick += off;
+      }
+      relax = report->pairs_off_stick > 0;
+      if (relax) report->fallback = std::to_string(report->pairs_off_stick) + " interface pairs would slip, open or reach the tension cut-off";
+    }
+  }
+  double   ratio = report->static_ratio;
   PetscInt step  = 0;
-  for (; step < o.max_steps; ++step) {
+  if (relax) PetscCall(ElastodynamicsRHS(nullptr, 0.0, u, a, m));
+  for (; relax && step < o.max_steps; ++step) {
     // Local damping: each dof's unbalanced force f = M a is opposed by alpha |f| sign(v), so
     // the damping always works against the motion and cannot feed any mode (unlike zeroing
     // the velocities at kinetic-energy peaks, which pumped the modes near the step limit).
@@ -142,7 +208,7 @@ PetscErrorCode GeostaticStage(Elastodynamics *m, const GeostaticOptions &o, doub
       if (ratio < o.tolerance) break;
     }
   }
-  PetscCheck(ratio < o.tolerance, m->comm, PETSC_ERR_NOT_CONVERGED,
+  PetscCheck(!relax || ratio < o.tolerance, m->comm, PETSC_ERR_NOT_CONVERGED,
              "geostatic stage not converged after %" PetscInt_FMT " steps: unbalanced-force ratio %.3e; allowed: below -geostatic_tolerance = %g (raise -geostatic_max_steps)",
              step, ratio, (double)o.tolerance);
 

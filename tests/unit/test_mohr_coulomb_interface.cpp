@@ -339,6 +339,37 @@ void testApex() {
   unit::near(s.dissipation, 0.0, 0.0, 1e-9 * p.c * 1e-3, "apex: zero dissipation (zero strength)");
 }
 
+// The geostatic static solve treats every pair as the linear spring sigma_N = sigma_N0 + E w_N,
+// sigma_T = G w_T and keeps that answer only where interfaceOnLinearStickBranch holds after one
+// law increment by the whole static jump: there the law must give exactly the spring's
+// traction, and elsewhere (slip, the tension plateau, open) the predicate must be false.
+void testLinearStickBranch() {
+  InterfaceParams p = baseParams();
+  p.e_ini = 1e-3;
+  p.tensile_strength = 1e3; // below c / tan(phi) = 3464 Pa
+  const InterfaceLaw law(p);
+  const double sN0 = -1e5, strength = p.c - sN0 * std::tan(p.phi); // 59735 Pa
+  auto s = interfaceInitialState<2>(law, sN0);
+  unit::check(interfaceOnLinearStickBranch<2>(law, s), "linear branch: the initial compressed state");
+  const double dwT = 0.5 * strength / p.G, dwN = 2e-4; // half the strength; less compression
+  step2(law, s, dwT, dwN);
+  unit::check(interfaceOnLinearStickBranch<2>(law, s), "linear branch: half the shear strength");
+  unit::near(s.sigma_T[0], p.G * dwT, 1e-14, 0.0, "linear branch: sigma_T = G w_T");
+  unit::near(s.sigma_N, sN0 + p.E * dwN, 1e-14, 0.0, "linear branch: sigma_N = sigma_N0 + E w_N");
+  auto slipping = interfaceInitialState<2>(law, sN0);
+  step2(law, slipping, 2.0 * strength / p.G, 0.0);
+  unit::check(!interfaceOnLinearStickBranch<2>(law, slipping), "off the linear branch: twice the shear strength (slip)");
+  auto plateau = interfaceInitialState<2>(law, 0.0);
+  step2(law, plateau, 0.0, 2e3 / p.E); // E u = 2 sigma_t, below e_ini
+  unit::check(plateau.status == InterfaceStatus::Stick && !interfaceOnLinearStickBranch<2>(law, plateau), "off the linear branch: on the tension plateau");
+  auto tension = interfaceInitialState<2>(law, 0.0);
+  step2(law, tension, 0.0, 0.5e3 / p.E); // E u = sigma_t / 2
+  unit::check(interfaceOnLinearStickBranch<2>(law, tension), "linear branch: tension below the cut-off");
+  auto open = interfaceInitialState<2>(law, 0.0);
+  step2(law, open, 0.0, 2e-3);
+  unit::check(!interfaceOnLinearStickBranch<2>(law, open), "off the linear branch: open beyond e_ini");
+}
+
 } // namespace
 
 int main() {
@@ -351,5 +382,6 @@ int main() {
   testOpeningAndRecontact();
   testTensionCutoffAndCohesion();
   testApex();
+  testLinearStickBranch();
   return unit::failures();
 }

@@ -27,6 +27,9 @@ public:
   void addLumpedMass(PetscScalar *mass_local) const;
   // Adds sum_j |K_ij| per dof (Gershgorin row sums) to a local array.
   void addStiffnessRowAbsSums(PetscScalar *rowabs_local) const;
+  // Element stiffness of cell c: (nen dim)^2 values, row a*dim+i (node-major), the same
+  // matrix addStiffnessTimes applies (for assembling K where a static solve needs it).
+  const double *cellStiffness(PetscInt c) const { return &stiffness_[(size_t)cell_matrix_[c] * nen_ * dim_ * nen_ * dim_]; }
   // Cell-centroid stress (6 per cell: xx,yy,zz,xy,yz,xz) of this rank's cells, in cell order.
   void cellStress(const PetscScalar *u_local, PetscScalar *stress) const;
 

@@ -6,7 +6,7 @@
 // The central-difference TS evaluates the right-hand side once per step, so the state is
 // committed at each evaluation.
 #pragma once
-#include <petscvec.h>
+#include <petscmat.h>
 
 #include <string>
 #include <vector>
@@ -34,6 +34,13 @@ public:
   // Adds the Gershgorin row sums of the penalty springs, 2 * sum_j |k_ij| with
   // k = A (E n n + G (I - n n)), to a global vector laid out like u.
   PetscErrorCode AddStiffnessRowAbsSums(Vec rowabs);
+  // Adds the stick springs A [k -k; -k k], k = E n n + G (I - n n), of every pair of this rank
+  // to K (global rows; the matrix must accept new nonzeros: the pair couples two nodes that
+  // share no cell). Not assembled here.
+  PetscErrorCode AddStickStiffness(Mat K) const;
+  // Pairs (over all ranks) that no longer answer as a linear stick spring: slipping, open, or
+  // on the tension plateau (see physics::interfaceOnLinearStickBranch).
+  PetscErrorCode CountOffLinearStick(PetscInt *count) const;
   PetscErrorCode Totals(InterfaceTotals *totals) const;
   // Measures jumps from the current displacement as zero again (after the geostatic stage the
   // displacements restart from zero); tractions and state are kept.

@@ -1,8 +1,14 @@
 // Stations: points given by coordinates (-station_coordinates x1,y1,x2,y2,... with
 // -station_names, or -stations_file with rows name,x,y[,z]) where u, v, a are interpolated
-// with the cell's shape functions every step. Each station belongs to the lowest rank whose
-// cell holds it, so the records do not depend on the partition. At the end rank 0 writes
+// with the cell's shape functions every step. At the end rank 0 writes
 // DIR/stations/<name>.csv and DIR/stations.h5.
+// Which cell: any cell holding the point gives the same value (the field is continuous inside
+// a body) except on an interface, where the soil and the structure cells hold different
+// nodes of each split pair. There the station records the side -station_side chooses
+// (structure by default: a point on a foundation's base is usually there to see the
+// foundation slide and lift), whatever the partition: among the ranks whose cells hold the
+// point, the lowest one with a cell of that side. ambiguities() lists those stations for the
+// run report.
 #pragma once
 #include <petscdm.h>
 
@@ -10,12 +16,15 @@
 #include <vector>
 
 #include "slipwave/fem/bulk_operator.hpp"
+#include "slipwave/mesh/mesh_builder.hpp"
 
 namespace slipwave::io {
 
 class Stations {
 public:
-  PetscErrorCode Setup(DM dm, const fem::BulkOperator &bulk);
+  PetscErrorCode Setup(DM dm, const fem::BulkOperator &bulk, const mesh::MeshDescription &mesh);
+  // One line per station on an interface: where it is and which side it records.
+  const std::vector<std::string> &ambiguities() const { return ambiguities_; }
   bool           empty() const { return names_.empty(); }
   // Samples the global u, v, a at time t.
   PetscErrorCode Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a);
@@ -39,6 +48,7 @@ private:
   std::vector<std::string> names_;
   std::vector<double>      coords_;
   std::vector<Local>       local_;
+  std::vector<std::string> ambiguities_;
   Vec                      work_[3] = {nullptr, nullptr, nullptr};
 };
 

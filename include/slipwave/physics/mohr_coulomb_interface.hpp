@@ -73,6 +73,14 @@ InterfaceState<Dim> interfaceInitialState(const InterfaceLaw &law, double sigma_
   return s;
 }
 
+// True while a pair answers as a linear spring: in contact, sticking, and below the tension
+// cut-off (sigma_N = E u, not the plateau). A static solve with the stick springs is exact
+// only if every pair is on this branch.
+template <int Dim>
+bool interfaceOnLinearStickBranch(const InterfaceLaw &law, const InterfaceState<Dim> &s) {
+  return s.status == InterfaceStatus::Stick && law.E * s.opening <= law.sigma_t;
+}
+
 namespace detail {
 
 inline double yieldValue(const InterfaceLaw &law, double norm_T, double sigma_N) {
