@@ -41,6 +41,8 @@ public:
   PetscInt  cellVertex(PetscInt c, PetscInt a) const { return cell_vertices_[c * nen_ + a]; }
   PetscInt  cellRegion(PetscInt c) const { return cell_region_[c]; }
   const double *cellCoordinates(PetscInt c) const { return &cell_coords_[c * nen_ * dim_]; }
+  // Element stiffness of cell c (nen*dim square, row-major, dofs node-major), shared by cells alike.
+  const double *cellStiffness(PetscInt c) const { return &stiffness_[(size_t)cell_matrix_[c] * nen_ * dim_ * nen_ * dim_]; }
   double    minCellSize() const { return h_min_; }
 
 private:
