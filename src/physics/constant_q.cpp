@@ -1,26 +1,8 @@
 #include "slipwave/physics/constant_q.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 namespace slipwave::physics {
-
-std::string constantQProblem(double damping_ratio, double f_min, double f_max, int mechanisms) {
-  char buf[256];
-  if (!(damping_ratio > 0 && damping_ratio < 0.5)) {
-    std::snprintf(buf, sizeof buf, "damping ratio %g is not allowed; it must satisfy 0 < xi < 0.5 (Q = 1/(2 xi) > 1)", damping_ratio);
-    return buf;
-  }
-  if (!(f_min > 0 && f_max > f_min && std::isfinite(f_max))) {
-    std::snprintf(buf, sizeof buf, "band %g,%g Hz is not allowed; it must satisfy 0 < f_min < f_max", f_min, f_max);
-    return buf;
-  }
-  if (mechanisms < 1 || mechanisms > 8) {
-    std::snprintf(buf, sizeof buf, "%d relaxation mechanisms is not allowed; 1 to 8", mechanisms);
-    return buf;
-  }
-  return "";
-}
 
 ConstantQModel constantQFit(double damping_ratio, double f_min, double f_max, int mechanisms) {
   const int    n = mechanisms, samples = 4 * n + 1;

@@ -16,7 +16,6 @@
 // reference frequency f_r and M_U follows from them.
 #pragma once
 #include <complex>
-#include <string>
 #include <vector>
 
 namespace slipwave::physics {
@@ -27,9 +26,7 @@ struct ConstantQModel {
   std::vector<double> weight;            // anelastic coefficients Y_l [-]
 };
 
-// "" when 0 < xi < 0.5, 0 < f_min < f_max (finite) and 1 <= mechanisms <= 8, else a sentence
-// naming the bad value.
-std::string constantQProblem(double damping_ratio, double f_min, double f_max, int mechanisms);
+// The fit for 0 < xi < 0.5, 0 < f_min < f_max, 1 <= mechanisms <= 8 (checked by the caller).
 ConstantQModel constantQFit(double damping_ratio, double f_min, double f_max, int mechanisms);
 
 // M(w)/M_U at frequency f [Hz].
