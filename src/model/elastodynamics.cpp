@@ -160,12 +160,7 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(BoundaryConditionsCreate(m->dm, m->mesh.boundaries, m->materials, m->mass, &m->bc));
   PetscCall(assembleDampingBlocks(m));
   PetscCall(LateralTieCreate(m->dm, m->bc, m->mass, &m->tie));
-  // The free-field columns are elastic: beside a damped region their motion would not match
-  // the interior's (not implemented yet).
-  PetscCheck(!(m->attenuation && m->bc.has_free_field), comm, PETSC_ERR_USER_INPUT,
-             "-bc_<side>_type freefield with -material_<region>_damping_ratio > 0: the free-field columns have no constant-Q damping yet; allowed: absorbing, tied or "
-             "fixed sides with damping, or damping ratio 0");
-  if (m->bc.has_free_field) PetscCall(FreeFieldCreate(m->dm, m->bc, m->materials, m->rayleigh, m->bulk.minCellSize(), &m->free_field));
+  if (m->bc.has_free_field) PetscCall(FreeFieldCreate(m->dm, m->bc, m->materials, m->rayleigh, m->attenuation, m->bulk.minCellSize(), &m->free_field));
   PetscCall(VecDuplicate(m->mass, &m->f_internal));
   PetscCall(VecDuplicate(m->mass, &m->f_external));
   PetscCall(VecDuplicate(m->mass, &m->f_input));
