@@ -63,24 +63,63 @@ PetscErrorCode AttenuationCreate(MPI_Comm comm, std::vector<RegionMaterialInfo> 
 }
 
 PetscErrorCode AttenuationSetupCells(Attenuation *att, DM dm, const fem::BulkOperator &bulk) {
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   PetscFunctionBeginUser;
-  att->op.Setup(bulk, att->region_models);
-  PetscCall(DMCreateLocalVector(dm, &att->f_local));
+  PetscCall(DMCreateGlobalVector(dm, &att->drive));
+  PetscCall(DMCreateLocalVector(dm, &att->drive_local));
+  const PetscInt L = att->mechanisms;
+  for (size_t r = 0; r < att->region_models.size(); ++r) {
+    const auto &model = att->region_models[r];
+    if (model.omega.empty()) continue;
+    att->omega = model.omega;
+    DampedRegion d;
+    d.region = (PetscInt)r;
+    d.weight = model.weight;
+    std::vector<PetscInt> cells;
+    for (PetscInt c = 0; c < bulk.cellCount(); ++c)
+      if (bulk.cellRegion(c) == d.region) cells.push_back(c);
+    int everywhere = (PetscInt)cells.size() == bulk.cellCount();
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &everywhere, 1, MPI_INT, MPI_MIN, comm));
+    d.whole_mesh = everywhere;
+    // The owned dofs the region's cells touch: assemble a marker.
+    PetscScalar *mark;
+    PetscCall(VecZeroEntries(att->drive_local));
+    PetscCall(VecGetArray(att->drive_local, &mark));
+    for (PetscInt c : cells)
+      for (PetscInt a = 0; a < bulk.nodesPerCell(); ++a)
+        for (PetscInt i = 0; i < bulk.dimension(); ++i) mark[bulk.cellNodeOffset(c, a) + i] = 1.0;
+    PetscCall(VecRestoreArray(att->drive_local, &mark));
+    PetscCall(VecZeroEntries(att->drive));
+    PetscCall(DMLocalToGlobal(dm, att->drive_local, ADD_VALUES, att->drive));
+    PetscInt           n;
+    const PetscScalar *marked;
+    PetscCall(VecGetLocalSize(att->drive, &n));
+    PetscCall(VecGetArrayRead(att->drive, &marked));
+    for (PetscInt k = 0; k < n; ++k)
+      if (PetscRealPart(marked[k]) > 0) d.dofs.push_back(k);
+    PetscCall(VecRestoreArrayRead(att->drive, &marked));
+    if (!d.whole_mesh) d.cells = bulk.subset(cells);
+    d.zeta_committed.assign(d.dofs.size() * L, 0.0);
+    d.zeta_trial = d.zeta_committed;
+    d.drive_committed.assign(d.dofs.size(), 0.0);
+    d.drive_trial = d.drive_committed;
+    att->damped.push_back(std::move(d));
+  }
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode AttenuationDestroy(Attenuation **att) {
   PetscFunctionBeginUser;
   if (!*att) PetscFunctionReturn(0);
-  PetscCall(VecDestroy(&(*att)->f_local));
+  PetscCall(VecDestroy(&(*att)->drive));
+  PetscCall(VecDestroy(&(*att)->drive_local));
   delete *att;
   *att = nullptr;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator &bulk, Vec u_local, PetscReal t, Vec f) {
-  const PetscScalar *ul;
-  PetscScalar       *fl;
+PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator &bulk, Vec u_local, Vec f_internal, PetscReal t, Vec f) {
+  constexpr int kMaxMechanisms = 8;
   PetscFunctionBeginUser;
   if (!att->started) {
     att->started        = true;
@@ -88,18 +127,58 @@ PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator
   } else if (t != att->trial_time) {
     PetscCheck(t > att->trial_time, PETSC_COMM_SELF, PETSC_ERR_ORDER, "attenuation: force asked at t = %g s, before the last evaluation at %g s", (double)t,
                att->trial_time);
-    att->op.commit();
+    for (DampedRegion &d : att->damped) {
+      d.zeta_committed.swap(d.zeta_trial);
+      d.drive_committed.swap(d.drive_trial);
+    }
     att->committed_time = att->trial_time;
     att->trial_time     = t;
   }
-  PetscCall(VecZeroEntries(att->f_local));
-  PetscCall(VecGetArrayRead(u_local, &ul));
-  PetscCall(VecGetArray(att->f_local, &fl));
-  att->op.addMemoryForce(bulk, ul, t - att->committed_time, fl);
-  PetscCall(VecRestoreArray(att->f_local, &fl));
-  PetscCall(VecRestoreArrayRead(u_local, &ul));
+  const PetscInt        L = att->mechanisms;
+  physics::MemoryUpdate upd[kMaxMechanisms];
+  for (PetscInt l = 0; l < L; ++l) upd[l] = physics::memoryUpdate(att->omega[l], t - att->committed_time);
   PetscCall(VecZeroEntries(f));
-  PetscCall(DMLocalToGlobal(dm, att->f_local, ADD_VALUES, f));
+  PetscScalar *fa;
+  for (DampedRegion &d : att->damped) {
+    Vec drive = f_internal;
+    if (!d.whole_mesh) {
+      const PetscScalar *ul;
+      PetscScalar       *dl;
+      PetscCall(VecZeroEntries(att->drive_local));
+      PetscCall(VecGetArrayRead(u_local, &ul));
+      PetscCall(VecGetArray(att->drive_local, &dl));
+      bulk.addStiffnessTimes(d.cells, ul, dl);
+      PetscCall(VecRestoreArray(att->drive_local, &dl));
+      PetscCall(VecRestoreArrayRead(u_local, &ul));
+      PetscCall(VecZeroEntries(att->drive));
+      PetscCall(DMLocalToGlobal(dm, att->drive_local, ADD_VALUES, att->drive));
+      drive = att->drive;
+    }
+    double a[kMaxMechanisms], b[kMaxMechanisms], decay[kMaxMechanisms];
+    for (PetscInt l = 0; l < L; ++l) {
+      a[l]     = d.weight[l] * upd[l].end;
+      b[l]     = d.weight[l] * upd[l].start;
+      decay[l] = upd[l].decay;
+    }
+    const PetscScalar *g;
+    PetscCall(VecGetArrayRead(drive, &g));
+    PetscCall(VecGetArray(f, &fa));
+    const double *zc = d.zeta_committed.data(), *gc = d.drive_committed.data();
+    double       *zt = d.zeta_trial.data(), *gt = d.drive_trial.data();
+    for (size_t k = 0; k < d.dofs.size(); ++k) {
+      const double gk = PetscRealPart(g[d.dofs[k]]);
+      double       sum = 0;
+      for (PetscInt l = 0; l < L; ++l) {
+        const double z = decay[l] * zc[k * L + l] + a[l] * gk + b[l] * gc[k];
+        zt[k * L + l]  = z;
+        sum += z;
+      }
+      gt[k] = gk;
+      fa[d.dofs[k]] += sum;
+    }
+    PetscCall(VecRestoreArray(f, &fa));
+    PetscCall(VecRestoreArrayRead(drive, &g));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -141,19 +220,29 @@ std::vector<std::string> AttenuationReport(const Attenuation *att, const std::ve
 
 std::vector<double> AttenuationState(const Attenuation *att) {
   std::vector<double> s = {att->started ? 1.0 : 0.0, att->committed_time, att->trial_time};
-  const std::vector<double> memory = att->op.state();
-  s.insert(s.end(), memory.begin(), memory.end());
+  for (const DampedRegion &d : att->damped)
+    for (const std::vector<double> *x : {&d.zeta_committed, &d.zeta_trial, &d.drive_committed, &d.drive_trial}) s.insert(s.end(), x->begin(), x->end());
   return s;
 }
 
 bool AttenuationSetState(Attenuation *att, const std::vector<double> &s) {
-  if (s.size() < 3) return false;
+  if ((PetscInt)s.size() != AttenuationStateSize(att)) return false;
   att->started        = s[0] != 0;
   att->committed_time = s[1];
   att->trial_time     = s[2];
-  return att->op.setState(std::vector<double>(s.begin() + 3, s.end()));
+  size_t o = 3;
+  for (DampedRegion &d : att->damped)
+    for (std::vector<double> *x : {&d.zeta_committed, &d.zeta_trial, &d.drive_committed, &d.drive_trial}) {
+      std::copy(s.begin() + o, s.begin() + o + x->size(), x->begin());
+      o += x->size();
+    }
+  return true;
 }
 
-PetscInt AttenuationStateSize(const Attenuation *att) { return 3 + (PetscInt)att->op.state().size(); }
+PetscInt AttenuationStateSize(const Attenuation *att) {
+  size_t n = 3;
+  for (const DampedRegion &d : att->damped) n += 2 * (d.zeta_committed.size() + d.drive_committed.size());
+  return (PetscInt)n;
+}
 
 } // namespace slipwave::model

@@ -193,9 +193,9 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(app::event_bulk_force, 0, 0, 0, 0));
   PetscCall(ElastodynamicsStiffnessTimes(m, u, m->f_internal));
-  // The memory forces need the ghosted u that K u has just gathered into u_local. Off in the
-  // geostatic stage (input_enabled false): the memory starts with the dynamic stage.
-  if (m->attenuation && m->input_enabled) PetscCall(AttenuationForce(m->attenuation, m->dm, m->bulk, m->u_local, t, m->f_anelastic));
+  // The memory forces need K_U u and the ghosted u that K u has just gathered into u_local.
+  // Off in the geostatic stage (input_enabled false): the memory starts with the dynamic stage.
+  if (m->attenuation && m->input_enabled) PetscCall(AttenuationForce(m->attenuation, m->dm, m->bulk, m->u_local, m->f_internal, t, m->f_anelastic));
   if (m->rayleigh.beta > 0) {
     Vec v_half;
     PetscCall(time::CentralDifferenceGetHalfStepVelocity(ts, &v_half));

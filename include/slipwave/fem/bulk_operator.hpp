@@ -23,6 +23,12 @@ public:
 
   // f_local += K u_local on the cells of this rank (local, ghosted arrays; no communication).
   void addStiffnessTimes(const PetscScalar *u_local, PetscScalar *f_local) const;
+  // The same on a subset of cells (ascending local cell numbers), through the same loop.
+  struct CellSubset {
+    std::vector<PetscInt> dofs, matrix; // per cell of the subset: its node dof offsets, its matrix
+  };
+  CellSubset subset(const std::vector<PetscInt> &cells) const;
+  void       addStiffnessTimes(const CellSubset &cells, const PetscScalar *u_local, PetscScalar *f_local) const;
   // Adds the row-sum lumped mass (one value per dof) to a local array.
   void addLumpedMass(PetscScalar *mass_local) const;
   // Adds sum_j |K_ij| per dof (Gershgorin row sums) to a local array.
@@ -41,8 +47,6 @@ public:
   PetscInt  cellVertex(PetscInt c, PetscInt a) const { return cell_vertices_[c * nen_ + a]; }
   PetscInt  cellRegion(PetscInt c) const { return cell_region_[c]; }
   const double *cellCoordinates(PetscInt c) const { return &cell_coords_[c * nen_ * dim_]; }
-  // Element stiffness of cell c (nen*dim square, row-major, dofs node-major), shared by cells alike.
-  const double *cellStiffness(PetscInt c) const { return &stiffness_[(size_t)cell_matrix_[c] * nen_ * dim_ * nen_ * dim_]; }
   double    minCellSize() const { return h_min_; }
 
 private:

@@ -47,7 +47,7 @@ public:
   // The incident wave: particle-velocity component (0 .. dim-1) and its speed (vs for an S
   // wave, vp for a P wave). Without a call the base only absorbs.
   void setInput(int component, bool p_wave);
-  // Constant-Q damping per segment, as the main mesh's cells have it (fem/anelastic_operator.hpp):
+  // Constant-Q damping per segment, as the main mesh's cells have it (model/attenuation.hpp):
   // models[e] is the segment's fitted body (no mechanisms: elastic), factor[e] its unrelaxed
   // modulus factor M_U/(rho c^2). Every spring becomes k_U Δu - sum_l zeta_l with
   // d zeta_l/dt = w_l (Y_l k_U Δu - zeta_l), updated exactly (memoryUpdate) once per step.
