@@ -410,6 +410,7 @@ def plot_energy(out, plots, written):
         ("external_work", "external work (gravity, tractions, supports, cumulative)", "tab:olive", "-"),
         ("absorbed", "absorbed by the dashpots (cumulative)", "tab:red", "-"),
         ("damped", "Rayleigh damping (cumulative)", "tab:brown", "-"),
+        ("anelastic", "constant-Q damping (work on the memory variables, cumulative)", "tab:gray", "-"),
         ("interface_stored", "interface stored", "tab:pink", "--"),
         ("interface_dissipated", "interface dissipated (cumulative)", "tab:purple", "--"),
     ]

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "slipwave/model/attenuation.hpp"
 #include "slipwave/model/free_field.hpp"
 #include "slipwave/time/central_difference.hpp"
 
@@ -9,28 +10,28 @@ namespace slipwave::app {
 namespace {
 
 constexpr PetscInt kMagic   = 0x53574350; // "SWCP"
-constexpr PetscInt kVersion = 1;
+constexpr PetscInt kVersion = 2; // 2: ledger with `anelastic`, attenuation memory
 constexpr PetscInt kHeader  = 9;
 
 // The ledger as a flat array, in a fixed order.
 std::vector<double> ledgerArray(const model::EnergyLedger &e) {
   return {e.kinetic, e.strain,        e.input,        e.external,      e.reactions, e.absorbed,          e.damped, e.interface_work,
-          e.shadow,  e.shadow_start,  e.balance_error, e.scale,        e.h_prev,    e.started ? 1.0 : 0.0};
+          e.shadow,  e.shadow_start,  e.balance_error, e.scale,        e.h_prev,    e.started ? 1.0 : 0.0, e.anelastic};
 }
 
 void ledgerFromArray(const double *a, model::EnergyLedger *e) {
   e->kinetic = a[0], e->strain = a[1], e->input = a[2], e->external = a[3], e->reactions = a[4], e->absorbed = a[5], e->damped = a[6];
   e->interface_work = a[7], e->shadow = a[8], e->shadow_start = a[9], e->balance_error = a[10], e->scale = a[11], e->h_prev = a[12];
-  e->started = a[13] != 0;
+  e->started = a[13] != 0, e->anelastic = a[14];
 }
-constexpr PetscInt kLedgerSize = 14;
+constexpr PetscInt kLedgerSize = 15;
 
 std::vector<Vec> stateVectors(const CheckpointState &s) {
   Vec u, v, a;
   TS2GetSolution(s.ts, &u, &v);
   time::CentralDifferenceGetAcceleration(s.ts, &a);
   model::Elastodynamics *m = s.model;
-  return {u, v, a, m->f_internal, m->f_external, m->f_input, m->f_stiffness_damping, m->f_interface, m->bc.constant_force};
+  return {u, v, a, m->f_internal, m->f_external, m->f_input, m->f_stiffness_damping, m->f_interface, m->bc.constant_force, m->f_anelastic};
 }
 
 // A Vec holding `values` on this rank (its layout defines what a restart must reproduce).
@@ -95,6 +96,7 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
     PetscCall(viewLocalArray(comm, state, viewer));
   }
   PetscCall(viewLocalArray(comm, samples, viewer));
+  if (s.model->attenuation) PetscCall(viewLocalArray(comm, model::AttenuationState(s.model->attenuation), viewer));
   // The free-field columns are replicated on every rank: rank 0's copy is the state.
   for (PetscInt k = 0; k < header[8]; ++k) {
     const std::vector<double> column = s.model->free_field->sides[k].column.state();
@@ -164,6 +166,12 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
   std::vector<double> records;
   PetscCall(loadLocalArray(comm, samples, viewer, &records));
   s.stations->loadRecords(records.data(), records.size());
+  if (s.model->attenuation) {
+    std::vector<double> memory;
+    PetscCall(loadLocalArray(comm, model::AttenuationStateSize(s.model->attenuation), viewer, &memory));
+    PetscCheck(model::AttenuationSetState(s.model->attenuation, memory), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+               "-restart = %s: the attenuation memory does not fit this mesh; allowed: the scene options of the run that wrote it", path.c_str());
+  }
   const PetscInt sides = s.model->free_field ? (PetscInt)s.model->free_field->sides.size() : 0;
   PetscCheck(header[8] == sides, comm, PETSC_ERR_USER_INPUT, "-restart = %s has %" PetscInt_FMT " free-field sides, this scene %" PetscInt_FMT "; allowed: the scene options of the run that wrote it",
              path.c_str(), header[8], sides);

@@ -254,17 +254,35 @@ PetscErrorCode BulkOperator::Setup(DM dm, const std::vector<RegionMaterial> &mat
   PetscFunctionReturn(0);
 }
 
-void BulkOperator::addStiffnessTimes(const PetscScalar *u, PetscScalar *f) const {
-  const PetscInt *dofs = cell_dofs_.data();
-  const PetscInt *mats = cell_matrix_.data();
-  const double   *pool = stiffness_.data();
-  switch (nen_ * dim_) {
-  case 6: applyCells<3, 2>(ncell_, dofs, mats, pool, u, f); break;  // Tri3
-  case 8: applyCells<4, 2>(ncell_, dofs, mats, pool, u, f); break;  // Quad4
-  case 12: applyCells<4, 3>(ncell_, dofs, mats, pool, u, f); break; // Tet4
-  case 24: applyCells<8, 3>(ncell_, dofs, mats, pool, u, f); break; // Hex8
+namespace {
+
+void applyAll(PetscInt nen, PetscInt dim, PetscInt ncell, const PetscInt *dofs, const PetscInt *mats, const double *pool, const PetscScalar *u, PetscScalar *f) {
+  switch (nen * dim) {
+  case 6: applyCells<3, 2>(ncell, dofs, mats, pool, u, f); break;  // Tri3
+  case 8: applyCells<4, 2>(ncell, dofs, mats, pool, u, f); break;  // Quad4
+  case 12: applyCells<4, 3>(ncell, dofs, mats, pool, u, f); break; // Tet4
+  case 24: applyCells<8, 3>(ncell, dofs, mats, pool, u, f); break; // Hex8
   default: break;
   }
+}
+
+} // namespace
+
+void BulkOperator::addStiffnessTimes(const PetscScalar *u, PetscScalar *f) const {
+  applyAll(nen_, dim_, ncell_, cell_dofs_.data(), cell_matrix_.data(), stiffness_.data(), u, f);
+}
+
+BulkOperator::CellSubset BulkOperator::subset(const std::vector<PetscInt> &cells) const {
+  CellSubset s;
+  for (PetscInt c : cells) {
+    s.dofs.insert(s.dofs.end(), cell_dofs_.begin() + c * nen_, cell_dofs_.begin() + (c + 1) * nen_);
+    s.matrix.push_back(cell_matrix_[c]);
+  }
+  return s;
+}
+
+void BulkOperator::addStiffnessTimes(const CellSubset &cells, const PetscScalar *u, PetscScalar *f) const {
+  applyAll(nen_, dim_, (PetscInt)cells.matrix.size(), cells.dofs.data(), cells.matrix.data(), stiffness_.data(), u, f);
 }
 
 void BulkOperator::addLumpedMass(PetscScalar *mass) const {

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "slipwave/app/log_events.hpp"
+#include "slipwave/model/attenuation.hpp"
 #include "slipwave/model/free_field.hpp"
 #include "slipwave/model/lateral_tie.hpp"
 #include "slipwave/model/node_fields.hpp"
@@ -148,16 +149,18 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(NodeFieldSetSection(m->dm, m->dim));
   PetscCall(MaterialsRead(comm, m->mesh.regions, &m->materials));
   PetscCall(readDamping(m));
+  PetscCall(AttenuationCreate(comm, &m->materials, &m->attenuation));
   std::vector<fem::RegionMaterial> fe;
   for (const auto &info : m->materials) fe.push_back(info.fe);
   PetscCall(m->bulk.Setup(m->dm, fe));
+  if (m->attenuation) PetscCall(AttenuationSetupCells(m->attenuation, m->dm, m->bulk));
   PetscCall(DMCreateLocalVector(m->dm, &m->u_local));
   PetscCall(VecDuplicate(m->u_local, &m->f_local));
   PetscCall(assembleMass(m));
   PetscCall(BoundaryConditionsCreate(m->dm, m->mesh.boundaries, m->materials, m->mass, &m->bc));
   PetscCall(assembleDampingBlocks(m));
   PetscCall(LateralTieCreate(m->dm, m->bc, m->mass, &m->tie));
-  if (m->bc.has_free_field) PetscCall(FreeFieldCreate(m->dm, m->bc, m->materials, m->rayleigh, m->bulk.minCellSize(), &m->free_field));
+  if (m->bc.has_free_field) PetscCall(FreeFieldCreate(m->dm, m->bc, m->materials, m->rayleigh, m->attenuation, m->bulk.minCellSize(), &m->free_field));
   PetscCall(VecDuplicate(m->mass, &m->f_internal));
   PetscCall(VecDuplicate(m->mass, &m->f_external));
   PetscCall(VecDuplicate(m->mass, &m->f_input));
@@ -165,6 +168,8 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(VecZeroEntries(m->f_stiffness_damping));
   PetscCall(VecDuplicate(m->mass, &m->f_interface));
   PetscCall(VecZeroEntries(m->f_interface));
+  PetscCall(VecDuplicate(m->mass, &m->f_anelastic));
+  PetscCall(VecZeroEntries(m->f_anelastic));
   PetscCall(createInterfaces(m));
   PetscFunctionReturn(0);
 }
@@ -174,9 +179,10 @@ PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
   PetscCall(BoundaryConditionsDestroy(&m->bc));
   PetscCall(FreeFieldDestroy(&m->free_field));
   PetscCall(LateralTieDestroy(&m->tie));
+  PetscCall(AttenuationDestroy(&m->attenuation));
   for (auto &iface : m->interfaces) PetscCall(iface.Destroy());
   PetscCall(VecDestroy(&m->f_interface));
-  for (Vec *v : {&m->mass, &m->inv_mass, &m->damping_blocks, &m->u_local, &m->f_local, &m->f_internal, &m->f_external, &m->f_input, &m->f_stiffness_damping})
+  for (Vec *v : {&m->mass, &m->inv_mass, &m->damping_blocks, &m->u_local, &m->f_local, &m->f_internal, &m->f_external, &m->f_input, &m->f_stiffness_damping, &m->f_anelastic})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&m->dm));
   PetscFunctionReturn(0);
@@ -187,6 +193,9 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(app::event_bulk_force, 0, 0, 0, 0));
   PetscCall(ElastodynamicsStiffnessTimes(m, u, m->f_internal));
+  // The memory forces need K_U u and the ghosted u that K u has just gathered into u_local.
+  // Off in the geostatic stage (input_enabled false): the memory starts with the dynamic stage.
+  if (m->attenuation && m->input_enabled) PetscCall(AttenuationForce(m->attenuation, m->dm, m->bulk, m->u_local, m->f_internal, t, m->f_anelastic));
   if (m->rayleigh.beta > 0) {
     Vec v_half;
     PetscCall(time::CentralDifferenceGetHalfStepVelocity(ts, &v_half));
@@ -212,18 +221,20 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   }
   PetscInt           n;
   PetscScalar       *acc;
-  const PetscScalar *fe, *fi, *fd, *fif, *im, *mask;
+  const PetscScalar *fe, *fi, *fd, *fif, *fan, *im, *mask;
   PetscCall(VecGetLocalSize(a, &n));
   PetscCall(VecGetArray(a, &acc));
   PetscCall(VecGetArrayRead(m->f_external, &fe));
   PetscCall(VecGetArrayRead(m->f_internal, &fi));
   PetscCall(VecGetArrayRead(m->f_stiffness_damping, &fd));
   PetscCall(VecGetArrayRead(m->f_interface, &fif));
+  PetscCall(VecGetArrayRead(m->f_anelastic, &fan));
   PetscCall(VecGetArrayRead(m->inv_mass, &im));
   PetscCall(VecGetArrayRead(m->bc.free_mask, &mask));
-  for (PetscInt i = 0; i < n; ++i) acc[i] = mask[i] * im[i] * (fe[i] - fi[i] - fd[i] + fif[i]);
+  for (PetscInt i = 0; i < n; ++i) acc[i] = mask[i] * im[i] * (fe[i] - fi[i] - fd[i] + fif[i] + fan[i]);
   PetscCall(VecRestoreArrayRead(m->bc.free_mask, &mask));
   PetscCall(VecRestoreArrayRead(m->inv_mass, &im));
+  PetscCall(VecRestoreArrayRead(m->f_anelastic, &fan));
   PetscCall(VecRestoreArrayRead(m->f_interface, &fif));
   PetscCall(VecRestoreArrayRead(m->f_stiffness_damping, &fd));
   PetscCall(VecRestoreArrayRead(m->f_internal, &fi));
@@ -271,6 +282,7 @@ PetscErrorCode ElastodynamicsStableStep(Elastodynamics *m, StableStep *step) {
   step->omega_max_bulk        = omega_all;
   step->dt_bulk               = dtOf(omega_all);
   step->dt_without_interfaces = dtOf(omega_bulk);
+  step->dt_without_stiffness_damping = omega_all > 0 ? physics::centralDifferenceStableStep(omega_all, 0.0) : 1e300;
   double vp_max        = 0;
   for (const auto &info : m->materials) vp_max = std::max(vp_max, info.elastic.vp);
   step->dt_cfl    = m->bulk.minCellSize() / vp_max;

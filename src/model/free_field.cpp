@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "slipwave/model/attenuation.hpp"
 #include "slipwave/model/boundary_faces.hpp"
 #include "slipwave/physics/absorbing_boundary.hpp"
 
@@ -39,10 +40,12 @@ struct VertexHeights {
   }
 };
 
-bool sameMaterial(const physics::ElasticMaterial &a, const physics::ElasticMaterial &b) { return a.rho == b.rho && a.vp == b.vp && a.vs == b.vs; }
+bool sameMaterial(const RegionMaterialInfo &a, const RegionMaterialInfo &b) {
+  return a.elastic.rho == b.elastic.rho && a.elastic.vp == b.elastic.vp && a.elastic.vs == b.elastic.vs && a.damping_ratio == b.damping_ratio;
+}
 
 PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryConditions &bc, const std::vector<RegionMaterialInfo> &materials,
-                         const physics::RayleighCoefficients &rayleigh, double tol, FreeFieldSide *side) {
+                         const physics::RayleighCoefficients &rayleigh, const Attenuation *att, double tol, FreeFieldSide *side) {
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   PetscInt dim;
   PetscFunctionBeginUser;
@@ -127,13 +130,25 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
     PetscCheck(seg_max[e] >= 0, comm, PETSC_ERR_USER_INPUT, "-bc_%s_type freefield: boundary '%s' has no face between heights %g and %g; allowed: a side without gaps",
                name.c_str(), name.c_str(), heights[e], heights[e + 1]);
     const auto &a = materials[seg_min[e]], &b = materials[seg_max[e]];
-    PetscCheck(sameMaterial(a.elastic, b.elastic), comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(sameMaterial(a, b), comm, PETSC_ERR_USER_INPUT,
                "-bc_%s_type freefield: along '%s' between heights %g and %g the regions %s and %s differ; allowed: horizontally layered materials along a free-field side",
                name.c_str(), name.c_str(), heights[e], heights[e + 1], a.region.c_str(), b.region.c_str());
     seg_mat[e] = a.elastic;
   }
   const std::string problem = side->column.setup((int)dim, heights, seg_mat, rayleigh.alpha, rayleigh.beta);
   PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "-bc_%s_type freefield: %s", name.c_str(), problem.c_str());
+  if (att) {
+    // The column's segments carry the damping of the side's cells, so that the free-field
+    // traction matches the interior's stress, memory included.
+    std::vector<physics::ConstantQModel> seg_models(nseg);
+    std::vector<double>                  seg_factor(nseg);
+    for (int e = 0; e < nseg; ++e) {
+      seg_models[e] = att->region_models[seg_min[e]];
+      seg_factor[e] = att->region_factor[seg_min[e]];
+    }
+    const std::string q_problem = side->column.setAttenuation(seg_models, seg_factor);
+    PetscCheck(q_problem.empty(), comm, PETSC_ERR_PLIB, "-bc_%s_type freefield: %s", name.c_str(), q_problem.c_str());
+  }
   if (bc.input_wave != "none") side->column.setInput((int)bc.input_component, bc.input_wave == "p");
   PetscFunctionReturn(0);
 }
@@ -141,14 +156,14 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
 } // namespace
 
 PetscErrorCode FreeFieldCreate(DM dm, const BoundaryConditions &bc, const std::vector<RegionMaterialInfo> &materials, const physics::RayleighCoefficients &rayleigh,
-                               double h_min, FreeField **out) {
+                               const Attenuation *att, double h_min, FreeField **out) {
   PetscFunctionBeginUser;
   auto *ff = new FreeField();
   PetscCall(DMGetDimension(dm, &ff->dim));
   for (size_t i = 0; i < bc.names.size(); ++i)
     if (bc.types[i] == BoundaryType::FreeField) {
       ff->sides.emplace_back();
-      PetscCall(buildSide(dm, bc.names[i], bc, materials, rayleigh, 1e-9 * h_min, &ff->sides.back()));
+      PetscCall(buildSide(dm, bc.names[i], bc, materials, rayleigh, att, 1e-9 * h_min, &ff->sides.back()));
     }
   PetscCall(DMCreateGlobalVector(dm, &ff->force));
   PetscCall(DMCreateLocalVector(dm, &ff->force_local));

@@ -15,7 +15,7 @@ PetscErrorCode materialNamesGiven(std::vector<std::string> *names) {
   PetscCall(PetscOptionsGetAll(nullptr, &all));
   std::stringstream ss(all ? all : "");
   std::string       token;
-  const char       *properties[] = {"_rho", "_vp", "_vs", "_E", "_nu"};
+  const char       *properties[] = {"_rho", "_vp", "_vs", "_E", "_nu", "_damping_ratio"};
   while (ss >> token) {
     if (token.rfind("-material_", 0) != 0) continue;
     std::string rest = token.substr(std::strlen("-material_"));
@@ -48,7 +48,7 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
   for (const std::string &region : regions) {
     const std::string prefix = "material_" + region + "_";
     const std::string title  = "Material of region " + region;
-    PetscReal         rho = 0, vp = 0, vs = 0, young = 0, nu = 0;
+    PetscReal         rho = 0, vp = 0, vs = 0, young = 0, nu = 0, damping_ratio = 0;
     PetscBool         has_rho, has_vp, has_vs, has_e, has_nu;
     PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
     PetscCall(PetscOptionsReal("-rho", "mass density [kg/m^3]", "MaterialsRead", rho, &rho, &has_rho));
@@ -56,6 +56,8 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
     PetscCall(PetscOptionsReal("-vs", "S-wave speed [m/s] (with -vp)", "MaterialsRead", vs, &vs, &has_vs));
     PetscCall(PetscOptionsReal("-E", "Young's modulus [Pa] (with -nu, instead of -vp/-vs)", "MaterialsRead", young, &young, &has_e));
     PetscCall(PetscOptionsReal("-nu", "Poisson's ratio [-] (with -E)", "MaterialsRead", nu, &nu, &has_nu));
+    PetscCall(PetscOptionsReal("-damping_ratio", "constant-Q damping ratio xi [-] of P and S waves, Q = 1/(2 xi) (0 <= xi < 0.5; 0: elastic)", "MaterialsRead",
+                               damping_ratio, &damping_ratio, nullptr));
     PetscOptionsEnd();
     const char *r = region.c_str();
     PetscCheck(has_rho || has_vp || has_vs || has_e || has_nu, comm, PETSC_ERR_USER_INPUT,
@@ -78,10 +80,13 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
       problem = physics::elasticMaterialProblem(m);
     }
     PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "material of region '%s' (-material_%s_...): %s", r, r, problem.c_str());
+    PetscCheck(damping_ratio >= 0 && damping_ratio < 0.5, comm, PETSC_ERR_USER_INPUT, "-material_%s_damping_ratio = %g; allowed: 0 <= xi < 0.5 (0: elastic)", r,
+               (double)damping_ratio);
     RegionMaterialInfo info;
     info.region  = region;
     info.elastic = m;
     info.fe      = fem::RegionMaterial{m.rho, physics::lame(m)};
+    info.damping_ratio = damping_ratio;
     materials->push_back(info);
   }
   PetscFunctionReturn(0);

@@ -31,11 +31,11 @@ def interface_frames(out_dir, name, field):
 
 def stored_total(d):
     """Mechanical energy held or spent by the model: kinetic + strain + interface stored +
-    interface dissipated + absorbed + damped, minus what the loads put in (input and external
+    interface dissipated + absorbed + damped + anelastic, minus what the loads put in (input and external
     work). For a closed model without loads this is the brief's kinetic + strain + interface
     terms; its growth above the energy at t = 0 is energy the scheme created."""
     return (d["kinetic"] + d["strain"] + d["interface_stored"] + d["interface_dissipated"] + d["absorbed"] + d["damped"]
-            - d["input_work"] - d["external_work"])
+            + d["anelastic"] - d["input_work"] - d["external_work"])
 
 
 def energy_growth(args):

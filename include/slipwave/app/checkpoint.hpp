@@ -3,7 +3,7 @@
 // name and renamed, so a crash never leaves half a checkpoint) holds: time, step and step
 // size; u, v, a and the force parts of the last right-hand side (the energy ledger needs
 // them); the constant loads and initial stresses left by a geostatic stage; every interface
-// pair's state; the free-field columns; the energy ledger; the station records and the
+// pair's state; the free-field columns; the constant-Q memory variables; the energy ledger; the station records and the
 // output times so far.
 // A restart runs on the same number of ranks (pairs and stations are stored per rank).
 #pragma once

@@ -23,6 +23,12 @@ public:
 
   // f_local += K u_local on the cells of this rank (local, ghosted arrays; no communication).
   void addStiffnessTimes(const PetscScalar *u_local, PetscScalar *f_local) const;
+  // The same on a subset of cells (ascending local cell numbers), through the same loop.
+  struct CellSubset {
+    std::vector<PetscInt> dofs, matrix; // per cell of the subset: its node dof offsets, its matrix
+  };
+  CellSubset subset(const std::vector<PetscInt> &cells) const;
+  void       addStiffnessTimes(const CellSubset &cells, const PetscScalar *u_local, PetscScalar *f_local) const;
   // Adds the row-sum lumped mass (one value per dof) to a local array.
   void addLumpedMass(PetscScalar *mass_local) const;
   // Adds sum_j |K_ij| per dof (Gershgorin row sums) to a local array.

@@ -1,7 +1,7 @@
 // The semi-discrete elastodynamic system M a + C v + K u = f(t) on the mesh: lumped mass,
 // bulk stiffness (our element loop), boundary conditions and loads, Rayleigh damping.
 // ElastodynamicsRHS is the TS right-hand side for the "cd" type: it returns
-// a* = M^{-1}(f_ext - K u - beta K v_{n+1/2}) on free dofs and the prescribed acceleration
+// a* = M^{-1}(f_ext - K u - beta K v_{n+1/2} + f_anelastic) on free dofs and the prescribed acceleration
 // on held ones; the nodal part of C (dashpots, alpha M) goes to the TS as damping blocks.
 #pragma once
 #include <petscts.h>
@@ -20,6 +20,7 @@ namespace slipwave::model {
 
 struct FreeField;  // model/free_field.hpp
 struct LateralTie; // model/lateral_tie.hpp
+struct Attenuation; // model/attenuation.hpp
 
 struct StableStep {
   double omega_max_bulk = 0; // Gershgorin bound on the largest angular frequency [rad/s]
@@ -28,6 +29,7 @@ struct StableStep {
   double dt_limit = 0;       // the limit a run must respect [s]
   double dt_without_interfaces = 0; // the bulk alone, to report what the penalty costs [s]
   double dt_free_field = 1e300; // the free-field columns' own limit (normally above the bulk's) [s]
+  double dt_without_stiffness_damping = 0; // the same bound with beta = 0, to report what Rayleigh costs [s]
   std::string governing;     // which constraint sets dt_limit
 };
 
@@ -50,12 +52,14 @@ struct Elastodynamics {
   Vec u_local = nullptr, f_local = nullptr;
   // Parts of the last RHS evaluation, for the energy ledger.
   Vec       f_internal = nullptr, f_external = nullptr, f_input = nullptr, f_stiffness_damping = nullptr, f_interface = nullptr;
+  Vec       f_anelastic = nullptr; // + sum of the constant-Q memory forces (zero without attenuation)
   PetscReal rhs_time = 0;
   bool      input_enabled = true;       // off during the geostatic stage
   std::vector<double> initial_stress;   // 6 per local cell: the geostatic state, added to the output
   TS        ts = nullptr; // set by the driver: the RHS reads the half-step velocity from it
   FreeField  *free_field = nullptr; // free-field lateral columns (-bc_<side>_type freefield), or null
   LateralTie *tie        = nullptr; // tied lateral sides (-bc_<side>_type tied), or null
+  Attenuation *attenuation = nullptr; // constant-Q damping of regions with a damping ratio, or null
 };
 
 PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);

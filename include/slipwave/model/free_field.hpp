@@ -38,6 +38,8 @@
 
 namespace slipwave::model {
 
+struct Attenuation; // model/attenuation.hpp
+
 struct FreeFieldTerm {
   PetscInt offset;      // local-vector offset of the node's first dof
   int      node;        // column node at the vertex's height
@@ -61,9 +63,10 @@ struct FreeField {
 };
 
 // Builds the columns of every boundary of type freefield (bc must be created). h_min: the
-// smallest cell size (the height-matching tolerance is 1e-9 of it).
+// smallest cell size (the height-matching tolerance is 1e-9 of it). attenuation (or null):
+// the constant-Q damping the columns' segments take from their regions.
 PetscErrorCode FreeFieldCreate(DM dm, const BoundaryConditions &bc, const std::vector<RegionMaterialInfo> &materials, const physics::RayleighCoefficients &rayleigh,
-                               double h_min, FreeField **ff);
+                               const Attenuation *attenuation, double h_min, FreeField **ff);
 // Brings the columns to time t (starting them on the first call, stepping them when t is new)
 // and assembles the force into ff->force. enabled = false (geostatic stage): the force is zero
 // and the columns stay unstarted. ts may be null; it supplies the step when given.

@@ -1,5 +1,6 @@
 // Linear elastic isotropic material per region, from -material_<region>_{rho,vp,vs} or
-// -material_<region>_{rho,E,nu}. A region without a material, or a -material_<name>_*
+// -material_<region>_{rho,E,nu}, and a constant-Q damping ratio -material_<region>_damping_ratio.
+// A region without a material, or a -material_<name>_*
 // option naming no region, stops the run.
 #pragma once
 #include <petscsys.h>
@@ -15,7 +16,8 @@ namespace slipwave::model {
 struct RegionMaterialInfo {
   std::string               region;
   physics::ElasticMaterial  elastic;
-  fem::RegionMaterial       fe;
+  fem::RegionMaterial       fe;            // element moduli: unrelaxed ones in a damped region (model/attenuation.hpp)
+  double                    damping_ratio = 0; // constant-Q damping ratio; 0: elastic
 };
 
 PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regions, std::vector<RegionMaterialInfo> *materials);

@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "slipwave/physics/constant_q.hpp"
 #include "slipwave/physics/elastic_material.hpp"
 
 namespace slipwave::physics {
@@ -46,6 +47,12 @@ public:
   // The incident wave: particle-velocity component (0 .. dim-1) and its speed (vs for an S
   // wave, vp for a P wave). Without a call the base only absorbs.
   void setInput(int component, bool p_wave);
+  // Constant-Q damping per segment, as the main mesh's cells have it (model/attenuation.hpp):
+  // models[e] is the segment's fitted body (no mechanisms: elastic), factor[e] its unrelaxed
+  // modulus factor M_U/(rho c^2). Every spring becomes k_U Δu - sum_l zeta_l with
+  // d zeta_l/dt = w_l (Y_l k_U Δu - zeta_l), updated exactly (memoryUpdate) once per step.
+  // All damped segments share the relaxation frequencies. Call after setup.
+  std::string setAttenuation(const std::vector<ConstantQModel> &models, const std::vector<double> &factor);
 
   // State at rest at time t0; a_0 from the input velocity v_in(t0).
   void start(double t0, double v_in0);
@@ -72,7 +79,7 @@ public:
   double omegaMax() const;
   double stableStep() const;
 
-  // Full state for checkpoints: t, u, v, a, v_half.
+  // Full state for checkpoints: t, u, v, a, v_half, memory variables and last spring forces.
   std::vector<double> state() const;
   bool                setState(const std::vector<double> &s);
 
@@ -89,6 +96,11 @@ private:
   double                       input_impedance_ = 0; // rho c of the base segment for the input
   std::vector<double>          base_dashpot_;        // per component
   std::vector<double>          u_, v_, a_, v_half_, a_star_, work_;
+  std::vector<double>          modulus_factor_;     // per segment: M_U / (rho c^2), 1 if elastic
+  std::vector<double>          memory_omega_;       // w_l shared by the damped segments
+  std::vector<double>          memory_weight_;      // Y_l per segment ([e * L + l]; 0 if elastic)
+  std::vector<double>          zeta_, spring_old_;  // [(e * dim + c) * L + l], [e * dim + c]
+  void                         memoryForce(double h, std::vector<double> &f); // updates zeta_, adds its force
   double                       t_ = 0;
   bool                         started_ = false;
 };
