@@ -27,7 +27,7 @@ PetscErrorCode AttenuationCreate(MPI_Comm comm, std::vector<RegionMaterialInfo> 
   PetscCall(PetscOptionsRealArray("-band", "frequency band f_min,f_max [Hz] over which Q is fitted (0 < f_min < f_max)", "AttenuationCreate", band, &nband, &band_set));
   PetscCall(PetscOptionsInt("-mechanisms", "relaxation mechanisms (memory variables) per region, 1 to 8", "AttenuationCreate", mechanisms, &mechanisms, nullptr));
   PetscCall(PetscOptionsReal("-reference_frequency",
-                             "frequency [Hz] at which the given vp, vs hold (> 0; default: the band top, or higher if needed to keep the stable-step drop <= 1.9 %)",
+                             "frequency [Hz] at which the given vp, vs hold (> 0; default: the band's geometric centre, raised where needed to keep the whole mesh's stable-step drop <= 1.9 %)",
                              "AttenuationCreate", f_reference, &f_reference, &reference_set));
   PetscOptionsEnd();
   PetscCheck(!band_set || nband == 2, comm, PETSC_ERR_USER_INPUT, "-attenuation_band has %" PetscInt_FMT " values; allowed: two frequencies f_min,f_max [Hz]", nband);
@@ -49,16 +49,73 @@ PetscErrorCode AttenuationCreate(MPI_Comm comm, std::vector<RegionMaterialInfo> 
     double                  reference = 0, factor = 1;
     if (m.damping_ratio > 0) {
       model     = physics::constantQFit(m.damping_ratio, band[0], band[1], (int)mechanisms);
-      reference = reference_set ? f_reference : physics::constantQReferenceForStepDrop(model, band[1], kMaxStepDrop);
-      factor    = physics::constantQUnrelaxedFactor(model, reference);
-      m.fe.lame.lambda *= factor;
-      m.fe.lame.mu *= factor;
+      // A given reference scales the moduli now; the automatic one waits for the mesh
+      // (AttenuationChooseReferences).
+      if (reference_set) {
+        reference = f_reference;
+        factor    = physics::constantQUnrelaxedFactor(model, reference);
+        m.fe.lame.lambda *= factor;
+        m.fe.lame.mu *= factor;
+      }
     }
     att->region_models.push_back(model);
     att->region_reference.push_back(reference);
     att->region_factor.push_back(factor);
   }
   *out = att;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AttenuationChooseReferences(Attenuation *att, DM dm, const fem::BulkOperator &bulk, Vec mass, Vec free_mask, std::vector<RegionMaterialInfo> *materials) {
+  MPI_Comm     comm = PetscObjectComm((PetscObject)dm);
+  Vec          omega2, omega2_local;
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  // Gershgorin per dof of the elastic bulk, omega_i^2 = sum_j |K_ij| / m_i (free dofs only), as
+  // ElastodynamicsStableStep bounds it.
+  PetscCall(DMGetLocalVector(dm, &omega2_local));
+  PetscCall(VecZeroEntries(omega2_local));
+  PetscCall(VecGetArray(omega2_local, &a));
+  bulk.addStiffnessRowAbsSums(a);
+  PetscCall(VecRestoreArray(omega2_local, &a));
+  PetscCall(VecDuplicate(mass, &omega2));
+  PetscCall(VecZeroEntries(omega2));
+  PetscCall(DMLocalToGlobal(dm, omega2_local, ADD_VALUES, omega2));
+  PetscCall(VecPointwiseDivide(omega2, omega2, mass));
+  PetscCall(VecPointwiseMult(omega2, omega2, free_mask));
+  PetscReal omega2_all;
+  PetscCall(VecMax(omega2, nullptr, &omega2_all));
+  PetscCall(DMGlobalToLocal(dm, omega2, INSERT_VALUES, omega2_local));
+  // The largest omega_i^2 over the dofs each region's cells touch.
+  std::vector<double> omega2_region(materials->size(), 0.0);
+  PetscCall(VecGetArray(omega2_local, &a));
+  for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
+    double &w = omega2_region[bulk.cellRegion(c)];
+    for (PetscInt n = 0; n < bulk.nodesPerCell(); ++n)
+      for (PetscInt i = 0; i < bulk.dimension(); ++i) w = std::max(w, (double)PetscRealPart(a[bulk.cellNodeOffset(c, n) + i]));
+  }
+  PetscCall(VecRestoreArray(omega2_local, &a));
+  PetscCall(DMRestoreLocalVector(dm, &omega2_local));
+  PetscCall(VecDestroy(&omega2));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, omega2_region.data(), (int)omega2_region.size(), MPI_DOUBLE, MPI_MAX, comm));
+  // Scaling region r's moduli by s_r scales its part of every row it touches, so a dof's bound
+  // grows by at most the largest s_r of the regions around it: s_r <= omega2_all / omega2_r /
+  // (1 - drop)^2 keeps the whole mesh within the drop. A region away from the governing cells
+  // can then take its reference at the band's geometric centre, where the given speeds are
+  // right in the middle of the band (dispersion split evenly); a governing one goes up.
+  const double f_centre = std::sqrt(att->f_min * att->f_max);
+  for (size_t r = 0; r < materials->size(); ++r) {
+    const auto &model = att->region_models[r];
+    if (model.omega.empty()) continue;
+    const double s_max     = omega2_region[r] > 0 ? omega2_all / omega2_region[r] / ((1 - kMaxStepDrop) * (1 - kMaxStepDrop)) : 1e300;
+    const double own_drop  = 1 - 1 / std::sqrt(s_max);
+    const double reference = physics::constantQReferenceForStepDrop(model, f_centre, own_drop);
+    const double factor    = physics::constantQUnrelaxedFactor(model, reference);
+    att->region_reference[r] = reference;
+    att->region_factor[r]    = factor;
+    (*materials)[r].fe.lame.lambda *= factor;
+    (*materials)[r].fe.lame.mu *= factor;
+  }
   PetscFunctionReturn(0);
 }
 
@@ -203,8 +260,8 @@ std::vector<std::string> AttenuationReport(const Attenuation *att, const std::ve
                   100 * (q_lo * 2 * model.damping_ratio - 1), 100 * (q_hi * 2 * model.damping_ratio - 1));
     lines.push_back(buf);
     std::snprintf(buf, sizeof buf,
-                  "    vp, vs given at %.4g Hz%s; speeds x %.4f at %g Hz, x %.4f at %g Hz (dispersion); unrelaxed moduli x %.4f: stable step %.2f %% below an elastic model",
-                  f_r, att->reference_auto ? " (auto: stable-step drop <= 1.9 %)" : "", lo, att->f_min, hi, att->f_max, att->region_factor[r],
+                  "    vp, vs given at %.4g Hz%s; speeds x %.4f at %g Hz, x %.4f at %g Hz (dispersion); unrelaxed moduli x %.4f (this region's cells alone: stable step %.2f %% below elastic)",
+                  f_r, att->reference_auto ? " (auto: band centre, or above it where needed for a whole-mesh stable-step drop <= 1.9 %)" : "", lo, att->f_min, hi, att->f_max, att->region_factor[r],
                   100 * (1 - 1 / std::sqrt(att->region_factor[r])));
     lines.push_back(buf);
     std::string mech = "    mechanisms (relaxation frequency [Hz]: weight Y_l):";

@@ -150,14 +150,21 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(MaterialsRead(comm, m->mesh.regions, &m->materials));
   PetscCall(readDamping(m));
   PetscCall(AttenuationCreate(comm, &m->materials, &m->attenuation));
-  std::vector<fem::RegionMaterial> fe;
-  for (const auto &info : m->materials) fe.push_back(info.fe);
-  PetscCall(m->bulk.Setup(m->dm, fe));
-  if (m->attenuation) PetscCall(AttenuationSetupCells(m->attenuation, m->dm, m->bulk));
+  auto setupBulk = [m]() {
+    std::vector<fem::RegionMaterial> fe;
+    for (const auto &info : m->materials) fe.push_back(info.fe);
+    return m->bulk.Setup(m->dm, fe);
+  };
+  PetscCall(setupBulk());
   PetscCall(DMCreateLocalVector(m->dm, &m->u_local));
   PetscCall(VecDuplicate(m->u_local, &m->f_local));
   PetscCall(assembleMass(m));
   PetscCall(BoundaryConditionsCreate(m->dm, m->mesh.boundaries, m->materials, m->mass, &m->bc));
+  if (m->attenuation && m->attenuation->reference_auto) {
+    PetscCall(AttenuationChooseReferences(m->attenuation, m->dm, m->bulk, m->mass, m->bc.free_mask, &m->materials));
+    PetscCall(setupBulk());
+  }
+  if (m->attenuation) PetscCall(AttenuationSetupCells(m->attenuation, m->dm, m->bulk));
   PetscCall(assembleDampingBlocks(m));
   PetscCall(LateralTieCreate(m->dm, m->bc, m->mass, &m->tie));
   if (m->bc.has_free_field) PetscCall(FreeFieldCreate(m->dm, m->bc, m->materials, m->rayleigh, m->attenuation, m->bulk.minCellSize(), &m->free_field));

@@ -2,7 +2,8 @@
 // xi > 0 gives the region a generalized Maxwell body (physics/constant_q.hpp) fitted to
 // Q = 1/(2 xi) over -attenuation_band with -attenuation_mechanisms mechanisms; the same Q for P
 // and S waves (Qp = Qs). The given vp, vs hold at a reference frequency f_r
-// (-attenuation_reference_frequency); the element matrices use the unrelaxed moduli
+// (-attenuation_reference_frequency, or chosen by AttenuationChooseReferences); the element
+// matrices use the unrelaxed moduli
 // M_U = factor * rho c^2.
 // Memory variables: with one set of Y_l for P and S, the body acts on the element force
 // vector, a damped cell's internal force being K_U u_e - sum_l zeta_l with
@@ -57,6 +58,11 @@ struct Attenuation {
 // Reads the band options, fits every damped region and scales its element moduli (fe.lame)
 // to the unrelaxed ones. *att is null when no region is damped.
 PetscErrorCode AttenuationCreate(MPI_Comm comm, std::vector<RegionMaterialInfo> *materials, Attenuation **att);
+// The automatic reference frequency (no -attenuation_reference_frequency): per damped region
+// the lowest frequency from the band's geometric centre up that keeps the whole mesh's
+// Gershgorin stable step within 1.9 % of the elastic one, from the elastic bulk (its element
+// moduli are then scaled to the unrelaxed ones: set the bulk up again).
+PetscErrorCode AttenuationChooseReferences(Attenuation *att, DM dm, const fem::BulkOperator &bulk, Vec mass, Vec free_mask, std::vector<RegionMaterialInfo> *materials);
 PetscErrorCode AttenuationSetupCells(Attenuation *att, DM dm, const fem::BulkOperator &bulk);
 PetscErrorCode AttenuationDestroy(Attenuation **att);
 // f = sum_l zeta_l at time t (global) from the ghosted displacement u_local and the global
