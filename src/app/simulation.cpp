@@ -342,7 +342,7 @@ PetscErrorCode report(Run *r, TS ts) {
     PetscCall(PetscPrintf(comm, "\n"));
   }
   const Resolution res = resolvedFrequency(r);
-  PetscCall(PetscPrintf(comm, "  resolution: S waves up to %.3g Hz (%g points per wavelength in region %s, h_min %.3g m)\n", res.frequency, kPointsPerWavelength,
+  PetscCall(PetscPrintf(comm, "  resolution: S waves up to %.3g Hz (%d points per wavelength in region %s, h_min %.3g m)\n", res.frequency, (int)kPointsPerWavelength,
                         res.region.c_str(), r->model.bulk.minCellSize()));
   std::string bcs;
   for (size_t i = 0; i < r->model.bc.names.size(); ++i) bcs += " " + r->model.bc.names[i] + "=" + model::boundaryTypeName(r->model.bc.types[i]);

@@ -37,12 +37,12 @@ const char *unitName(AccelerationUnit unit) { return unit == AccelerationUnit::G
 enum class HeaderUnit { None, MetresPerSecondSquared, G, Other };
 
 HeaderUnit headerUnit(const std::string &column) {
-  std::string s;
+  std::string s; // lower case, without blanks: "m / s^2" reads as "m/s^2"
   for (char c : column)
     if (!std::isspace((unsigned char)c)) s += (char)std::tolower((unsigned char)c);
-  std::vector<std::string> words(1);
-  for (char c : s) {
-    if (std::isalnum((unsigned char)c)) words.back() += c;
+  std::vector<std::string> words(1); // lower-case alphanumeric words: "acceleration", "g"
+  for (char c : column) {
+    if (std::isalnum((unsigned char)c)) words.back() += (char)std::tolower((unsigned char)c);
     else if (!words.back().empty()) words.emplace_back();
   }
   for (const std::string &w : words)
