@@ -250,10 +250,10 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
   io::GroundMotionRecord record;
   io::ReadStatus         status;
   PetscCall(readRecordCollective(comm, file, at2, unit, &record, &status));
-  PetscCheck(status.ok, comm, PETSC_ERR_FILE_OPEN, "%srecord (%s): %s; allowed: %s", p.c_str(), at2 ? "PEER .AT2" : "CSV", status.message.c_str(),
-             at2 ? "a PEER NGA .AT2 file: 3 header lines, a 4th with NPTS and DT, then NPTS accelerations in g"
-                 : "a CSV file of lines \"time,acceleration\" [s; m/s^2, or g when the header's acceleration column says g or with -record_units g], optional "
-                   "header, at least 2 samples, times increasing");
+  const std::string allowed = at2 ? "a PEER NGA .AT2 file: 3 header lines, a 4th with NPTS and DT, then NPTS accelerations in g"
+                                  : "a CSV file of lines \"time,acceleration\" [s; m/s^2, or g when the header's acceleration column says g or with " + p +
+                                      "record_units g], optional header, at least 2 samples, times increasing";
+  PetscCheck(status.ok, comm, PETSC_ERR_FILE_OPEN, "%srecord (%s): %s; allowed: %s", p.c_str(), at2 ? "PEER .AT2" : "CSV", status.message.c_str(), allowed.c_str());
   if (baseline) io::removeBaselineDrift(&record);
   double record_peak = 0;
   for (double a : record.acceleration) record_peak = std::max(record_peak, std::fabs(a));
