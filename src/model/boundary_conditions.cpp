@@ -202,10 +202,9 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
       // velocity that way).
       if (bc->input_wave != "none" && name != bc->input_boundary &&
           std::find(components.begin(), components.end(), bc->input_component) != components.end()) {
-        std::string w = "boundary '" + name + "' is fixed in " + "xyz"[bc->input_component] + ", the component the incident " +
-                        (bc->input_wave == "sv" ? "SV" : "P") + " wave moves: it holds back the free-field motion; use -" + prefix +
-                        "type freefield (or tied with the opposite side)";
-        bc->warnings.push_back(w);
+        bc->warnings.push_back("boundary '" + name + "' is fixed in " + "xyz"[bc->input_component] + ", the component the incident " +
+                               (bc->input_wave == "sv" ? "SV" : "P") + " wave moves: it holds back the free-field motion; use -" + prefix +
+                               "type freefield (or tied with the opposite side)");
       }
       break;
     case BoundaryType::Traction:

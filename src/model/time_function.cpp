@@ -193,7 +193,7 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
   const std::string p = "-" + prefix, q = relativeName(prefix, PetscOptionsObject);
   char              file[PETSC_MAX_PATH_LEN] = "", format[16] = "", units[16] = "auto";
   PetscReal         scale = 1.0, pga_g = 0;
-  PetscInt          motion = 0; // kMotions: outcrop, incident
+  PetscInt          motion = 0; // index in motions[]: outcrop, incident
   PetscBool         baseline = PETSC_TRUE, has_file, has_format, has_amplitude, has_scale, has_pga;
   const char *const formats[] = {"csv", "at2"}, *const unit_choices[] = {"auto", "g", "m/s^2"};
   const char *const motions[] = {"outcrop", "incident", "RecordMotion", "", nullptr};
