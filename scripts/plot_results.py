@@ -14,8 +14,9 @@ OUT is the -output_dir of a run. Figures go to OUT/plots/ (or DIR):
   transfer_ratio.png            PSA(station) / PSA(reference station) of every other station:
                                 the structure / free-field spectral ratio (--reference NAME,
                                 default free_field; skipped without that station)
-  interface_<name>_history.png  accumulated slip and opening (mean and max over the pairs)
-                                and the fraction of pairs in stick / slip / open vs time
+  interface_<name>_history.png  accumulated slip (the slip path) and opening (mean and max
+                                over the pairs), the net tangential offset (mean slip), and
+                                the fraction of pairs in stick / slip / open vs time
   interface_<name>_profile.png  accumulated slip and opening of every pair at the last output
                                 step, and the accumulated slip in space and time
   energy.png                    the energy budget, with the balance error on a second axis
@@ -349,6 +350,13 @@ def plot_interface_history(name, data, plots, written):
         current = scalar_field(data, "slip")
         if current is not None and slip_label != "|slip|":
             ax.plot(t, current.max(axis=1), ls="--", lw=0.9, label="max |slip| (current tangential gap)")
+            # The net tangential offset: where the structure is relative to the soil (the
+            # mean jump over the pairs), against the slip path above (every increment).
+            mean_jump = data["fields"]["slip"].mean(axis=1)
+            if data["topology_type"] == "Polyline":
+                ax.plot(t, mean_jump[:, 0], color="k", lw=1.0, label="net tangential offset (mean slip, signed)")
+            else:
+                ax.plot(t, np.linalg.norm(mean_jump, axis=1), color="k", lw=1.0, label="net tangential offset (|mean slip|)")
         ax.legend(fontsize=8)
     else:
         ax.text(0.5, 0.5, "no slip field", ha="center", transform=ax.transAxes)
