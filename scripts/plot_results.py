@@ -1,12 +1,22 @@
 #!/usr/bin/python3
 """Plots the results of a slipwave run as PNG figures (matplotlib, no display needed).
 
-usage: /usr/bin/python3 scripts/plot_results.py OUT [--out DIR]
+usage: /usr/bin/python3 scripts/plot_results.py OUT [--out DIR] [--reference STATION]
 
 OUT is the -output_dir of a run. Figures go to OUT/plots/ (or DIR):
-  stations_acceleration.png     one row per station: horizontal and vertical acceleration
-  interface_<name>_history.png  accumulated slip and opening (mean and max over the pairs)
-                                and the fraction of pairs in stick / slip / open vs time
+  stations_acceleration.png     one row per station: horizontal and vertical acceleration as
+                                computed (unfiltered); the title gives the highest frequency
+                                the mesh resolves (OUT/run_info.json): content above it is
+                                numerical, not physical
+  spectra.png, spectra.csv      5 %-damped pseudo-acceleration response spectra PSA(T) [g]
+                                of every station's horizontal acceleration, T = 0.02 to 5 s
+                                (exact piecewise-linear oscillator step, response_spectrum.py)
+  transfer_ratio.png            PSA(station) / PSA(reference station) of every other station:
+                                the structure / free-field spectral ratio (--reference NAME,
+                                default free_field; skipped without that station)
+  interface_<name>_history.png  accumulated slip (the slip path) and opening (mean and max
+                                over the pairs), the net tangential offset (mean slip), and
+                                the fraction of pairs in stick / slip / open vs time
   interface_<name>_profile.png  accumulated slip and opening of every pair at the last output
                                 step, and the accumulated slip in space and time
   energy.png                    the energy budget, with the balance error on a second axis
@@ -17,6 +27,7 @@ The output may be plotted while the run is going (the XDMF lists the finished st
 """
 import argparse
 import glob
+import json
 import os
 import sys
 import xml.etree.ElementTree as ET
@@ -27,11 +38,16 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from response_spectrum import default_periods, pseudo_acceleration_spectrum, resample_uniform  # noqa: E402
+
 try:
     import h5py
 except ImportError:  # only the interface plots and stations.h5 need it
     h5py = None
 
+STANDARD_GRAVITY = 9.80665  # m/s^2 per g
+SPECTRUM_DAMPING = 0.05
 MAX_POINTS = 20000  # a time series longer than this is thinned for plotting (every k-th sample)
 STATUS_NAMES = ("stick", "slip", "open")
 STATUS_COLORS = ("tab:green", "tab:orange", "tab:red")
@@ -93,8 +109,20 @@ def read_stations(out):
     return stations
 
 
-def plot_stations(out, plots, written):
-    stations = read_stations(out)
+def resolution_note(out):
+    """The title's statement of what the mesh resolves, from OUT/run_info.json."""
+    path = os.path.join(out, "run_info.json")
+    try:
+        with open(path) as f:
+            info = json.load(f)
+        return (f"mesh resolves up to {info['resolved_frequency_hz']:.3g} Hz "
+                f"({info['points_per_wavelength']:g} points per S wavelength in '{info['slowest_region']}'); "
+                "content above is numerical")
+    except (OSError, ValueError, KeyError):
+        return "resolved frequency unknown (no run_info.json)"
+
+
+def plot_stations(out, plots, written, stations):
     if not stations:
         note("no station records (stations/*.csv or stations.h5): station plot skipped")
         return
@@ -119,10 +147,71 @@ def plot_stations(out, plots, written):
             ax.legend(loc="upper right", fontsize=8)
     for ax in axes[-1]:
         ax.set_xlabel("time [s]")
-    fig.suptitle(f"Station accelerations ({len(names)} station{'s' if len(names) > 1 else ''}; "
-                 "vertical includes gravity if applied)")
+    fig.suptitle(f"Station accelerations as computed, unfiltered ({len(names)} station{'s' if len(names) > 1 else ''}; "
+                 f"vertical includes gravity if applied)\n{resolution_note(out)}")
     fig.tight_layout()
     save(fig, os.path.join(plots, "stations_acceleration.png"), written)
+
+
+def station_spectra(stations):
+    """{(station, component): PSA [g]} of the horizontal components, and the periods [s]."""
+    periods = default_periods()
+    spectra = {}
+    for name, data in stations.items():
+        comps = [c for c in "xyz" if f"a_{c}" in data]
+        if len(data["t"]) < 2:
+            continue
+        for c in comps[:-1]:
+            dt, acc = resample_uniform(data["t"], data[f"a_{c}"])
+            spectra[(name, c)] = pseudo_acceleration_spectrum(acc, dt, periods, SPECTRUM_DAMPING) / STANDARD_GRAVITY
+    return periods, spectra
+
+
+def plot_spectra(plots, written, periods, spectra):
+    if not spectra:
+        note("no station records: response spectra skipped")
+        return
+    os.makedirs(plots, exist_ok=True)
+    keys = list(spectra)
+    path = os.path.join(plots, "spectra.csv")
+    header = "period_s," + ",".join(f"{name}_a_{c}_psa_g" for name, c in keys)
+    np.savetxt(path, np.column_stack([periods] + [spectra[k] for k in keys]), delimiter=",", header=header,
+               comments="", fmt="%.6g")
+    written.append(path)
+    fig, ax = plt.subplots(figsize=(10, 5.5))
+    for name, c in keys:
+        ax.plot(periods, spectra[(name, c)], label=f"{name} a_{c}")
+    ax.set_xscale("log")
+    ax.set_xlabel("period T [s]")
+    ax.set_ylabel("pseudo-acceleration PSA [g]")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    ax.set_title(f"{100 * SPECTRUM_DAMPING:g} %-damped pseudo-acceleration response spectra of the stations")
+    fig.tight_layout()
+    save(fig, os.path.join(plots, "spectra.png"), written)
+
+
+def plot_transfer(plots, written, periods, spectra, reference):
+    ref = {c: s for (name, c), s in spectra.items() if name == reference}
+    if not ref:
+        note(f"no station '{reference}' (the free-field reference, --reference): transfer ratio skipped")
+        return
+    others = [(name, c) for (name, c) in spectra if name != reference and c in ref]
+    if not others:
+        note(f"no station other than '{reference}': transfer ratio skipped")
+        return
+    fig, ax = plt.subplots(figsize=(10, 5.5))
+    for name, c in others:
+        ax.plot(periods, spectra[(name, c)] / ref[c], label=f"{name} / {reference} (a_{c})")
+    ax.axhline(1, color="k", lw=0.6)
+    ax.set_xscale("log")
+    ax.set_xlabel("period T [s]")
+    ax.set_ylabel("PSA ratio [-]")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    ax.set_title(f"Transfer ratio: {100 * SPECTRUM_DAMPING:g} %-damped PSA of each station over the free field '{reference}'")
+    fig.tight_layout()
+    save(fig, os.path.join(plots, "transfer_ratio.png"), written)
 
 
 # ---------------------------------------------------------------------------------------
@@ -261,6 +350,13 @@ def plot_interface_history(name, data, plots, written):
         current = scalar_field(data, "slip")
         if current is not None and slip_label != "|slip|":
             ax.plot(t, current.max(axis=1), ls="--", lw=0.9, label="max |slip| (current tangential gap)")
+            # The net tangential offset: where the structure is relative to the soil (the
+            # mean jump over the pairs), against the slip path above (every increment).
+            mean_jump = data["fields"]["slip"].mean(axis=1)
+            if data["topology_type"] == "Polyline":
+                ax.plot(t, mean_jump[:, 0], color="k", lw=1.0, label="net tangential offset (mean slip, signed)")
+            else:
+                ax.plot(t, np.linalg.norm(mean_jump, axis=1), color="k", lw=1.0, label="net tangential offset (|mean slip|)")
         ax.legend(fontsize=8)
     else:
         ax.text(0.5, 0.5, "no slip field", ha="center", transform=ax.transAxes)
@@ -453,13 +549,19 @@ def main():
     parser = argparse.ArgumentParser(description="Plots the results of a slipwave run as PNG files.")
     parser.add_argument("out", metavar="OUT", help="the -output_dir of the run")
     parser.add_argument("--out", dest="plots", metavar="DIR", help="where to write the figures (default OUT/plots)")
+    parser.add_argument("--reference", default="free_field", metavar="STATION",
+                        help="the free-field station the transfer ratio divides by (default free_field)")
     args = parser.parse_args()
     if not os.path.isdir(args.out):
         print(f"plot_results: error: {args.out} is not a directory", file=sys.stderr)
         return 1
     plots = args.plots or os.path.join(args.out, "plots")
     written = []
-    plot_stations(args.out, plots, written)
+    stations = read_stations(args.out)
+    plot_stations(args.out, plots, written, stations)
+    periods, spectra = station_spectra(stations)
+    plot_spectra(plots, written, periods, spectra)
+    plot_transfer(plots, written, periods, spectra, args.reference)
     plot_interfaces(args.out, plots, written)
     plot_energy(args.out, plots, written)
     if not written:

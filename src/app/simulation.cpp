@@ -290,6 +290,37 @@ PetscErrorCode reportCost(Run *r, double steps) {
   PetscFunctionReturn(0);
 }
 
+// The highest frequency the mesh carries: 10 points per S wavelength in the slowest region
+// (Kuhlemeyer & Lysmer 1973: elements of 1/8 to 1/10 of the shortest wavelength), with the
+// smallest cell size of the mesh.
+constexpr double kPointsPerWavelength = 10;
+
+struct Resolution {
+  double      frequency = 0; // Hz
+  std::string region;
+};
+
+Resolution resolvedFrequency(const Run *r) {
+  Resolution res;
+  for (const auto &m : r->model.materials) {
+    const double f = m.elastic.vs / (kPointsPerWavelength * r->model.bulk.minCellSize());
+    if (res.region.empty() || f < res.frequency) res = {f, m.region};
+  }
+  return res;
+}
+
+// OUTPUT_DIR/run_info.json: what scripts/plot_results.py needs to label its plots.
+void writeRunInfo(const Run *r, double dt) {
+  const Resolution res  = resolvedFrequency(r);
+  const std::string path = std::string(r->opt.output_dir) + "/run_info.json";
+  if (FILE *f = std::fopen(path.c_str(), "w")) {
+    std::fprintf(f, "{\"resolved_frequency_hz\": %.6g, \"points_per_wavelength\": %g, \"slowest_region\": \"%s\", \"h_min_m\": %.6g,\n", res.frequency,
+                 kPointsPerWavelength, res.region.c_str(), r->model.bulk.minCellSize());
+    std::fprintf(f, " \"input_top_frequency_hz\": %.6g, \"time_step_s\": %.10g}\n", r->model.bc.input.active() ? r->model.bc.input.topFrequency() : 0.0, dt);
+    std::fclose(f);
+  }
+}
+
 PetscErrorCode report(Run *r, TS ts) {
   MPI_Comm    comm = r->model.comm;
   PetscMPIInt size;
@@ -311,9 +342,13 @@ PetscErrorCode report(Run *r, TS ts) {
                                         r->model.bulk.minCellSize()));
     PetscCall(PetscPrintf(comm, "\n"));
   }
+  const Resolution res = resolvedFrequency(r);
+  PetscCall(PetscPrintf(comm, "  resolution: S waves up to %.3g Hz (%d points per wavelength in region %s, h_min %.3g m)\n", res.frequency, (int)kPointsPerWavelength,
+                        res.region.c_str(), r->model.bulk.minCellSize()));
   std::string bcs;
   for (size_t i = 0; i < r->model.bc.names.size(); ++i) bcs += " " + r->model.bc.names[i] + "=" + model::boundaryTypeName(r->model.bc.types[i]);
   PetscCall(PetscPrintf(comm, "  boundaries:%s\n", bcs.c_str()));
+  for (const std::string &w : r->model.bc.warnings) PetscCall(PetscPrintf(comm, "  warning: %s\n", w.c_str()));
   if (r->model.bc.input_wave != "none")
     PetscCall(PetscPrintf(comm, "  input: %s wave through '%s', %s\n", r->model.bc.input_wave.c_str(), r->model.bc.input_boundary.c_str(),
                           r->model.bc.input.describe().c_str()));
@@ -438,6 +473,7 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
     if (r->rank == 0) {
       std::filesystem::create_directories(r->opt.output_dir);
       PetscCall(openEnergyCsv(r));
+      writeRunInfo(r, dt);
     }
     if (r->opt.fields) {
       const auto *previous = r->opt.restart[0] ? &previous_frames : nullptr;

@@ -1,5 +1,6 @@
 #include "slipwave/io/ground_motion_record.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -30,25 +31,70 @@ bool parseNumber(const std::string &text, double *value) {
   return end == t.c_str() + t.size() && errno == 0 && std::isfinite(*value);
 }
 
+const char *unitName(AccelerationUnit unit) { return unit == AccelerationUnit::G ? "g" : "m/s^2"; }
+
+// What a CSV header's acceleration column name says about the unit of its values.
+enum class HeaderUnit { None, MetresPerSecondSquared, G, Other };
+
+HeaderUnit headerUnit(const std::string &column) {
+  std::string s; // lower case, without blanks: "m / s^2" reads as "m/s^2"
+  for (char c : column)
+    if (!std::isspace((unsigned char)c)) s += (char)std::tolower((unsigned char)c);
+  std::vector<std::string> words(1); // lower-case alphanumeric words: "acceleration", "g"
+  for (char c : column) {
+    if (std::isalnum((unsigned char)c)) words.back() += (char)std::tolower((unsigned char)c);
+    else if (!words.back().empty()) words.emplace_back();
+  }
+  for (const std::string &w : words)
+    if (w == "gal" || w == "gals") return HeaderUnit::Other;
+  if (s.find("cm/s") != std::string::npos || s.find("mm/s") != std::string::npos) return HeaderUnit::Other;
+  for (const char *si : {"m/s^2", "m/s2", "m/s/s", "mps2", "m/s\u00b2"})
+    if (s.find(si) != std::string::npos) return HeaderUnit::MetresPerSecondSquared;
+  for (const std::string &w : words)
+    if (w == "g") return HeaderUnit::G;
+  return HeaderUnit::None;
+}
+
+// The unit the values are in: the one asked for, checked against the header.
+ReadStatus resolveUnit(const std::string &path, const std::string &header, AccelerationUnit asked, AccelerationUnit *unit) {
+  const size_t     comma  = header.find(',');
+  const std::string column = trim(comma == std::string::npos ? std::string() : header.substr(comma + 1));
+  const HeaderUnit named  = headerUnit(column);
+  if (named == HeaderUnit::Other)
+    return failure(path, 1, "the header's acceleration column \"" + column + "\" names a unit that is neither g nor m/s^2 (convert the values)");
+  const AccelerationUnit from_header = named == HeaderUnit::G ? AccelerationUnit::G : AccelerationUnit::MetresPerSecondSquared;
+  *unit = asked == AccelerationUnit::FromHeader ? from_header : asked;
+  if (named != HeaderUnit::None && *unit != from_header)
+    return failure(path, 1, std::string("the header's acceleration column \"") + column + "\" is in " + unitName(from_header) + ", not in " + unitName(*unit) +
+                                " as asked");
+  return {};
+}
+
 } // namespace
 
-ReadStatus readAccelerationCsv(const std::string &path, GroundMotionRecord *record) {
+ReadStatus readAccelerationCsv(const std::string &path, GroundMotionRecord *record, AccelerationUnit unit) {
   std::ifstream in(path);
   if (!in) return failure(path, 0, "cannot open the file");
   record->time.clear(), record->acceleration.clear();
-  std::string line;
+  std::string line, header;
   int line_no = 0, previous_line = 0;
   while (std::getline(in, line)) {
     ++line_no;
     if (trim(line).empty()) continue;
     const size_t comma = line.find(',');
     if (comma == std::string::npos || line.find(',', comma + 1) != std::string::npos) {
-      if (line_no == 1) continue;  // header without the two-field shape
+      if (line_no == 1) {  // header without the two-field shape
+        header = line;
+        continue;
+      }
       return failure(path, line_no, "expected two comma-separated values \"time,acceleration\", got \"" + trim(line) + "\"");
     }
     double t, a;
     const bool t_ok = parseNumber(line.substr(0, comma), &t), a_ok = parseNumber(line.substr(comma + 1), &a);
-    if (line_no == 1 && !t_ok) continue;  // header
+    if (line_no == 1 && !t_ok) {  // header
+      header = line;
+      continue;
+    }
     if (!t_ok) return failure(path, line_no, "time \"" + trim(line.substr(0, comma)) + "\" is not a number");
     if (!a_ok) return failure(path, line_no, "acceleration \"" + trim(line.substr(comma + 1)) + "\" is not a number");
     if (!record->time.empty() && !(t > record->time.back())) {
@@ -63,6 +109,10 @@ ReadStatus readAccelerationCsv(const std::string &path, GroundMotionRecord *reco
   }
   if (record->time.size() < 2)
     return failure(path, 0, "needs at least 2 samples, found " + std::to_string(record->time.size()));
+  const ReadStatus unit_status = resolveUnit(path, header, unit, &record->file_unit);
+  if (!unit_status.ok) return unit_status;
+  if (record->file_unit == AccelerationUnit::G)
+    for (double &a : record->acceleration) a *= kStandardGravity;
   return {};
 }
 
@@ -85,6 +135,7 @@ ReadStatus readPeerAt2(const std::string &path, GroundMotionRecord *record) {
   if (npts < 2) return failure(path, 4, "NPTS = " + m[1].str() + " is not allowed; it must be at least 2");
   if (!parseNumber(m[2].str(), &dt) || !(dt > 0))
     return failure(path, 4, "DT = " + m[2].str() + " is not allowed; it must be a number > 0");
+  record->file_unit = AccelerationUnit::G;
 
   int line_no = 4;
   while (std::getline(in, line)) {

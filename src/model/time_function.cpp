@@ -95,11 +95,12 @@ std::string lowerExtension(const std::string &path) {
 
 // Rank 0 reads the file; the status and the samples are broadcast so every rank raises the
 // same error or holds the same record.
-PetscErrorCode readRecordCollective(MPI_Comm comm, const std::string &path, bool at2, io::GroundMotionRecord *record, io::ReadStatus *status) {
+PetscErrorCode readRecordCollective(MPI_Comm comm, const std::string &path, bool at2, io::AccelerationUnit unit, io::GroundMotionRecord *record,
+                                    io::ReadStatus *status) {
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) *status = at2 ? io::readPeerAt2(path, record) : io::readAccelerationCsv(path, record);
+  if (rank == 0) *status = at2 ? io::readPeerAt2(path, record) : io::readAccelerationCsv(path, record, unit);
   int ok = status->ok ? 1 : 0;
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
   status->ok = ok;
@@ -115,6 +116,9 @@ PetscErrorCode readRecordCollective(MPI_Comm comm, const std::string &path, bool
   record->time.resize(n), record->acceleration.resize(n);
   PetscCallMPI(MPI_Bcast(record->time.data(), (int)n, MPI_DOUBLE, 0, comm));
   PetscCallMPI(MPI_Bcast(record->acceleration.data(), (int)n, MPI_DOUBLE, 0, comm));
+  int g_unit = record->file_unit == io::AccelerationUnit::G;
+  PetscCallMPI(MPI_Bcast(&g_unit, 1, MPI_INT, 0, comm));
+  record->file_unit = g_unit ? io::AccelerationUnit::G : io::AccelerationUnit::MetresPerSecondSquared;
   PetscFunctionReturn(0);
 }
 
@@ -146,7 +150,7 @@ TimeFunction::~TimeFunction() = default;
 TimeFunction::TimeFunction(TimeFunction &&) noexcept = default;
 TimeFunction &TimeFunction::operator=(TimeFunction &&) noexcept = default;
 
-PetscErrorCode TimeFunction::Read(MPI_Comm comm, const std::string &prefix, PetscOptionItems *PetscOptionsObject) {
+PetscErrorCode TimeFunction::Read(MPI_Comm comm, const std::string &prefix, HistoryRole role, PetscOptionItems *PetscOptionsObject) {
   const char *const kinds[] = {"none", "ricker", "gabor", "record", "TimeFunctionKind", "", nullptr};
   PetscInt          kind = 0;
   PetscReal         amplitude = 0.1, f0 = 2.0, t0 = -1, gamma = 4.0, phase = 0;
@@ -157,10 +161,10 @@ PetscErrorCode TimeFunction::Read(MPI_Comm comm, const std::string &prefix, Pets
   if (kind == 0) PetscFunctionReturn(0);
   char buf[1024];
   if (kind == 3) {
-    PetscCall(readRecord(comm, prefix, PetscOptionsObject));
+    PetscCall(readRecord(comm, prefix, role, PetscOptionsObject));
     PetscFunctionReturn(0);
   }
-  PetscCall(PetscOptionsReal((q + "amplitude").c_str(), "peak particle velocity [m/s] (ricker, gabor; a record is scaled with -record_scale)", "TimeFunction::Read",
+  PetscCall(PetscOptionsReal((q + "amplitude").c_str(), "peak particle velocity [m/s] (ricker, gabor; a record is scaled with -record_scale or -record_pga)", "TimeFunction::Read",
                              amplitude, &amplitude, nullptr));
   PetscCall(PetscOptionsReal((q + "f0").c_str(), "central frequency [Hz]", "TimeFunction::Read", f0, &f0, nullptr));
   PetscCall(PetscOptionsReal((q + "t0").c_str(), "time of the peak [s] (default 1.2/f0 for ricker, gamma/(2 f0) for gabor)", "TimeFunction::Read", t0, &t0, nullptr));
@@ -181,33 +185,53 @@ PetscErrorCode TimeFunction::Read(MPI_Comm comm, const std::string &prefix, Pets
   PetscFunctionReturn(0);
 }
 
-// -<prefix>stf record: an acceleration record (CSV time,acceleration in s, m/s^2, or PEER
-// .AT2 in g), times -record_scale, baseline-corrected unless told otherwise, integrated
+// -<prefix>stf record: an acceleration record (CSV time,acceleration in s and m/s^2 or g, or
+// PEER .AT2 in g), baseline-corrected unless told otherwise, scaled by a factor or to a
+// target peak, halved when it is an outcrop motion driving the incident wave, integrated
 // with the trapezoid rule into the velocity history.
-PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix, PetscOptionItems *PetscOptionsObject) {
+PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix, HistoryRole role, PetscOptionItems *PetscOptionsObject) {
   const std::string p = "-" + prefix, q = relativeName(prefix, PetscOptionsObject);
-  char              file[PETSC_MAX_PATH_LEN] = "", format[16] = "";
-  PetscReal         scale = 1.0;
-  PetscBool         baseline = PETSC_TRUE, has_file, has_format, has_amplitude;
+  char              file[PETSC_MAX_PATH_LEN] = "", format[16] = "", units[16] = "auto";
+  PetscReal         scale = 1.0, pga_g = 0;
+  PetscInt          motion = 0; // index in motions[]: outcrop, incident
+  PetscBool         baseline = PETSC_TRUE, has_file, has_format, has_amplitude, has_scale, has_pga;
+  const char *const formats[] = {"csv", "at2"}, *const unit_choices[] = {"auto", "g", "m/s^2"};
+  const char *const motions[] = {"outcrop", "incident", "RecordMotion", "", nullptr};
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasName(nullptr, nullptr, (p + "amplitude").c_str(), &has_amplitude));
   PetscCheck(!has_amplitude, comm, PETSC_ERR_USER_INPUT,
-             "%samplitude does not apply to %sstf record (the record's own amplitude is used); allowed: %srecord_scale <factor> to scale the record's acceleration",
-             p.c_str(), p.c_str(), p.c_str());
-  PetscCall(PetscOptionsString((q + "record").c_str(), "acceleration record: CSV time,acceleration [s, m/s^2] or PEER NGA .AT2 [g]", "TimeFunction::Read", file, file,
-                               sizeof file, &has_file));
-  const char *const formats[] = {"csv", "at2"};
+             "%samplitude does not apply to %sstf record (the record's own amplitude is used); allowed: %srecord_scale <factor> or %srecord_pga <peak in g>",
+             p.c_str(), p.c_str(), p.c_str(), p.c_str());
+  PetscCall(PetscOptionsString((q + "record").c_str(), "acceleration record: CSV time,acceleration [s; m/s^2 or g] or PEER NGA .AT2 [g]", "TimeFunction::Read", file,
+                               file, sizeof file, &has_file));
   PetscCall(checkChoice(comm, p + "record_format", formats, 2));
   PetscCall(PetscOptionsString((q + "record_format").c_str(), "format of the record: csv or at2 (default: from the file extension)", "TimeFunction::Read", format,
                                format, sizeof format, &has_format));
-  PetscCall(PetscOptionsReal((q + "record_scale").c_str(), "factor on the record's acceleration [-]", "TimeFunction::Read", scale, &scale, nullptr));
+  PetscCall(checkChoice(comm, p + "record_units", unit_choices, 3));
+  PetscCall(PetscOptionsString((q + "record_units").c_str(),
+                               "unit of a CSV record's acceleration: auto (from the header's acceleration column: g if it says g, else m/s^2), g, m/s^2",
+                               "TimeFunction::Read", units, units, sizeof units, nullptr));
+  PetscCall(PetscOptionsReal((q + "record_scale").c_str(), "factor on the record's acceleration [-] (not with -record_pga)", "TimeFunction::Read", scale, &scale,
+                             &has_scale));
+  PetscCall(PetscOptionsReal((q + "record_pga").c_str(), "scale the record to this peak ground acceleration [g] (> 0; not with -record_scale)", "TimeFunction::Read",
+                             pga_g, &pga_g, &has_pga));
+  if (role == HistoryRole::IncidentWave) {
+    PetscCall(checkChoice(comm, p + "record_motion", motions, 2));
+    PetscCall(PetscOptionsEList((q + "record_motion").c_str(),
+                                "what the record is: outcrop (motion of a rock outcrop = 2 x the incident wave) or incident (the upgoing wave itself)",
+                                "TimeFunction::Read", motions, 2, motions[0], &motion, nullptr));
+  }
   PetscCall(PetscOptionsBool((q + "baseline_correction").c_str(),
                              "subtract c0 + c1 t from the acceleration so that the integrated velocity and displacement end at zero", "TimeFunction::Read",
                              baseline, &baseline, nullptr));
   PetscCheck(has_file && file[0], comm, PETSC_ERR_USER_INPUT, "%sstf record needs the file; allowed: %srecord <file.csv|file.at2>", p.c_str(), p.c_str());
+  PetscCheck(!(has_scale && has_pga), comm, PETSC_ERR_USER_INPUT,
+             "%srecord_scale and %srecord_pga are both given; allowed: one of them (a factor, or a target peak ground acceleration in g)", p.c_str(), p.c_str());
   char scale_text[32]; // formatted here: PETSc's own %g would print 0 as "0."
-  std::snprintf(scale_text, sizeof scale_text, "%g", (double)scale);
+  std::snprintf(scale_text, sizeof scale_text, "%g", (double)(has_pga ? pga_g : scale));
   PetscCheck(std::isfinite(scale) && scale != 0, comm, PETSC_ERR_USER_INPUT, "%srecord_scale = %s; allowed: a finite factor other than 0", p.c_str(), scale_text);
+  PetscCheck(!has_pga || (std::isfinite(pga_g) && pga_g > 0), comm, PETSC_ERR_USER_INPUT, "%srecord_pga = %s; allowed: a peak ground acceleration > 0 in g",
+             p.c_str(), scale_text);
   bool at2;
   if (has_format) {
     at2 = equalsNoCase(format, "at2");
@@ -218,22 +242,42 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
                p.c_str());
     at2 = ext == "at2";
   }
+  const io::AccelerationUnit unit = equalsNoCase(units, "g") ? io::AccelerationUnit::G
+                                    : equalsNoCase(units, "auto") ? io::AccelerationUnit::FromHeader
+                                                                  : io::AccelerationUnit::MetresPerSecondSquared;
+  PetscCheck(!at2 || unit != io::AccelerationUnit::MetresPerSecondSquared, comm, PETSC_ERR_USER_INPUT,
+             "%srecord_units = %s does not apply to a PEER .AT2 record (its values are in g); allowed: auto or g", p.c_str(), units);
   io::GroundMotionRecord record;
   io::ReadStatus         status;
-  PetscCall(readRecordCollective(comm, file, at2, &record, &status));
-  PetscCheck(status.ok, comm, PETSC_ERR_FILE_OPEN, "%srecord (%s): %s; allowed: %s", p.c_str(), at2 ? "PEER .AT2" : "CSV", status.message.c_str(),
-             at2 ? "a PEER NGA .AT2 file: 3 header lines, a 4th with NPTS and DT, then NPTS accelerations in g"
-                 : "a CSV file of lines \"time,acceleration\" [s, m/s^2], optional header, at least 2 samples, times increasing");
-  for (double &a : record.acceleration) a *= scale;
+  PetscCall(readRecordCollective(comm, file, at2, unit, &record, &status));
+  const std::string allowed = at2 ? "a PEER NGA .AT2 file: 3 header lines, a 4th with NPTS and DT, then NPTS accelerations in g"
+                                  : "a CSV file of lines \"time,acceleration\" [s; m/s^2, or g when the header's acceleration column says g or with " + p +
+                                      "record_units g], optional header, at least 2 samples, times increasing";
+  PetscCheck(status.ok, comm, PETSC_ERR_FILE_OPEN, "%srecord (%s): %s; allowed: %s", p.c_str(), at2 ? "PEER .AT2" : "CSV", status.message.c_str(), allowed.c_str());
   if (baseline) io::removeBaselineDrift(&record);
+  double record_peak = 0;
+  for (double a : record.acceleration) record_peak = std::max(record_peak, std::fabs(a));
+  PetscCheck(!has_pga || record_peak > 0, comm, PETSC_ERR_USER_INPUT, "%srecord_pga = %s: the record %s has no acceleration to scale; allowed: a record with a nonzero sample",
+             p.c_str(), scale_text, file);
+  // The factor that gives the applied (baseline-corrected) motion exactly the asked peak.
+  const double factor = has_pga ? pga_g * io::kStandardGravity / record_peak : (double)scale;
+  const bool   outcrop = role == HistoryRole::IncidentWave && motion == 0;
+  // A vertically incident wave doubles at a free surface: an outcrop record is twice the
+  // incident wave that produces it, so the incident wave is half of it.
+  const double incident_share = outcrop ? 0.5 : 1.0;
+  for (double &a : record.acceleration) a *= factor * incident_share;
   physics::TabulatedHistory history = io::velocityHistory(record);
-  double pga = 0, pgv = 0;
-  for (double a : record.acceleration) pga = std::max(pga, std::fabs(a));
-  for (double v : history.values) pgv = std::max(pgv, std::fabs(v));
+  double pgv = 0; // of the motion the record describes (as the PGA), not of the incident wave
+  for (double v : history.values) pgv = std::max(pgv, std::fabs(v) / incident_share);
   const size_t n = record.time.size();
-  char         buf[PETSC_MAX_PATH_LEN + 256];
-  std::snprintf(buf, sizeof buf, "record %s (%s, %zu samples, %g to %g s, scale %g%s), peak acceleration %.4g m/s^2, peak velocity %.4g m/s", file,
-                at2 ? "AT2" : "CSV", n, record.time.front(), record.time.back(), (double)scale, baseline ? ", baseline-corrected" : "", pga, pgv);
+  const char  *what = role == HistoryRole::BoundaryVelocity ? "the boundary's own motion"
+                      : outcrop ? "outcrop motion (a rock outcrop moves 2 x the incident wave): the incident wave is half of it"
+                                : "the incident wave itself (a rock outcrop would move twice as much)";
+  char buf[PETSC_MAX_PATH_LEN + 512];
+  std::snprintf(buf, sizeof buf, "record %s (%s in %s, %zu samples, %g to %g s)%s; PGA %.4g g (scale factor %.4g on the record's %.4g g); PGV %.4g m/s; %s", file,
+                at2 ? "AT2" : "CSV", record.file_unit == io::AccelerationUnit::G ? "g" : "m/s^2", n, record.time.front(), record.time.back(),
+                baseline ? ", baseline-corrected" : "", std::fabs(factor) * record_peak / io::kStandardGravity, factor, record_peak / io::kStandardGravity, pgv,
+                what);
   impl_->record_acceleration  = record.acceleration;
   impl_->record_top_frequency = spectralTopFrequency(history);
   impl_->f                   = std::move(history);

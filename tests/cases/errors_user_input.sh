@@ -19,6 +19,8 @@ printf 'garbage\nthis is not a mesh\n' > "$tmp/garbage.msh"
 printf 'time,acceleration\n0,0\n0.01,0.5\n0.02,0.5\n0.03,0\n' > "$tmp/good.csv"
 cp "$tmp/good.csv" "$tmp/good.txt"
 printf 'time,acceleration\n0,0\n0.01,0.5\n0.02,abc\n' > "$tmp/bad.csv"
+printf 'time_s,acceleration_g\n0,0\n0.01,0.05\n0.02,0\n' > "$tmp/in_g.csv"
+printf 'time_s,acceleration_cm/s^2\n0,0\n0.01,50\n0.02,0\n' > "$tmp/in_cm.csv"
 printf 'header 1\nheader 2\nheader 3\nNPTS=    5, DT=   .0100 SEC\n 0.0 0.01 0.02\n' > "$tmp/short.at2"
 
 control=$("$bin" $base $soil 2>&1) || { echo "FAIL: the control run (base options + valid material) exits non-zero:"; echo "$control"; exit 1; }

@@ -15,7 +15,7 @@ tie="-interface_base_phi 0 -interface_base_c 1e12 -interface_base_tensile_streng
 for f in 30 300; do
   $SW -options_file config/scenes/default.yaml $O $tie -interface_base_penalty_factor $f -output_dir "$WORK/tied$f" > "$WORK/tied$f.log"
 done
-names=block_top,block_base,free_field,bedrock
+names=block_top,block_base_left,block_base_right,free_field,bedrock
 d30=$($CHECK stations-equal "$WORK/unsplit" "$WORK/tied30" --names $names --tol 1 | sed 's/.*difference \([0-9.e+-]*\) .*/\1/')
 d300=$($CHECK stations-equal "$WORK/unsplit" "$WORK/tied300" --names $names --tol 1 | sed 's/.*difference \([0-9.e+-]*\) .*/\1/')
 $PY - "$d30" "$d300" <<'PY'

@@ -1,9 +1,13 @@
 # Plots: scripts/plot_results.py on (1) a short 2D run with an interface (a stiff block on
-# soil, interface 'base') and two stations, (2) a short 3D run with the same kind of
-# interface and no station, (3) a directory with no output. Checks that every expected PNG
-# is written (and listed on stdout), is a valid PNG (signature, IHDR chunk, a size of at least
-# 400 x 300 pixels) and is not blank (the pixel values vary), that --out DIR is honoured,
-# that the 3D run says the station plot is skipped, and that an empty directory exits 1.
+# soil, interface 'base') and two stations, the transfer ratio taken over the station 'base'
+# (--reference base), (2) a short 3D run with the same kind of interface and no station, (3) a
+# directory with no output. Checks that every expected PNG is written (and listed on stdout),
+# is a valid PNG (signature, IHDR chunk, a size of at least 400 x 300 pixels) and is not blank
+# (the pixel values vary), that --out DIR is honoured, that the 3D run says the station plot
+# and the spectra are skipped, and that an empty directory exits 1. spectra.csv: a period
+# column from 0.02 to 5 s and one PSA column per station (a_x), finite and > 0; the
+# acceleration plot's title gives the resolved frequency vs/(10 h) = 300/(10*1) = 30 Hz of
+# run_info.json; without the reference station the transfer ratio is skipped with a note.
 set -eu
 . tests/tools/lib.sh
 BLOCK="-regions soil,block -material_soil_rho 2000 -material_soil_vp 600 -material_soil_vs 300
@@ -13,9 +17,13 @@ $SW $BLOCK -mesh_box_faces 20,6 -mesh_box_upper 20,6 -region_block_box 8,12,4,6 
   -station_coordinates 10,6,10,0 -station_names top,base -output_dir "$WORK/run2d"
 $SW $BLOCK -mesh_dim 3 -mesh_box_faces 8,8,4 -mesh_box_upper 8,8,4 -region_block_box 3,5,3,5,3,4 -output_dir "$WORK/run3d"
 
-$PY scripts/plot_results.py "$WORK/run2d" | tee "$WORK/plot2d.txt"
+$PY scripts/plot_results.py "$WORK/run2d" --reference base | tee "$WORK/plot2d.txt"
 $PY scripts/plot_results.py "$WORK/run3d" --out "$WORK/plots3d" | tee "$WORK/plot3d.txt"
 grep -q "station plot skipped" "$WORK/plot3d.txt"
+grep -q "response spectra skipped" "$WORK/plot3d.txt"
+grep -q '"resolved_frequency_hz": 30,' "$WORK/run2d/run_info.json"
+$PY scripts/plot_results.py "$WORK/run2d" --out "$WORK/plots_noref" | tee "$WORK/plot_noref.txt"
+grep -q "no station 'free_field' (the free-field reference, --reference): transfer ratio skipped" "$WORK/plot_noref.txt"
 mkdir -p "$WORK/empty"
 if $PY scripts/plot_results.py "$WORK/empty" >"$WORK/plot_empty.txt" 2>&1; then
   echo "plot_results.py exited 0 on a directory without output"; exit 1
@@ -29,7 +37,8 @@ import matplotlib.image as mpimg
 w = sys.argv[1]
 expected = {
     "plot2d.txt": [f"{w}/run2d/plots/{n}" for n in
-                   ("stations_acceleration.png", "interface_base_history.png", "interface_base_profile.png", "energy.png")],
+                   ("stations_acceleration.png", "spectra.png", "transfer_ratio.png", "interface_base_history.png",
+                    "interface_base_profile.png", "energy.png")],
     "plot3d.txt": [f"{w}/plots3d/{n}" for n in
                    ("interface_base_history.png", "interface_base_profile.png", "energy.png")],
 }
@@ -53,5 +62,14 @@ for log, files in expected.items():
         assert float(np.var(img[..., :3])) > 1e-4, f"{path}: blank image"
         print(f"ok {path}: {width} x {height}, {len(data)} bytes, pixel variance {np.var(img[..., :3]):.3g}")
 assert not os.path.exists(f"{w}/run3d/plots"), "--out ignored: run3d/plots was created"
+csv = f"{w}/run2d/plots/spectra.csv"
+assert csv in open(os.path.join(w, "plot2d.txt")).read(), "spectra.csv not listed"
+with open(csv) as f:
+    header = f.readline().strip().split(",")
+assert header == ["period_s", "base_a_x_psa_g", "top_a_x_psa_g"], header
+table = np.loadtxt(csv, delimiter=",", skiprows=1)
+assert abs(table[0, 0] - 0.02) < 1e-9 and abs(table[-1, 0] - 5) < 1e-9, table[[0, -1], 0]
+assert np.all(np.isfinite(table)) and np.all(table[:, 1:] > 0), "spectra.csv: a PSA is not finite and > 0"
+print(f"ok {csv}: {table.shape[0]} periods, columns {header}")
 print("plots: OK")
 PY

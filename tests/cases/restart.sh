@@ -14,7 +14,7 @@ $SW $O -ts_max_steps $half -checkpoint_interval $half -output_dir "$WORK/A" > "$
 cp -r "$WORK/A" "$WORK/B"
 $SW $O -restart "$WORK/B/checkpoint.bin" -output_dir "$WORK/B" | grep -E "^restart|^done"
 cmp "$WORK/B/energy.csv" "$WORK/C/energy.csv"
-for s in block_top block_base free_field bedrock; do cmp "$WORK/B/stations/$s.csv" "$WORK/C/stations/$s.csv"; done
+for s in block_top block_base_left block_base_right free_field bedrock; do cmp "$WORK/B/stations/$s.csv" "$WORK/C/stations/$s.csv"; done
 $PY scripts/check_output.py "$WORK/B"
 $PY - "$WORK" <<'PY'
 import sys

@@ -75,6 +75,29 @@ int main() {
   s = readAccelerationCsv(writeFile("one.csv", "t,a\n0,1\n"), &r);
   unit::check(mentions(s, "at least 2 samples, found 1"), "single sample rejected: " + s.message);
 
+  // Units of a CSV: from the header's acceleration column, or asked for; g converted with
+  // g = 9.80665 m/s^2; a contradiction or a unit neither g nor m/s^2 is an error.
+  s = readAccelerationCsv(writeFile("g.csv", "time_s,acceleration_g\n0,0.5\n0.02,-1\n"), &r);
+  unit::check(s.ok && r.file_unit == AccelerationUnit::G, "header acceleration_g: read in g " + s.message);
+  unit::near(r.acceleration[1], -9.80665, 1e-15, 0, "header acceleration_g: -1 g = -9.80665 m/s^2");
+  for (const char *head : {"t,a (g)", "t, acc [g]", "time,Acceleration G"}) {
+    s = readAccelerationCsv(writeFile("g2.csv", std::string(head) + "\n0,1\n1,2\n"), &r);
+    unit::check(s.ok && r.file_unit == AccelerationUnit::G && r.acceleration[0] == 9.80665, std::string("header '") + head + "': g " + s.message);
+  }
+  for (const char *head : {"t,a [m/s^2]", "time,acc_mps2", "t,a (m/s2)", "time,acceleration"}) {
+    s = readAccelerationCsv(writeFile("si.csv", std::string(head) + "\n0,1\n1,2\n"), &r);
+    unit::check(s.ok && r.file_unit == AccelerationUnit::MetresPerSecondSquared && r.acceleration[0] == 1,
+                std::string("header '") + head + "': m/s^2 " + s.message);
+  }
+  s = readAccelerationCsv(writeFile("asked_g.csv", "0,1\n1,2\n"), &r, AccelerationUnit::G);
+  unit::check(s.ok && r.acceleration[1] == 2 * 9.80665, "no header, asked for g: converted " + s.message);
+  s = readAccelerationCsv(writeFile("clash.csv", "time_s,acceleration_g\n0,1\n1,2\n"), &r, AccelerationUnit::MetresPerSecondSquared);
+  unit::check(mentions(s, "clash.csv:1: the header's acceleration column \"acceleration_g\" is in g, not in m/s^2 as asked"), "g header vs m/s^2 asked: " + s.message);
+  s = readAccelerationCsv(writeFile("cm.csv", "t,acc (cm/s^2)\n0,1\n1,2\n"), &r);
+  unit::check(mentions(s, "cm.csv:1: the header's acceleration column \"acc (cm/s^2)\" names a unit that is neither g nor m/s^2"), "cm/s^2 header: " + s.message);
+  s = readAccelerationCsv(writeFile("gal.csv", "t,acc gal\n0,1\n1,2\n"), &r);
+  unit::check(mentions(s, "neither g nor m/s^2"), "gal header: " + s.message);
+
   // AT2, keyed header form; values in g, 3 per line, last line short.
   const std::string head = "PEER NGA STRONG MOTION DATABASE RECORD\nTest event, station, 090\n"
                            "ACCELERATION TIME SERIES IN UNITS OF G\n";

@@ -12,9 +12,13 @@ namespace slipwave::io {
 
 constexpr double kStandardGravity = 9.80665;  // m/s^2, converts .AT2 values given in g
 
+// The unit of a record's acceleration values in the file.
+enum class AccelerationUnit { FromHeader, MetresPerSecondSquared, G };
+
 struct GroundMotionRecord {
   std::vector<double> time;          // s, strictly increasing
   std::vector<double> acceleration;  // m/s^2
+  AccelerationUnit    file_unit = AccelerationUnit::MetresPerSecondSquared;  // what the file held
 };
 
 struct ReadStatus {
@@ -22,9 +26,15 @@ struct ReadStatus {
   std::string message;  // "<file>:<line>: <what is wrong>" (no line when it is the whole file)
 };
 
-// Lines "time,acceleration" in s and m/s^2; an optional non-numeric header line first;
-// blank lines ignored; at least two samples; times strictly increasing, any spacing.
-ReadStatus readAccelerationCsv(const std::string &path, GroundMotionRecord *record);
+// Lines "time,acceleration" in s and `unit`; an optional non-numeric header line first;
+// blank lines ignored; at least two samples; times strictly increasing, any spacing. With
+// FromHeader the unit is the one the header's acceleration column names ("acceleration_g",
+// "a (g)", "acc [g]": g; "m/s^2", "m/s2", "m/s/s", "mps2": m/s^2), m/s^2 when it names none
+// or there is no header. A header naming another unit (cm/s^2, gal), or a unit other than
+// the one asked for, is an error: a record read in the wrong unit is off by a factor 9.8.
+// Values are converted to m/s^2; record->file_unit says what the file held.
+ReadStatus readAccelerationCsv(const std::string &path, GroundMotionRecord *record,
+                               AccelerationUnit unit = AccelerationUnit::FromHeader);
 
 // PEER NGA .AT2: three free header lines, the fourth giving NPTS and DT as
 // "NPTS=  5590, DT=   .0050 SEC" or "5590 0.0050 NPTS, DT"; then NPTS values in g, any

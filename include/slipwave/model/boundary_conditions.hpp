@@ -46,6 +46,7 @@ struct BoundaryConditions {
   std::vector<std::pair<std::string, std::string>> tied_pairs; // opposite sides moving together
   bool                      has_absorbing = false;    // any dashpot (absorbing or freefield)
   bool                      has_free_field = false;
+  std::vector<std::string>  warnings; // for the run report: sides that hold back the incident wave
 };
 
 PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &boundaries, const std::vector<RegionMaterialInfo> &materials, Vec mass,

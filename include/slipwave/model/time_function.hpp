@@ -1,12 +1,18 @@
 // A scalar history read from options with a prefix: the incident wave's particle velocity,
 // or a prescribed boundary velocity. -<prefix>stf none|ricker|gabor|record and its
 // parameters. Velocity is the primary quantity; acceleration drives prescribed dofs.
-// -<prefix>stf record reads -<prefix>record FILE (CSV time,acceleration [s, m/s^2] or PEER
-// .AT2 [g], by extension or -<prefix>record_format csv|at2), multiplies the acceleration by
-// -<prefix>record_scale (default 1; -<prefix>amplitude is rejected for records), removes the
-// baseline drift unless -<prefix>baseline_correction false, and integrates it (trapezoid)
-// into the velocity; acceleration() then returns the record's own acceleration, linearly
-// interpolated, which is the exact derivative of that velocity at the samples.
+// -<prefix>stf record reads -<prefix>record FILE (CSV time,acceleration [s; m/s^2 or g, from
+// the header or -<prefix>record_units] or PEER .AT2 [g], by extension or
+// -<prefix>record_format csv|at2), removes the baseline drift unless
+// -<prefix>baseline_correction false, scales the acceleration by -<prefix>record_scale, or
+// to the peak -<prefix>record_pga [g] (exclusive; -<prefix>amplitude is rejected for
+// records), and integrates it (trapezoid) into the velocity; acceleration() then returns the
+// record's own acceleration, linearly interpolated, which is the exact derivative of that
+// velocity at the samples.
+// For the incident wave (HistoryRole::IncidentWave) -<prefix>record_motion says what the
+// record is: outcrop (default: the motion at the free surface of the rock, which doubles the
+// incident wave, so the incident wave is half the record) or incident (the upgoing wave
+// itself). A prescribed boundary velocity is the record itself.
 #pragma once
 #include <petscsys.h>
 
@@ -14,6 +20,8 @@
 #include <string>
 
 namespace slipwave::model {
+
+enum class HistoryRole { IncidentWave, BoundaryVelocity };
 
 class TimeFunction {
 public:
@@ -23,7 +31,7 @@ public:
   TimeFunction &operator=(TimeFunction &&) noexcept;
 
   // Reads -<prefix>stf and its parameters inside the caller's options block.
-  PetscErrorCode Read(MPI_Comm comm, const std::string &prefix, PetscOptionItems *PetscOptionsObject);
+  PetscErrorCode Read(MPI_Comm comm, const std::string &prefix, HistoryRole role, PetscOptionItems *PetscOptionsObject);
   bool        active() const;
   double      velocity(double t) const;
   double      acceleration(double t) const;
@@ -31,7 +39,7 @@ public:
   std::string describe() const;
 
 private:
-  PetscErrorCode readRecord(MPI_Comm comm, const std::string &prefix, PetscOptionItems *PetscOptionsObject);
+  PetscErrorCode readRecord(MPI_Comm comm, const std::string &prefix, HistoryRole role, PetscOptionItems *PetscOptionsObject);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
