@@ -100,7 +100,7 @@ PetscErrorCode assembleDampingBlocks(Elastodynamics *m) {
 
 
 // Contact damping: see README (interfaces) for the measurements behind the default.
-constexpr double kContactDampingDefault = 0.0;
+constexpr double kContactDampingDefault = 0.1;
 
 // The penalty `auto`: the interface as stiff as factor x one layer of the softer adjacent
 // material one cell thick, E = factor (lambda + 2 mu)/h, G = factor mu/h (h: the smallest
