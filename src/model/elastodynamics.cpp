@@ -99,7 +99,11 @@ PetscErrorCode assembleDampingBlocks(Elastodynamics *m) {
 }
 
 
-// Contact damping: see README (interfaces) for the measurements behind the default.
+// Contact damping, fraction of each closed pair's critical normal damping. 0.1 removes the
+// contact stress ripple of the two-bar impact (48 % -> 0.02 %) and the energy the switching
+// created (2.3e-4 -> 0) while moving the exit velocities by 0.1 % and the step by 1.4 % in
+// the default scene; larger ratios cost more step and raised the block's peaks there
+// (README, interfaces).
 constexpr double kContactDampingDefault = 0.1;
 
 // The penalty `auto`: the interface as stiff as factor x one layer of the softer adjacent
