@@ -509,6 +509,7 @@ def plot_energy(out, plots, written):
         ("anelastic", "constant-Q damping (work on the memory variables, cumulative)", "tab:gray", "-"),
         ("interface_stored", "interface stored", "tab:pink", "--"),
         ("interface_dissipated", "interface dissipated (cumulative)", "tab:purple", "--"),
+        ("contact_damped", "contact dashpots (cumulative)", "tab:cyan", "--"),
     ]
     for column, label, color, ls in curves:
         if column in e and (column in ("kinetic", "strain", "input_work") or np.any(e[column] != 0)):

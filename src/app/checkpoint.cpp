@@ -10,28 +10,28 @@ namespace slipwave::app {
 namespace {
 
 constexpr PetscInt kMagic   = 0x53574350; // "SWCP"
-constexpr PetscInt kVersion = 2; // 2: ledger with `anelastic`, attenuation memory
+constexpr PetscInt kVersion = 3; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`
 constexpr PetscInt kHeader  = 9;
 
 // The ledger as a flat array, in a fixed order.
 std::vector<double> ledgerArray(const model::EnergyLedger &e) {
   return {e.kinetic, e.strain,        e.input,        e.external,      e.reactions, e.absorbed,          e.damped, e.interface_work,
-          e.shadow,  e.shadow_start,  e.balance_error, e.scale,        e.h_prev,    e.started ? 1.0 : 0.0, e.anelastic};
+          e.shadow,  e.shadow_start,  e.balance_error, e.scale,        e.h_prev,    e.started ? 1.0 : 0.0, e.anelastic, e.contact_damped};
 }
 
 void ledgerFromArray(const double *a, model::EnergyLedger *e) {
   e->kinetic = a[0], e->strain = a[1], e->input = a[2], e->external = a[3], e->reactions = a[4], e->absorbed = a[5], e->damped = a[6];
   e->interface_work = a[7], e->shadow = a[8], e->shadow_start = a[9], e->balance_error = a[10], e->scale = a[11], e->h_prev = a[12];
-  e->started = a[13] != 0, e->anelastic = a[14];
+  e->started = a[13] != 0, e->anelastic = a[14], e->contact_damped = a[15];
 }
-constexpr PetscInt kLedgerSize = 15;
+constexpr PetscInt kLedgerSize = 16;
 
 std::vector<Vec> stateVectors(const CheckpointState &s) {
   Vec u, v, a;
   TS2GetSolution(s.ts, &u, &v);
   time::CentralDifferenceGetAcceleration(s.ts, &a);
   model::Elastodynamics *m = s.model;
-  return {u, v, a, m->f_internal, m->f_external, m->f_input, m->f_stiffness_damping, m->f_interface, m->bc.constant_force, m->f_anelastic};
+  return {u, v, a, m->f_internal, m->f_external, m->f_input, m->f_stiffness_damping, m->f_interface, m->f_contact_damping, m->bc.constant_force, m->f_anelastic};
 }
 
 // A Vec holding `values` on this rank (its layout defines what a restart must reproduce).

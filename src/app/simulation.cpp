@@ -164,8 +164,9 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   }
   if (r->rank == 0 && r->energy_csv) {
     const model::EnergyLedger &e = r->ledger;
-    std::fprintf(r->energy_csv, "%" PetscInt_FMT ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.3e\n", step, (double)t, e.kinetic,
-                 e.strain, e.input, e.external + e.reactions, e.absorbed, e.damped, e.anelastic, e.interface_work, totals.stored, totals.dissipated, e.shadow - e.shadow_start,
+    std::fprintf(r->energy_csv, "%" PetscInt_FMT ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.3e\n", step, (double)t, e.kinetic,
+                 e.strain, e.input, e.external + e.reactions, e.absorbed, e.damped, e.anelastic, e.interface_work, totals.stored, totals.dissipated, e.contact_damped,
+                 e.shadow - e.shadow_start,
                  e.balance_error, e.relativeError());
   }
   const bool last = t >= r->max_time * (1 - 1e-12);
@@ -241,7 +242,7 @@ PetscErrorCode setRegionInitialVelocities(Run *r, Vec v) {
 // energy.csv: a new file, or after a restart the rows up to the restart step, then appended.
 PetscErrorCode openEnergyCsv(Run *r) {
   const std::string path = std::string(r->opt.output_dir) + "/energy.csv";
-  const char *header = "step,time,kinetic,strain,input_work,external_work,absorbed,damped,anelastic,interface_work,interface_stored,interface_dissipated,stored_change,"
+  const char *header = "step,time,kinetic,strain,input_work,external_work,absorbed,damped,anelastic,interface_work,interface_stored,interface_dissipated,contact_damped,stored_change,"
                        "balance_error,relative_balance_error\n";
   PetscFunctionBeginUser;
   std::string kept = header;
@@ -368,6 +369,9 @@ PetscErrorCode report(Run *r, TS ts) {
     PetscInt cut;
     PetscCall(iface.CountCutPairs(r->model.mass, &cut));
     PetscCall(PetscPrintf(comm, "    %s; %" PetscInt_FMT " pairs have their two nodes on different ranks\n", r->model.penalty_notes[k].c_str(), cut));
+    double c_min, c_max;
+    PetscCall(iface.DashpotRange(&c_min, &c_max));
+    PetscCall(PetscPrintf(comm, "    contact damping %.3g of critical on closed pairs (normal dashpots %.4g .. %.4g N s/m)\n", iface.contactDamping(), c_min, c_max));
   }
   for (const std::string &line : r->stations.ambiguities()) PetscCall(PetscPrintf(comm, "  %s\n", line.c_str()));
   PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", r->step.dt_limit, r->step.governing.c_str(), r->step.dt_cfl));
@@ -505,6 +509,7 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
       PetscCall(PetscPrintf(comm, "interface %s: %" PetscInt_FMT " stick, %" PetscInt_FMT " slip, %" PetscInt_FMT " open at the end; dissipated %.4g J; largest yield-surface drift corrected %.3g Pa\n",
                             iface.spec().name.c_str(), t.n_stick, t.n_slip, t.n_open, t.dissipated, t.max_drift));
     }
+    if (!r->model.interfaces.empty()) PetscCall(PetscPrintf(comm, "contact dashpots (all interfaces): took %.4g J\n", r->ledger.contact_damped));
     PetscCall(PetscPrintf(comm, "done: %" PetscInt_FMT " steps in %.2f s wall (%.3g s per step); energy balance error %.2e of the largest energy\n", steps,
                           wall_end - r->wall_start, (wall_end - r->wall_start) / std::max<PetscInt>(steps, 1), r->ledger.relativeError()));
     PetscCall(PetscPrintf(comm, "output in %s/: volume.xmf%s (open in ParaView), energy.csv%s\n", r->opt.output_dir, r->model.interfaces.empty() ? "" : ", interface_<name>.xmf", r->stations.empty() ? "" : ", stations/*.csv, stations.h5"));

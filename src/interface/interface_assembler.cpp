@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "slipwave/physics/contact_damping.hpp"
+
 namespace slipwave::interface {
 namespace {
 
@@ -112,7 +114,7 @@ std::vector<std::string> InterfaceAssembler::pairFieldNames(PetscInt) {
 }
 
 PetscErrorCode InterfaceAssembler::Setup(MPI_Comm comm, PetscInt dim, const mesh::InterfaceSpec &spec, const mesh::InterfacePairs &pairs,
-                                         const physics::InterfaceParams &params, double sigma_N0, Vec u_template) {
+                                         const physics::InterfaceParams &params, double sigma_N0, double contact_damping, Vec mass) {
   PetscFunctionBeginUser;
   comm_   = comm;
   dim_    = dim;
@@ -138,9 +140,20 @@ PetscErrorCode InterfaceAssembler::Setup(MPI_Comm comm, PetscInt dim, const mesh
   PetscCall(ISCreateStride(PETSC_COMM_SELF, np * 2 * dim, 0, 1, &is_to));
   PetscCall(VecCreateSeq(PETSC_COMM_SELF, np * 2 * dim, &pair_u_));
   PetscCall(VecDuplicate(pair_u_, &pair_f_));
-  PetscCall(VecScatterCreate(u_template, is_from, pair_u_, is_to, &scatter_));
+  PetscCall(VecScatterCreate(mass, is_from, pair_u_, is_to, &scatter_));
   PetscCall(ISDestroy(&is_from));
   PetscCall(ISDestroy(&is_to));
+
+  // Each pair's normal spring E A between its two lumped masses.
+  contact_damping_ = contact_damping;
+  dashpot_.assign(np, 0.0);
+  PetscCall(VecScatterBegin(scatter_, mass, pair_u_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(scatter_, mass, pair_u_, INSERT_VALUES, SCATTER_FORWARD));
+  const PetscScalar *pm;
+  PetscCall(VecGetArrayRead(pair_u_, &pm));
+  for (PetscInt p = 0; p < np; ++p)
+    dashpot_[p] = physics::contactDashpotCoefficient(contact_damping, params_.E * pairs_.area[p], PetscRealPart(pm[p * 2 * dim]), PetscRealPart(pm[p * 2 * dim + dim]));
+  PetscCall(VecRestoreArrayRead(pair_u_, &pm));
   PetscFunctionReturn(0);
 }
 
@@ -160,6 +173,74 @@ PetscErrorCode InterfaceAssembler::AddForces(Vec u, Vec f) {
   PetscCall(VecRestoreArrayRead(pair_u_, &pu));
   PetscCall(VecScatterBegin(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecScatterEnd(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));
+  PetscFunctionReturn(0);
+}
+
+namespace {
+
+// Normal dashpot of each closed pair on the jump rate (structure minus soil) along n:
+// +A sigma_d n on the soil node, -A sigma_d n on the structure node, like the spring.
+template <int Dim>
+void dampPairs(const mesh::InterfacePairs &pairs, const std::vector<double> &dashpot, const std::vector<physics::InterfaceState<Dim>> &states, const PetscScalar *pv,
+               PetscScalar *pf) {
+  for (size_t p = 0; p < states.size(); ++p) {
+    const double *n      = &pairs.normal[p * Dim];
+    double        w_dot  = 0;
+    for (int i = 0; i < Dim; ++i) w_dot += (PetscRealPart(pv[p * 2 * Dim + Dim + i]) - PetscRealPart(pv[p * 2 * Dim + i])) * n[i];
+    const bool   closed  = states[p].status != physics::InterfaceStatus::Open;
+    const double A       = pairs.area[p];
+    const double sigma_d = closed ? physics::contactDampingTraction(dashpot[p] / A, w_dot, states[p].sigma_N) : 0.0;
+    for (int i = 0; i < Dim; ++i) {
+      pf[p * 2 * Dim + i]       = A * sigma_d * n[i];
+      pf[p * 2 * Dim + Dim + i] = -A * sigma_d * n[i];
+    }
+  }
+}
+
+} // namespace
+
+PetscErrorCode InterfaceAssembler::AddDampingForces(Vec v, Vec f) {
+  PetscFunctionBeginUser;
+  if (contact_damping_ == 0) PetscFunctionReturn(0);
+  PetscCall(VecScatterBegin(scatter_, v, pair_u_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(scatter_, v, pair_u_, INSERT_VALUES, SCATTER_FORWARD));
+  const PetscScalar *pv;
+  PetscScalar       *pf;
+  PetscCall(VecGetArrayRead(pair_u_, &pv));
+  PetscCall(VecGetArray(pair_f_, &pf));
+  if (dim_ == 2) dampPairs<2>(pairs_, dashpot_, states2_, pv, pf);
+  else dampPairs<3>(pairs_, dashpot_, states3_, pv, pf);
+  PetscCall(VecRestoreArray(pair_f_, &pf));
+  PetscCall(VecRestoreArrayRead(pair_u_, &pv));
+  PetscCall(VecScatterBegin(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecScatterEnd(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceAssembler::AddDampingRowAbsSums(Vec rowabs) {
+  PetscScalar *pf;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(pair_f_, &pf));
+  for (size_t p = 0; p < pairs_.id.size(); ++p) {
+    const double *n = &pairs_.normal[p * dim_];
+    for (PetscInt i = 0; i < dim_; ++i) {
+      double row = 0;
+      for (PetscInt j = 0; j < dim_; ++j) row += std::fabs(n[i] * n[j]);
+      pf[p * 2 * dim_ + i] = pf[p * 2 * dim_ + dim_ + i] = 2 * dashpot_[p] * row;
+    }
+  }
+  PetscCall(VecRestoreArray(pair_f_, &pf));
+  PetscCall(VecScatterBegin(scatter_, pair_f_, rowabs, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecScatterEnd(scatter_, pair_f_, rowabs, ADD_VALUES, SCATTER_REVERSE));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceAssembler::DashpotRange(double *c_min, double *c_max) const {
+  PetscFunctionBeginUser;
+  double lo = 1e300, hi = 0;
+  for (double c : dashpot_) lo = std::min(lo, c), hi = std::max(hi, c);
+  PetscCallMPI(MPI_Allreduce(&lo, c_min, 1, MPI_DOUBLE, MPI_MIN, comm_));
+  PetscCallMPI(MPI_Allreduce(&hi, c_max, 1, MPI_DOUBLE, MPI_MAX, comm_));
   PetscFunctionReturn(0);
 }
 

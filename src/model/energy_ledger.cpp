@@ -16,7 +16,7 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, EnergyL
   PetscCall(time::CentralDifferenceGetAcceleration(ts, &a));
   PetscInt           n;
   const PetscInt     bs = m->dim;
-  const PetscScalar *ua, *va, *aa, *ma, *fi, *fx, *fin, *fsd, *fif, *fan, *C, *mask;
+  const PetscScalar *ua, *va, *aa, *ma, *fi, *fx, *fin, *fsd, *fif, *fan, *fcd, *C, *mask;
   PetscCall(VecGetLocalSize(u, &n));
   PetscCall(VecGetArrayRead(u, &ua));
   PetscCall(VecGetArrayRead(v, &va));
@@ -28,13 +28,14 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, EnergyL
   PetscCall(VecGetArrayRead(m->f_stiffness_damping, &fsd));
   PetscCall(VecGetArrayRead(m->f_interface, &fif));
   PetscCall(VecGetArrayRead(m->f_anelastic, &fan));
+  PetscCall(VecGetArrayRead(m->f_contact_damping, &fcd));
   PetscCall(VecGetArrayRead(m->bc.absorbing_blocks, &C));
   PetscCall(VecGetArrayRead(m->bc.free_mask, &mask));
   // Local sums: 0 kinetic, 1 strain, 2 shadow, 3 input power, 4 external power,
   // 5 reaction power, 6 absorbed power, 7 damping power, 8 interface power, 9 power of the
-  // constant-Q memory forces. Written without branches (the mask is 0 or 1) because this pass
-  // runs every step over every dof.
-  double       s[10] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  // constant-Q memory forces, 10 contact dashpot power. Written without branches (the mask is
+  // 0 or 1) because this pass runs every step over every dof.
+  double       s[11] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
   const double alpha = m->rayleigh.alpha;
   for (PetscInt k = 0; k < n; ++k) {
     const double vk = va[k], mk = ma[k], fik = fi[k], held = 1.0 - mask[k];
@@ -45,9 +46,10 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, EnergyL
     s[3] += vk * fin[k];
     s[4] += vk * (fx[k] - fin[k]);
     // What a support supplies: everything M a + K u asks beyond the applied loads.
-    s[5] += held * vk * (mk * aa[k] + fik - fx[k] - fif[k] - fan[k]);
+    s[5] += held * vk * (mk * aa[k] + fik - fx[k] - fif[k] - fan[k] - fcd[k]);
     s[8] += vk * fif[k];
     s[9] += mask[k] * vk * fan[k];
+    s[10] += vk * fcd[k];
     s[7] += mask[k] * vk * (alpha * mk * vk + fsd[k]);
   }
   for (PetscInt node : m->absorbing_nodes)
@@ -56,6 +58,7 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, EnergyL
         s[6] += mask[node * bs + i] * mask[node * bs + j] * va[node * bs + i] * C[node * bs * bs + i * bs + j] * va[node * bs + j];
   PetscCall(VecRestoreArrayRead(m->bc.free_mask, &mask));
   PetscCall(VecRestoreArrayRead(m->bc.absorbing_blocks, &C));
+  PetscCall(VecRestoreArrayRead(m->f_contact_damping, &fcd));
   PetscCall(VecRestoreArrayRead(m->f_anelastic, &fan));
   PetscCall(VecRestoreArrayRead(m->f_interface, &fif));
   PetscCall(VecRestoreArrayRead(m->f_stiffness_damping, &fsd));
@@ -66,7 +69,7 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, EnergyL
   PetscCall(VecRestoreArrayRead(a, &aa));
   PetscCall(VecRestoreArrayRead(v, &va));
   PetscCall(VecRestoreArrayRead(u, &ua));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 10, MPI_DOUBLE, MPI_SUM, m->comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 11, MPI_DOUBLE, MPI_SUM, m->comm));
 
   e->kinetic = s[0];
   e->strain  = s[1];
@@ -83,12 +86,13 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, EnergyL
     e->damped += h_mean * s[7];
     e->interface_work += h_mean * s[8];
     e->anelastic -= h_mean * s[9];
+    e->contact_damped -= h_mean * s[10];
   }
   e->h_prev = h;
   e->shadow        = s[2];
-  e->balance_error = (e->shadow - e->shadow_start) - (e->input + e->external + e->reactions + e->interface_work - e->absorbed - e->damped - e->anelastic);
+  e->balance_error = (e->shadow - e->shadow_start) - (e->input + e->external + e->reactions + e->interface_work - e->absorbed - e->damped - e->anelastic - e->contact_damped);
   e->scale         = std::max({e->scale, std::fabs(e->shadow), std::fabs(e->input), std::fabs(e->external), std::fabs(e->absorbed), std::fabs(e->damped), std::fabs(e->anelastic),
-                               std::fabs(e->reactions), std::fabs(e->interface_work), e->kinetic + std::fabs(e->strain)});
+                               std::fabs(e->reactions), std::fabs(e->interface_work), std::fabs(e->contact_damped), e->kinetic + std::fabs(e->strain)});
   PetscCall(PetscLogEventEnd(app::event_energy, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }

@@ -18,4 +18,9 @@ double centralDifferenceStableStep(double omega_max, double beta_stiffness_dampi
   return 2.0 / (omega_max * (std::sqrt(1 + xi * xi) + xi));
 }
 
+double centralDifferenceStableStepOfRow(double omega2, double rate) {
+  // Root of (omega2/4) h^2 + (rate/2) h - 1 = 0, written without cancellation.
+  return 2.0 / (std::sqrt(omega2 + 0.25 * rate * rate) + 0.5 * rate);
+}
+
 } // namespace slipwave::physics

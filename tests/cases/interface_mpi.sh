@@ -9,6 +9,8 @@
 # issue 2), and so must the interface output per pair id at every frame (sigma_N,
 # accumulated_slip, opening, status), each to 1e-10 of its peak. The accumulated slip must reach
 # 1 mm and some pairs must be open, so sliding and opening are both exercised.
+# The default contact damping (0.1) is on: its dashpots act across the cut pairs too, and the
+# energy budget with their work booked (contact_damped, which must be > 0) closes to 1e-9.
 set -eu -o pipefail
 . tests/tools/lib.sh
 IC="$PY tests/tools/contact_checks.py"
@@ -26,3 +28,9 @@ $CHECK stations-equal "$WORK/np1" "$WORK/np2" --names footing_top,soil_under,soi
 $IC interface-equal "$WORK/np1" "$WORK/np2" --name base --fields sigma_N,accumulated_slip,opening,status --tol 1e-10 \
   --min-peak 1e-3 --min-peak-fields accumulated_slip
 $IC open-traction "$WORK/np2" --name base --min-open 10
+$CHECK energy "$WORK/np2/energy.csv" --max-error 1e-9 --min-rows 1000
+$PY -c "
+import sys, numpy as np
+d = np.genfromtxt('$WORK/np2/energy.csv', delimiter=',', names=True)
+print(f'contact dashpots took {d[\"contact_damped\"][-1]:.4e} J (need > 0)')
+sys.exit(0 if d['contact_damped'][-1] > 0 else 1)"

@@ -31,10 +31,11 @@ def interface_frames(out_dir, name, field):
 
 def stored_total(d):
     """Mechanical energy held or spent by the model: kinetic + strain + interface stored +
-    interface dissipated + absorbed + damped + anelastic, minus what the loads put in (input and external
-    work). For a closed model without loads this is the brief's kinetic + strain + interface
-    terms; its growth above the energy at t = 0 is energy the scheme created."""
-    return (d["kinetic"] + d["strain"] + d["interface_stored"] + d["interface_dissipated"] + d["absorbed"] + d["damped"]
+    interface dissipated + contact dashpots + absorbed + damped + anelastic, minus what the
+    loads put in (input and external work). For a closed model without loads this is the brief's
+    kinetic + strain + interface terms; its growth above the energy at t = 0 is energy the scheme
+    created."""
+    return (d["kinetic"] + d["strain"] + d["interface_stored"] + d["interface_dissipated"] + d["contact_damped"] + d["absorbed"] + d["damped"]
             + d["anelastic"] - d["input_work"] - d["external_work"])
 
 
@@ -161,6 +162,34 @@ def lift_drop(args):
     return 0 if ok else 1
 
 
+def decay(args):
+    """Free decay of a damped oscillation about zero at a station: the largest value of one
+    column in each window of one expected period (the cycle's peak, whatever faster ringing
+    rides on it), from the first window on. The damping ratio from the mean logarithmic
+    decrement over the peaks, delta = ln(p_0 / p_N) / N, zeta = delta / sqrt(4 pi^2 + delta^2),
+    and the damped period from the peak spacing; each against the expected value."""
+    d = read_csv(f"{args.dir}/stations/{args.station}.csv")
+    t, x = d["t"], d[args.column]
+    peaks = []
+    for w in range(int(t[-1] / args.period)):
+        idx = np.nonzero((t >= w * args.period) & (t < (w + 1) * args.period))[0]
+        peaks.append(idx[np.argmax(x[idx])])
+    k = np.array(peaks)
+    if len(k) < 3 or np.any(x[k] <= 0):
+        print(f"decay: {len(k)} cycles, peaks {x[k]} (need >= 3, all > 0)")
+        return 1
+    n = len(k) - 1
+    delta = np.log(x[k[0]] / x[k[-1]]) / n
+    zeta = delta / np.sqrt(4 * np.pi ** 2 + delta ** 2)
+    period = (t[k[-1]] - t[k[0]]) / n
+    z_err = abs(zeta - args.zeta)
+    p_err = abs(period - args.period) / args.period
+    print(f"decay: {len(k)} cycles of {args.column} at {args.station}, peaks {x[k[0]]:.4e} .. {x[k[-1]]:.4e}; damping ratio {zeta:.6f}, expected {args.zeta:.6f}, "
+          f"difference {z_err:.2e} (bound {args.zeta_tol:.1e}); damped period {period:.6e} s, expected {args.period:.6e} s, relative difference {p_err:.2e} "
+          f"(bound {args.period_tol:.1e})")
+    return 0 if z_err <= args.zeta_tol and p_err <= args.period_tol else 1
+
+
 def interface_equal(args):
     """Interface fields of two runs (1 and 2 ranks) compared per pair id at every frame,
     each field scaled by its peak over the run."""
@@ -228,9 +257,17 @@ def main():
     q.add_argument("--tol", type=float, required=True)
     q.add_argument("--min-peak", type=float)
     q.add_argument("--min-peak-fields", default="")
+    y = sub.add_parser("decay")
+    y.add_argument("dir")
+    y.add_argument("--station", required=True)
+    y.add_argument("--column", required=True)
+    y.add_argument("--zeta", type=float, required=True)
+    y.add_argument("--zeta-tol", type=float, required=True)
+    y.add_argument("--period", type=float, required=True)
+    y.add_argument("--period-tol", type=float, required=True)
     args = p.parse_args()
     return {"energy-growth": energy_growth, "bar-contact": bar_contact, "station-window": station_window, "open-traction": open_traction,
-            "lift-drop": lift_drop, "interface-equal": interface_equal}[args.cmd](args)
+            "lift-drop": lift_drop, "interface-equal": interface_equal, "decay": decay}[args.cmd](args)
 
 
 if __name__ == "__main__":

@@ -58,5 +58,34 @@ int main() {
     unit::check(above.late > 1e3 * above.early,
                 tag + ": grows at 1.01 x bound (late/early max |u| = " + std::to_string(above.late / above.early) + ")");
   }
+
+  // Row form: rate = beta omega^2 is the single-mode bound; rate = 0 is 2/omega.
+  for (double xi : {0.0, 0.05, 0.75, 2.0}) {
+    const double beta = 2 * xi / omega;
+    unit::near(centralDifferenceStableStepOfRow(omega * omega, beta * omega * omega), centralDifferenceStableStep(omega, beta), 1e-14, 0,
+               "row bound with rate = beta omega^2 = mode bound, xi = " + std::to_string(xi).substr(0, 4));
+  }
+  // Two equal masses m joined by a spring k and a dashpot c (a contact pair): rows 2k/m and
+  // 2c/m; the relative mode has omega^2 = 2k/m and rate 2c/m exactly, so the row bound is
+  // sharp. Stepped by the lagged scheme (dashpot on v_{n-1/2}) from w = 1 at rest.
+  for (double xi : {0.1, 1.0}) {
+    const double m = 600, k = 4e8, wn = std::sqrt(2 * k / m), c = xi * wn * m; // 2c/m = 2 xi wn
+    const double dt  = centralDifferenceStableStepOfRow(2 * k / m, 2 * c / m);
+    auto         run = [&](double h) {
+      double x1 = -0.5, x2 = 0.5, v1 = 0, v2 = 0, early = 0, late = 0;
+      for (int n = 0; n < 20000; ++n) {
+        const double f = k * (x2 - x1) + c * (v2 - v1);
+        v1 += h * f / m, v2 -= h * f / m;
+        x1 += h * v1, x2 += h * v2;
+        if (!(std::fabs(x2 - x1) < 1e100)) return HUGE_VAL;
+        if (n < 1000) early = std::fmax(early, std::fabs(x2 - x1));
+        if (n >= 19000) late = std::fmax(late, std::fabs(x2 - x1));
+      }
+      return late / early;
+    };
+    const std::string tag = "contact pair xi = " + std::to_string(xi).substr(0, 3);
+    unit::check(run(0.99 * dt) <= 1 + 1e-12, tag + ": bounded at 0.99 x the row bound");
+    unit::check(run(1.01 * dt) > 1e3, tag + ": grows at 1.01 x the row bound");
+  }
   return unit::failures();
 }

@@ -26,11 +26,17 @@ struct InterfaceTotals {
 
 class InterfaceAssembler {
 public:
-  // `u_template`: a global displacement vector (its layout and the pairs' dof indices).
+  // `mass`: the global lumped mass per dof (its layout gives the pairs' dof indices; its
+  // values size the contact dashpots). `contact_damping`: fraction of each pair's critical
+  // normal damping, 0 for none (physics/contact_damping.hpp).
   PetscErrorCode Setup(MPI_Comm comm, PetscInt dim, const mesh::InterfaceSpec &spec, const mesh::InterfacePairs &pairs, const physics::InterfaceParams &params,
-                       double sigma_N0, Vec u_template);
+                       double sigma_N0, double contact_damping, Vec mass);
   // f += interface forces at displacement u; advances and commits every pair's state.
   PetscErrorCode AddForces(Vec u, Vec f);
+  // f += contact damping forces of the pairs closed after the last AddForces, from the
+  // velocity v (the half-step velocity that the step's other damping terms use). No-op
+  // without contact damping.
+  PetscErrorCode AddDampingForces(Vec v, Vec f);
   // Adds the Gershgorin row sums of the penalty springs, 2 * sum_j |k_ij| with
   // k = A (E n n + G (I - n n)), to a global vector laid out like u.
   PetscErrorCode AddStiffnessRowAbsSums(Vec rowabs);
@@ -41,6 +47,11 @@ public:
   // Pairs (over all ranks) that no longer answer as a linear stick spring: slipping, open, or
   // on the tension plateau (see physics::interfaceOnLinearStickBranch).
   PetscErrorCode CountOffLinearStick(PetscInt *count) const;
+  // The same for the contact dashpots, 2 * sum_j |c n_i n_j| (all pairs, as if closed).
+  PetscErrorCode AddDampingRowAbsSums(Vec rowabs);
+  double contactDamping() const { return contact_damping_; }
+  // Smallest and largest dashpot coefficient c over all pairs [N s/m] (for the report).
+  PetscErrorCode DashpotRange(double *c_min, double *c_max) const;
   PetscErrorCode Totals(InterfaceTotals *totals) const;
   // Measures jumps from the current displacement as zero again (after the geostatic stage the
   // displacements restart from zero); tractions and state are kept.
@@ -72,6 +83,8 @@ private:
   std::vector<physics::InterfaceState<3>> states3_;
   std::vector<double> tangent_;   // (dim-1) unit tangents per pair, dim components each
   std::vector<double> jump_prev_; // [u] at the last evaluation, dim per pair
+  double              contact_damping_ = 0;
+  std::vector<double> dashpot_;   // normal dashpot c per pair [N s/m]
   double              max_drift_ = 0;
   VecScatter          scatter_ = nullptr;
   Vec                 pair_u_ = nullptr, pair_f_ = nullptr;

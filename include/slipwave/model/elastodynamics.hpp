@@ -53,6 +53,7 @@ struct Elastodynamics {
   // Parts of the last RHS evaluation, for the energy ledger.
   Vec       f_internal = nullptr, f_external = nullptr, f_input = nullptr, f_stiffness_damping = nullptr, f_interface = nullptr;
   Vec       f_anelastic = nullptr; // + sum of the constant-Q memory forces (zero without attenuation)
+  Vec       f_contact_damping = nullptr; // the interfaces' contact dashpots (zero without them)
   PetscReal rhs_time = 0;
   bool      input_enabled = true;       // off during the geostatic stage
   std::vector<double> initial_stress;   // 6 per local cell: the geostatic state, added to the output

@@ -2,7 +2,8 @@
 // step h, the shadow energy W_{n+1/2} = ½ v_{n+1/2}ᵀ M v_{n+1/2} + ½ u_nᵀ K u_{n+1}, and
 //   W_{n+1/2} − W_{n−1/2} = h v_n · f_n,   f_n = M a_n + K u_n (all non-internal forces).
 // The ledger books h v_n·f_n term by term (incident-wave input, gravity and tractions,
-// reactions of held dofs, interface forces, minus dashpot absorption, Rayleigh damping and the work of the constant-Q memory forces), so
+// reactions of held dofs, interface forces, minus dashpot absorption, Rayleigh damping, the
+// work of the constant-Q memory forces and the interfaces' contact dashpots), so
 //   balance error = W_{n+1/2} − W_{1/2} − Σ booked work
 // is round-off for a consistent discretisation, and a growth of it flags an instability.
 #pragma once
@@ -24,6 +25,7 @@ struct EnergyLedger {
                         // the mechanisms hold or dissipated)
   double interface_work = 0; // cumulative work of the interface forces on the bulk (minus what
                              // the interfaces store and dissipate)
+  double contact_damped = 0; // cumulative energy taken by the interfaces' contact dashpots
   double shadow    = 0; // W_{n+1/2}
   double shadow_start = 0;
   double balance_error = 0;
