@@ -14,6 +14,9 @@ From the interface output (interface_<name>.xmf/h5) and the stations of OUT:
   peak_structure_acceleration  max |a_x| at the station block_top [m/s^2]
   free_field_pga      max |a_x| at the station free_field [m/s^2]
   free_field_psa_<T>  5 %-damped pseudo-acceleration of free_field at T = 0.1, 0.3, 1 s [m/s^2]
+  high_frequency_share_<station>  share of the horizontal acceleration power (Parseval, over
+                      the whole record) above the mesh's resolved frequency vs_min / (8 h_min),
+                      at free_field and block_top: motion the mesh cannot carry faithfully [-]
 """
 import argparse
 import json
@@ -34,6 +37,22 @@ def station(out, name):
     if not os.path.isfile(path):
         raise SystemExit(f"scene_metrics: error: station '{name}' is missing ({path})")
     return read_csv(path)
+
+
+def high_frequency_share(t, a, f_cut):
+    """Share of sum |A(f)|^2 above f_cut, A the discrete Fourier transform of a on its own
+    uniform samples (Parseval: the share of the signal's power)."""
+    dt, acc = resample_uniform(t, a)
+    power = np.abs(np.fft.rfft(acc)) ** 2
+    f = np.fft.rfftfreq(len(acc), dt)
+    return float(power[f > f_cut].sum() / power.sum())
+
+
+def resolved_frequency(out):
+    """vs_min / (8 h_min) from run_info.json, whose resolved frequency is vs_min / (10 h_min)."""
+    with open(os.path.join(out, "run_info.json")) as f:
+        info = json.load(f)
+    return info["resolved_frequency_hz"] * info["points_per_wavelength"] / 8
 
 
 def metrics(out, interface="base"):
@@ -57,11 +76,16 @@ def metrics(out, interface="base"):
     psa = pseudo_acceleration_spectrum(acc, dt, SPECTRUM_PERIODS)
     for T, value in zip(SPECTRUM_PERIODS, psa):
         m[f"free_field_psa_{T:g}s"] = float(value)
+    f_cut = resolved_frequency(out)
+    for name in ("free_field", "block_top"):
+        s = station(out, name)
+        m[f"high_frequency_share_{name}"] = high_frequency_share(s["t"], s["a_x"], f_cut)
     return m
 
 
 UNITS = {"net_slip": "m", "accumulated_slip": "m", "peak_uplift": "m", "peak_rocking_angle": "rad",
-         "peak_structure_acceleration": "m/s^2", "free_field_pga": "m/s^2"}
+         "peak_structure_acceleration": "m/s^2", "free_field_pga": "m/s^2",
+         "high_frequency_share_free_field": "-", "high_frequency_share_block_top": "-"}
 
 
 def main():

@@ -51,8 +51,8 @@ PetscErrorCode AttenuationCreate(MPI_Comm comm, std::vector<RegionMaterialInfo> 
       model     = physics::constantQFit(m.damping_ratio, band[0], band[1], (int)mechanisms);
       // A given reference scales the moduli now; the automatic one waits for the mesh
       // (AttenuationChooseReferences).
-      if (reference_set) {
-        reference = f_reference;
+      if (reference_set || m.reference_frequency > 0) {
+        reference = m.reference_frequency > 0 ? m.reference_frequency : f_reference;
         factor    = physics::constantQUnrelaxedFactor(model, reference);
         m.fe.lame.lambda *= factor;
         m.fe.lame.mu *= factor;
@@ -106,7 +106,7 @@ PetscErrorCode AttenuationChooseReferences(Attenuation *att, DM dm, const fem::B
   const double f_centre = std::sqrt(att->f_min * att->f_max);
   for (size_t r = 0; r < materials->size(); ++r) {
     const auto &model = att->region_models[r];
-    if (model.omega.empty()) continue;
+    if (model.omega.empty() || att->region_reference[r] > 0) continue; // no mechanisms, or a given reference
     const double s_max     = omega2_region[r] > 0 ? omega2_all / omega2_region[r] / ((1 - kMaxStepDrop) * (1 - kMaxStepDrop)) : 1e300;
     const double own_drop  = 1 - 1 / std::sqrt(s_max);
     const double reference = physics::constantQReferenceForStepDrop(model, f_centre, own_drop);
@@ -261,7 +261,7 @@ std::vector<std::string> AttenuationReport(const Attenuation *att, const std::ve
     lines.push_back(buf);
     std::snprintf(buf, sizeof buf,
                   "    vp, vs given at %.4g Hz%s; speeds x %.4f at %g Hz, x %.4f at %g Hz (dispersion); unrelaxed moduli x %.4f (this region's cells alone: stable step %.2f %% below elastic)",
-                  f_r, att->reference_auto ? " (auto: band centre, or above it where needed for a whole-mesh stable-step drop <= 1.9 %)" : "", lo, att->f_min, hi, att->f_max, att->region_factor[r],
+                  f_r, att->reference_auto && materials[r].reference_frequency == 0 ? " (auto: band centre, or above it where needed for a whole-mesh stable-step drop <= 1.9 %)" : "", lo, att->f_min, hi, att->f_max, att->region_factor[r],
                   100 * (1 - 1 / std::sqrt(att->region_factor[r])));
     lines.push_back(buf);
     std::string mech = "    mechanisms (relaxation frequency [Hz]: weight Y_l):";

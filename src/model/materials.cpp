@@ -15,7 +15,7 @@ PetscErrorCode materialNamesGiven(std::vector<std::string> *names) {
   PetscCall(PetscOptionsGetAll(nullptr, &all));
   std::stringstream ss(all ? all : "");
   std::string       token;
-  const char       *properties[] = {"_rho", "_vp", "_vs", "_E", "_nu", "_damping_ratio"};
+  const char       *properties[] = {"_rho", "_vp", "_vs", "_E", "_nu", "_damping_ratio", "_reference_frequency"};
   while (ss >> token) {
     if (token.rfind("-material_", 0) != 0) continue;
     std::string rest = token.substr(std::strlen("-material_"));
@@ -48,8 +48,8 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
   for (const std::string &region : regions) {
     const std::string prefix = "material_" + region + "_";
     const std::string title  = "Material of region " + region;
-    PetscReal         rho = 0, vp = 0, vs = 0, young = 0, nu = 0, damping_ratio = 0;
-    PetscBool         has_rho, has_vp, has_vs, has_e, has_nu;
+    PetscReal         rho = 0, vp = 0, vs = 0, young = 0, nu = 0, damping_ratio = 0, reference_frequency = 0;
+    PetscBool         has_rho, has_vp, has_vs, has_e, has_nu, has_reference;
     PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
     PetscCall(PetscOptionsReal("-rho", "mass density [kg/m^3]", "MaterialsRead", rho, &rho, &has_rho));
     PetscCall(PetscOptionsReal("-vp", "P-wave speed [m/s] (with -vs)", "MaterialsRead", vp, &vp, &has_vp));
@@ -58,6 +58,10 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
     PetscCall(PetscOptionsReal("-nu", "Poisson's ratio [-] (with -E)", "MaterialsRead", nu, &nu, &has_nu));
     PetscCall(PetscOptionsReal("-damping_ratio", "constant-Q damping ratio xi [-] of P and S waves, Q = 1/(2 xi) (0 <= xi < 0.5; 0: elastic)", "MaterialsRead",
                                damping_ratio, &damping_ratio, nullptr));
+
+    PetscCall(PetscOptionsReal("-reference_frequency",
+                               "frequency [Hz] at which this damped region's vp, vs hold (> 0; default: -attenuation_reference_frequency, or automatic)",
+                               "MaterialsRead", reference_frequency, &reference_frequency, &has_reference));
     PetscOptionsEnd();
     const char *r = region.c_str();
     PetscCheck(has_rho || has_vp || has_vs || has_e || has_nu, comm, PETSC_ERR_USER_INPUT,
@@ -82,11 +86,14 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
     PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "material of region '%s' (-material_%s_...): %s", r, r, problem.c_str());
     PetscCheck(damping_ratio >= 0 && damping_ratio < 0.5, comm, PETSC_ERR_USER_INPUT, "-material_%s_damping_ratio = %g; allowed: 0 <= xi < 0.5 (0: elastic)", r,
                (double)damping_ratio);
+    PetscCheck(!has_reference || (reference_frequency > 0 && damping_ratio > 0), comm, PETSC_ERR_USER_INPUT,
+               "-material_%s_reference_frequency = %g; allowed: > 0 Hz, in a region with -material_%s_damping_ratio > 0", r, (double)reference_frequency, r);
     RegionMaterialInfo info;
     info.region  = region;
     info.elastic = m;
     info.fe      = fem::RegionMaterial{m.rho, physics::lame(m)};
     info.damping_ratio = damping_ratio;
+    info.reference_frequency = reference_frequency;
     materials->push_back(info);
   }
   PetscFunctionReturn(0);

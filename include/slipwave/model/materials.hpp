@@ -18,6 +18,7 @@ struct RegionMaterialInfo {
   physics::ElasticMaterial  elastic;
   fem::RegionMaterial       fe;            // element moduli: unrelaxed ones in a damped region (model/attenuation.hpp)
   double                    damping_ratio = 0; // constant-Q damping ratio; 0: elastic
+  double                    reference_frequency = 0; // where vp, vs hold in a damped region [Hz]; 0: the global choice
 };
 
 PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regions, std::vector<RegionMaterialInfo> *materials);
