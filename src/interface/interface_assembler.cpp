@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "slipwave/physics/contact_damping.hpp"
 
@@ -218,20 +219,8 @@ PetscErrorCode InterfaceAssembler::AddDampingForces(Vec v, Vec f) {
 }
 
 PetscErrorCode InterfaceAssembler::AddDampingRowAbsSums(Vec rowabs) {
-  PetscScalar *pf;
   PetscFunctionBeginUser;
-  PetscCall(VecGetArray(pair_f_, &pf));
-  for (size_t p = 0; p < pairs_.id.size(); ++p) {
-    const double *n = &pairs_.normal[p * dim_];
-    for (PetscInt i = 0; i < dim_; ++i) {
-      double row = 0;
-      for (PetscInt j = 0; j < dim_; ++j) row += std::fabs(n[i] * n[j]);
-      pf[p * 2 * dim_ + i] = pf[p * 2 * dim_ + dim_ + i] = 2 * dashpot_[p] * row;
-    }
-  }
-  PetscCall(VecRestoreArray(pair_f_, &pf));
-  PetscCall(VecScatterBegin(scatter_, pair_f_, rowabs, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecScatterEnd(scatter_, pair_f_, rowabs, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(addPairRowAbsSums(rowabs, [this](size_t p, const double *n, PetscInt i, PetscInt j) { return dashpot_[p] * n[i] * n[j]; }));
   PetscFunctionReturn(0);
 }
 
@@ -245,6 +234,14 @@ PetscErrorCode InterfaceAssembler::DashpotRange(double *c_min, double *c_max) co
 }
 
 PetscErrorCode InterfaceAssembler::AddStiffnessRowAbsSums(Vec rowabs) {
+  PetscFunctionBeginUser;
+  PetscCall(addPairRowAbsSums(rowabs, [this](size_t p, const double *n, PetscInt i, PetscInt j) {
+    return pairs_.area[p] * (params_.E * n[i] * n[j] + params_.G * ((i == j ? 1.0 : 0.0) - n[i] * n[j]));
+  }));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceAssembler::addPairRowAbsSums(Vec rowabs, const std::function<double(size_t, const double *, PetscInt, PetscInt)> &k) {
   PetscScalar *pf;
   PetscFunctionBeginUser;
   PetscCall(VecGetArray(pair_f_, &pf));
@@ -252,9 +249,9 @@ PetscErrorCode InterfaceAssembler::AddStiffnessRowAbsSums(Vec rowabs) {
     const double *n = &pairs_.normal[p * dim_];
     for (PetscInt i = 0; i < dim_; ++i) {
       double row = 0;
-      for (PetscInt j = 0; j < dim_; ++j) row += std::fabs(params_.E * n[i] * n[j] + params_.G * ((i == j ? 1.0 : 0.0) - n[i] * n[j]));
+      for (PetscInt j = 0; j < dim_; ++j) row += std::fabs(k(p, n, i, j));
       // The pair couples the two nodes with +k and -k: each row sees |k| twice.
-      pf[p * 2 * dim_ + i] = pf[p * 2 * dim_ + dim_ + i] = 2 * pairs_.area[p] * row;
+      pf[p * 2 * dim_ + i] = pf[p * 2 * dim_ + dim_ + i] = 2 * row;
     }
   }
   PetscCall(VecRestoreArray(pair_f_, &pf));

@@ -8,6 +8,7 @@
 #pragma once
 #include <petscmat.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,9 @@ public:
   const physics::InterfaceParams &params() const { return params_; }
 
 private:
+  // Adds 2 sum_j |k(p, n, i, j)| to both nodes' rows of every pair (a +k/-k coupling of the
+  // pair's nodes; n is the pair's normal).
+  PetscErrorCode addPairRowAbsSums(Vec rowabs, const std::function<double(size_t, const double *, PetscInt, PetscInt)> &k);
   MPI_Comm                 comm_ = MPI_COMM_NULL;
   PetscInt                 dim_  = 0;
   mesh::InterfaceSpec      spec_;
