@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "slipwave/app/log_events.hpp"
+#include "slipwave/core/log_events.hpp"
 #include "slipwave/fem/element_kernels.hpp"
 #include "slipwave/model/elastodynamics.hpp"
 #include "slipwave/time/central_difference.hpp"
@@ -248,7 +248,7 @@ int main(int argc, char **argv) {
   PetscMPIInt size;
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
   PetscCheck(size == 1, PETSC_COMM_WORLD, PETSC_ERR_SUP, "bench_bulk_operator runs on 1 rank");
-  PetscCall(app::LogEventsRegister());
+  PetscCall(core::LogEventsRegister());
   setOption("-regions", "soil");
   setOption("-material_soil_rho", "2000");
   setOption("-material_soil_vp", "400");

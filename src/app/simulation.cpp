@@ -8,8 +8,8 @@
 #include <string>
 
 #include "slipwave/app/checkpoint.hpp"
-#include "slipwave/app/log_events.hpp"
-#include "slipwave/app/options_check.hpp"
+#include "slipwave/core/log_events.hpp"
+#include "slipwave/core/options_check.hpp"
 #include "slipwave/io/interface_output.hpp"
 #include "slipwave/io/stations.hpp"
 #include "slipwave/io/volume_output.hpp"
@@ -20,6 +20,7 @@
 #include "slipwave/time/central_difference.hpp"
 
 namespace slipwave::app {
+using namespace core;  // the ground floor: log events and stages, the unused-option check
 namespace {
 
 // Default fractions of the stable step. With contact interfaces the open/close switching of a

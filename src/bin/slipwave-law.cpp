@@ -1,8 +1,8 @@
 // slipwave-law: drives one interface pair of the Mohr-Coulomb law along a jump history, to
 // calibrate the interface parameters against a laboratory shear test.
 //   slipwave-law -path IN.csv [-output OUT.csv] -interface_E 1e9 -interface_G 1e9 ...
-#include "slipwave/app/errors.hpp"
-#include "slipwave/app/options_check.hpp"
+#include "slipwave/core/errors.hpp"
+#include "slipwave/core/options_check.hpp"
 #include "slipwave/interface/interface_options.hpp"
 #include "slipwave/io/jump_history_csv.hpp"
 #include "slipwave/physics/mohr_coulomb_interface.hpp"
@@ -67,7 +67,7 @@ PetscErrorCode run(MPI_Comm comm) {
                                sizeof output, &has_output));
   PetscOptionsEnd();
   PetscCall(interface::InterfaceOptionsRead(comm, "interface_", &options));
-  PetscCall(app::OptionsErrorIfUnused(comm));
+  PetscCall(core::OptionsErrorIfUnused(comm));
   PetscCall(PetscOptionsHasHelp(nullptr, &help_requested));
   if (help_requested) PetscFunctionReturn(0);
 
@@ -103,7 +103,7 @@ PetscErrorCode run(MPI_Comm comm) {
 
 int main(int argc, char **argv) {
   PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
-  PetscErrorCode ierr = slipwave::app::ErrorsPushUserInputHandler("slipwave-law");
+  PetscErrorCode ierr = slipwave::core::ErrorsPushUserInputHandler("slipwave-law");
   if (!ierr) ierr = run(PETSC_COMM_WORLD);
   if (ierr) {
     PetscFinalize();

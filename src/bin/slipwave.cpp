@@ -1,7 +1,7 @@
 // slipwave: explicit finite elements for seismic soil-structure interaction.
 #include <petscsys.h>
 
-#include "slipwave/app/errors.hpp"
+#include "slipwave/core/errors.hpp"
 #include "slipwave/app/simulation.hpp"
 
 static const char help[] = "slipwave: explicit elastodynamics on PETSc for seismic soil-structure interaction.\n"
@@ -10,7 +10,7 @@ static const char help[] = "slipwave: explicit elastodynamics on PETSc for seism
 int main(int argc, char **argv) {
   PetscErrorCode ierr = PetscInitialize(&argc, &argv, nullptr, help);
   if (ierr) return 1;
-  ierr = slipwave::app::ErrorsPushUserInputHandler("slipwave");
+  ierr = slipwave::core::ErrorsPushUserInputHandler("slipwave");
   if (!ierr) ierr = slipwave::app::SimulationRun(PETSC_COMM_WORLD);
   const PetscErrorCode fin = PetscFinalize();
   return (ierr || fin) ? 1 : 0;

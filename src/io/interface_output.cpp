@@ -1,6 +1,6 @@
 #include "slipwave/io/interface_output.hpp"
 
-#include "slipwave/app/log_events.hpp"
+#include "slipwave/core/log_events.hpp"
 
 namespace slipwave::io {
 namespace {
@@ -80,13 +80,13 @@ PetscErrorCode InterfaceOutput::fill(const interface::InterfaceAssembler &iface)
 
 PetscErrorCode InterfaceOutput::Write(const interface::InterfaceAssembler &iface, PetscInt step, PetscReal t) {
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(app::event_output, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(core::event_output, 0, 0, 0, 0));
   PetscCall(fill(iface));
   const std::vector<std::string> names = interface::InterfaceAssembler::pairFieldNames(0);
   std::vector<FieldRef>          refs;
   for (size_t f = 0; f < fields_.size(); ++f) refs.push_back({names[f], Centering::Node, fields_[f]});
   PetscCall(writer_.WriteStep(step, t, refs));
-  PetscCall(PetscLogEventEnd(app::event_output, 0, 0, 0, 0));
+  PetscCall(PetscLogEventEnd(core::event_output, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 

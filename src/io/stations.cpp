@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "slipwave/app/log_events.hpp"
+#include "slipwave/core/log_events.hpp"
 
 namespace slipwave::io {
 namespace {
@@ -161,7 +161,7 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const mesh:
 PetscErrorCode Stations::Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a) {
   PetscFunctionBeginUser;
   if (names_.empty()) PetscFunctionReturn(0);
-  PetscCall(PetscLogEventBegin(app::event_stations, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(core::event_stations, 0, 0, 0, 0));
   Vec                globals[3] = {u, v, a};
   const PetscScalar *arr[3];
   for (int k = 0; k < 3; ++k) {
@@ -178,7 +178,7 @@ PetscErrorCode Stations::Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a) {
       }
   }
   for (int k = 0; k < 3; ++k) PetscCall(VecRestoreArrayRead(work_[k], &arr[k]));
-  PetscCall(PetscLogEventEnd(app::event_stations, 0, 0, 0, 0));
+  PetscCall(PetscLogEventEnd(core::event_stations, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 

@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "slipwave/app/log_events.hpp"
+#include "slipwave/core/log_events.hpp"
 
 namespace slipwave::io {
 
@@ -65,7 +65,7 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
 PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a,
                                    const std::vector<double> &initial_stress) {
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(app::event_output, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(core::event_output, 0, 0, 0, 0));
   PetscCall(DMGlobalToLocal(dm, u, INSERT_VALUES, u_local_));
   const PetscScalar *ul;
   PetscScalar       *s;
@@ -82,7 +82,7 @@ PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscIn
                                {"acceleration", Centering::Node, a},
                                {"stress", Centering::Cell, stress_},
                                {"region", Centering::Cell, region_}}));
-  PetscCall(PetscLogEventEnd(app::event_output, 0, 0, 0, 0));
+  PetscCall(PetscLogEventEnd(core::event_output, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 

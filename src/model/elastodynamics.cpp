@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "slipwave/app/log_events.hpp"
+#include "slipwave/core/log_events.hpp"
 #include "slipwave/model/attenuation.hpp"
 #include "slipwave/model/free_field.hpp"
 #include "slipwave/model/lateral_tie.hpp"
@@ -213,7 +213,7 @@ PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
 PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   auto *m = static_cast<Elastodynamics *>(ctx);
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(app::event_bulk_force, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(core::event_bulk_force, 0, 0, 0, 0));
   PetscCall(ElastodynamicsStiffnessTimes(m, u, m->f_internal));
   // The memory forces need K_U u and the ghosted u that K u has just gathered into u_local.
   // Off in the geostatic stage (input_enabled false): the memory starts with the dynamic stage.
@@ -224,9 +224,9 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
     PetscCall(ElastodynamicsStiffnessTimes(m, v_half, m->f_stiffness_damping));
     PetscCall(VecScale(m->f_stiffness_damping, m->rayleigh.beta));
   }
-  PetscCall(PetscLogEventEnd(app::event_bulk_force, 0, 0, 0, 0));
+  PetscCall(PetscLogEventEnd(core::event_bulk_force, 0, 0, 0, 0));
   if (!m->interfaces.empty()) {
-    PetscCall(PetscLogEventBegin(app::event_interface, 0, 0, 0, 0));
+    PetscCall(PetscLogEventBegin(core::event_interface, 0, 0, 0, 0));
     PetscCall(VecZeroEntries(m->f_interface));
     for (auto &iface : m->interfaces) PetscCall(iface.AddForces(u, m->f_interface));
     // The contact dashpots use the half-step velocity, like stiffness-proportional damping;
@@ -237,10 +237,10 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
       PetscCall(VecZeroEntries(m->f_contact_damping));
       for (auto &iface : m->interfaces) PetscCall(iface.AddDampingForces(v_half, m->f_contact_damping));
     }
-    PetscCall(PetscLogEventEnd(app::event_interface, 0, 0, 0, 0));
+    PetscCall(PetscLogEventEnd(core::event_interface, 0, 0, 0, 0));
   }
 
-  PetscCall(PetscLogEventBegin(app::event_boundary, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(core::event_boundary, 0, 0, 0, 0));
   const double v_in = m->input_enabled && m->bc.input.active() && m->bc.input_wave != "none" ? m->bc.input.velocity(t) : 0.0;
   PetscCall(VecAXPBY(m->f_input, v_in, 0.0, m->bc.input_force));
   PetscCall(VecWAXPY(m->f_external, 1.0, m->bc.constant_force, m->f_input));
@@ -275,7 +275,7 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   for (const PrescribedVelocity &p : m->bc.prescribed) PetscCall(VecAXPY(a, p.history.acceleration(t), p.dofs));
   PetscCall(LateralTieApply(m->tie, a));
   m->rhs_time = t;
-  PetscCall(PetscLogEventEnd(app::event_boundary, 0, 0, 0, 0));
+  PetscCall(PetscLogEventEnd(core::event_boundary, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "slipwave/app/log_events.hpp"
+#include "slipwave/core/log_events.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 namespace slipwave::model {
@@ -11,7 +11,7 @@ namespace slipwave::model {
 PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, EnergyLedger *e) {
   Vec u, v, a;
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(app::event_energy, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(core::event_energy, 0, 0, 0, 0));
   PetscCall(TS2GetSolution(ts, &u, &v));
   PetscCall(time::CentralDifferenceGetAcceleration(ts, &a));
   PetscInt           n;
@@ -93,7 +93,7 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, EnergyL
   e->balance_error = (e->shadow - e->shadow_start) - (e->input + e->external + e->reactions + e->interface_work - e->absorbed - e->damped - e->anelastic - e->contact_damped);
   e->scale         = std::max({e->scale, std::fabs(e->shadow), std::fabs(e->input), std::fabs(e->external), std::fabs(e->absorbed), std::fabs(e->damped), std::fabs(e->anelastic),
                                std::fabs(e->reactions), std::fabs(e->interface_work), std::fabs(e->contact_damped), e->kinetic + std::fabs(e->strain)});
-  PetscCall(PetscLogEventEnd(app::event_energy, 0, 0, 0, 0));
+  PetscCall(PetscLogEventEnd(core::event_energy, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 

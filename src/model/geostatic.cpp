@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "slipwave/app/log_events.hpp"
+#include "slipwave/core/log_events.hpp"
 #include "slipwave/model/boundary_faces.hpp"
 #include "slipwave/model/static_equilibrium.hpp"
 
@@ -133,7 +133,7 @@ PetscErrorCode GeostaticStage(Elastodynamics *m, const GeostaticOptions &o, doub
   Vec            u, v, a, mask, run_mask;
   PetscLogDouble t0, t1;
   PetscFunctionBeginUser;
-  PetscCall(PetscLogStagePush(app::stage_geostatic));
+  PetscCall(PetscLogStagePush(core::stage_geostatic));
   PetscCall(PetscTime(&t0));
   PetscCall(DMCreateGlobalVector(m->dm, &u));
   PetscCall(VecDuplicate(u, &v));

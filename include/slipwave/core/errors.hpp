@@ -5,9 +5,9 @@
 #pragma once
 #include <petscsys.h>
 
-namespace slipwave::app {
+namespace slipwave::core {
 
 // Installs the handler that prints user-input errors as one line "<program>: error: <message>".
 PetscErrorCode ErrorsPushUserInputHandler(const char *program_name);
 
-} // namespace slipwave::app
+} // namespace slipwave::core

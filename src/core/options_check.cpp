@@ -1,9 +1,9 @@
-#include "slipwave/app/options_check.hpp"
+#include "slipwave/core/options_check.hpp"
 
 #include <cstring>
 #include <string>
 
-namespace slipwave::app {
+namespace slipwave::core {
 namespace {
 
 // Options that PETSc reads only in PetscFinalize or that are pure reporting requests.
@@ -41,4 +41,4 @@ PetscErrorCode OptionsErrorIfUnused(MPI_Comm comm) {
   PetscFunctionReturn(0);
 }
 
-} // namespace slipwave::app
+} // namespace slipwave::core

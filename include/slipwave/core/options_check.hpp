@@ -4,9 +4,9 @@
 #pragma once
 #include <petscsys.h>
 
-namespace slipwave::app {
+namespace slipwave::core {
 
 // Stops with PETSC_ERR_USER_INPUT naming every option given but never read.
 PetscErrorCode OptionsErrorIfUnused(MPI_Comm comm);
 
-} // namespace slipwave::app
+} // namespace slipwave::core

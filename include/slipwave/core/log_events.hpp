@@ -3,7 +3,7 @@
 #pragma once
 #include <petscsys.h>
 
-namespace slipwave::app {
+namespace slipwave::core {
 
 extern PetscLogEvent event_bulk_force;  // SW:Bulk:Force      element loop + ghost exchange
 extern PetscLogEvent event_boundary;    // SW:Boundary:Apply  loads, incident wave, held dofs
@@ -16,4 +16,4 @@ extern PetscLogStage stage_setup, stage_geostatic, stage_solve;
 
 PetscErrorCode LogEventsRegister();
 
-} // namespace slipwave::app
+} // namespace slipwave::core

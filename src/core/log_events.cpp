@@ -1,6 +1,6 @@
-#include "slipwave/app/log_events.hpp"
+#include "slipwave/core/log_events.hpp"
 
-namespace slipwave::app {
+namespace slipwave::core {
 
 PetscLogEvent event_bulk_force, event_boundary, event_interface, event_energy, event_stations, event_output, event_guard;
 PetscLogStage stage_setup, stage_geostatic, stage_solve;
@@ -22,4 +22,4 @@ PetscErrorCode LogEventsRegister() {
   PetscFunctionReturn(0);
 }
 
-} // namespace slipwave::app
+} // namespace slipwave::core

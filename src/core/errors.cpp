@@ -1,4 +1,4 @@
-#include "slipwave/app/errors.hpp"
+#include "slipwave/core/errors.hpp"
 
 #include <cctype>
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-namespace slipwave::app {
+namespace slipwave::core {
 namespace {
 
 const char *g_program = "slipwave";
@@ -82,4 +82,4 @@ PetscErrorCode ErrorsPushUserInputHandler(const char *program_name) {
   PetscFunctionReturn(0);
 }
 
-} // namespace slipwave::app
+} // namespace slipwave::core
