@@ -20,7 +20,7 @@ std::string densityProblem(double rho) {
 
 } // namespace
 
-fem::LameParameters lame(const ElasticMaterial &m) {
+LameParameters lame(const ElasticMaterial &m) {
   const double mu = m.rho * m.vs * m.vs;
   return {m.rho * m.vp * m.vp - 2 * mu, mu};
 }
@@ -32,7 +32,7 @@ ElasticMaterial fromYoungPoisson(double young, double poisson, double rho) {
 }
 
 double youngModulus(const ElasticMaterial &m) {
-  const fem::LameParameters l = lame(m);
+  const LameParameters l = lame(m);
   return l.mu * (3 * l.lambda + 2 * l.mu) / (l.lambda + l.mu);
 }
 

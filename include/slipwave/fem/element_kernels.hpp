@@ -18,8 +18,12 @@
 //   Tri3   (0,0) (1,0) (0,1)                     Tet4  (0,0,0) (1,0,0) (0,1,0) (0,0,1)
 //   Quad4  (-1,-1) (1,-1) (1,1) (-1,1)           Hex8  Quad4 nodes at zeta = -1, then at +1
 #pragma once
+#include "slipwave/physics/elastic_material.hpp"
 
 namespace slipwave::fem {
+
+// The material enters the kernels as its Lame pair, which the physics layer owns.
+using physics::LameParameters;
 
 enum class CellShape { Tri3, Quad4, Tet4, Hex8 };
 enum class FaceShape { Seg2, Tri3, Quad4 };  // 2D boundary faces: Seg2; 3D: Tri3 / Quad4
@@ -31,11 +35,6 @@ constexpr int kStressComponents = 6;  // xx, yy, zz, xy, yz, xz
 int cellNodeCount(CellShape s);
 int cellDimension(CellShape s);
 int faceNodeCount(FaceShape f);
-
-struct LameParameters {
-  double lambda;
-  double mu;
-};
 
 // K: (n*dim)^2 row-major. Full Gauss quadrature (2x2, 2x2x2; one point for simplices,
 // which is exact for their constant strains).

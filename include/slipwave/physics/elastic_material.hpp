@@ -1,11 +1,15 @@
 // Isotropic linear elastic material as the input files give it (density and wave speeds),
 // with the conversions the kernels and reports need.
 #pragma once
-#include "slipwave/fem/element_kernels.hpp"
-
 #include <string>
 
 namespace slipwave::physics {
+
+// What the stiffness of an isotropic material is made of: lambda and mu in Pa.
+struct LameParameters {
+  double lambda;
+  double mu;
+};
 
 struct ElasticMaterial {
   double rho;  // kg/m^3
@@ -14,7 +18,7 @@ struct ElasticMaterial {
 };
 
 // mu = rho vs^2, lambda = rho vp^2 - 2 mu.
-fem::LameParameters lame(const ElasticMaterial &m);
+LameParameters lame(const ElasticMaterial &m);
 ElasticMaterial fromYoungPoisson(double young, double poisson, double rho);
 double youngModulus(const ElasticMaterial &m);
 double poissonRatio(const ElasticMaterial &m);
