@@ -6,7 +6,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "slipwave/mesh/mesh_builder.hpp"
+#include "slipwave/mesh/labels.hpp"
 
 namespace slipwave::fem {
 namespace {

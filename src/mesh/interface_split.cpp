@@ -2,7 +2,7 @@
 #include "slipwave/mesh/point_centroid.hpp"
 
 #include "slipwave/fem/element_kernels.hpp"
-#include "slipwave/mesh/mesh_builder.hpp"
+#include "slipwave/mesh/labels.hpp"
 
 #include <algorithm>
 #include <array>

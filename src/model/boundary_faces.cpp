@@ -1,7 +1,7 @@
 #include "slipwave/model/boundary_faces.hpp"
 
 #include "slipwave/fem/element_kernels.hpp"
-#include "slipwave/mesh/mesh_builder.hpp"
+#include "slipwave/mesh/labels.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
 
 namespace slipwave::model {

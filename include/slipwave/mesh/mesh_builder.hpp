@@ -2,7 +2,7 @@
 // axis-aligned boxes, or a Gmsh file whose physical group names are the region and boundary
 // names. The mesh is created and labelled serially, then distributed (labels survive).
 // Labels on the result:
-//   "region"          every cell, value = index of its region in MeshDescription::regions
+//   "region"          (kRegionLabel, mesh/labels.hpp) every cell, value = index of its region in MeshDescription::regions
 //   <boundary name>   faces (height 1), value 1: box sides left/right/bottom/top(/front/back),
 //                     or the Gmsh physical groups of dimension dim-1
 // The vertical axis is the last coordinate (y in 2D, z in 3D).
@@ -13,10 +13,9 @@
 #include <vector>
 
 #include "slipwave/mesh/interface_split.hpp"
+#include "slipwave/mesh/labels.hpp"
 
 namespace slipwave::mesh {
-
-inline constexpr char kRegionLabel[] = "region";
 
 struct MeshDescription {
   PetscInt                 dim = 2;
