@@ -7,7 +7,7 @@
 #include <cstring>
 #include <variant>
 
-#include "slipwave/io/ground_motion_record.hpp"
+#include "slipwave/model/ground_motion_record.hpp"
 #include "slipwave/physics/source_time_function.hpp"
 
 namespace slipwave::model {
@@ -95,12 +95,12 @@ std::string lowerExtension(const std::string &path) {
 
 // Rank 0 reads the file; the status and the samples are broadcast so every rank raises the
 // same error or holds the same record.
-PetscErrorCode readRecordCollective(MPI_Comm comm, const std::string &path, bool at2, io::AccelerationUnit unit, io::GroundMotionRecord *record,
-                                    io::ReadStatus *status) {
+PetscErrorCode readRecordCollective(MPI_Comm comm, const std::string &path, bool at2, AccelerationUnit unit, GroundMotionRecord *record,
+                                    ReadStatus *status) {
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) *status = at2 ? io::readPeerAt2(path, record) : io::readAccelerationCsv(path, record, unit);
+  if (rank == 0) *status = at2 ? readPeerAt2(path, record) : readAccelerationCsv(path, record, unit);
   int ok = status->ok ? 1 : 0;
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
   status->ok = ok;
@@ -116,9 +116,9 @@ PetscErrorCode readRecordCollective(MPI_Comm comm, const std::string &path, bool
   record->time.resize(n), record->acceleration.resize(n);
   PetscCallMPI(MPI_Bcast(record->time.data(), (int)n, MPI_DOUBLE, 0, comm));
   PetscCallMPI(MPI_Bcast(record->acceleration.data(), (int)n, MPI_DOUBLE, 0, comm));
-  int g_unit = record->file_unit == io::AccelerationUnit::G;
+  int g_unit = record->file_unit == AccelerationUnit::G;
   PetscCallMPI(MPI_Bcast(&g_unit, 1, MPI_INT, 0, comm));
-  record->file_unit = g_unit ? io::AccelerationUnit::G : io::AccelerationUnit::MetresPerSecondSquared;
+  record->file_unit = g_unit ? AccelerationUnit::G : AccelerationUnit::MetresPerSecondSquared;
   PetscFunctionReturn(0);
 }
 
@@ -242,31 +242,31 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
                p.c_str());
     at2 = ext == "at2";
   }
-  const io::AccelerationUnit unit = equalsNoCase(units, "g") ? io::AccelerationUnit::G
-                                    : equalsNoCase(units, "auto") ? io::AccelerationUnit::FromHeader
-                                                                  : io::AccelerationUnit::MetresPerSecondSquared;
-  PetscCheck(!at2 || unit != io::AccelerationUnit::MetresPerSecondSquared, comm, PETSC_ERR_USER_INPUT,
+  const AccelerationUnit unit = equalsNoCase(units, "g") ? AccelerationUnit::G
+                                    : equalsNoCase(units, "auto") ? AccelerationUnit::FromHeader
+                                                                  : AccelerationUnit::MetresPerSecondSquared;
+  PetscCheck(!at2 || unit != AccelerationUnit::MetresPerSecondSquared, comm, PETSC_ERR_USER_INPUT,
              "%srecord_units = %s does not apply to a PEER .AT2 record (its values are in g); allowed: auto or g", p.c_str(), units);
-  io::GroundMotionRecord record;
-  io::ReadStatus         status;
+  GroundMotionRecord record;
+  ReadStatus         status;
   PetscCall(readRecordCollective(comm, file, at2, unit, &record, &status));
   const std::string allowed = at2 ? "a PEER NGA .AT2 file: 3 header lines, a 4th with NPTS and DT, then NPTS accelerations in g"
                                   : "a CSV file of lines \"time,acceleration\" [s; m/s^2, or g when the header's acceleration column says g or with " + p +
                                       "record_units g], optional header, at least 2 samples, times increasing";
   PetscCheck(status.ok, comm, PETSC_ERR_FILE_OPEN, "%srecord (%s): %s; allowed: %s", p.c_str(), at2 ? "PEER .AT2" : "CSV", status.message.c_str(), allowed.c_str());
-  if (baseline) io::removeBaselineDrift(&record);
+  if (baseline) removeBaselineDrift(&record);
   double record_peak = 0;
   for (double a : record.acceleration) record_peak = std::max(record_peak, std::fabs(a));
   PetscCheck(!has_pga || record_peak > 0, comm, PETSC_ERR_USER_INPUT, "%srecord_pga = %s: the record %s has no acceleration to scale; allowed: a record with a nonzero sample",
              p.c_str(), scale_text, file);
   // The factor that gives the applied (baseline-corrected) motion exactly the asked peak.
-  const double factor = has_pga ? pga_g * io::kStandardGravity / record_peak : (double)scale;
+  const double factor = has_pga ? pga_g * kStandardGravity / record_peak : (double)scale;
   const bool   outcrop = role == HistoryRole::IncidentWave && motion == 0;
   // A vertically incident wave doubles at a free surface: an outcrop record is twice the
   // incident wave that produces it, so the incident wave is half of it.
   const double incident_share = outcrop ? 0.5 : 1.0;
   for (double &a : record.acceleration) a *= factor * incident_share;
-  physics::TabulatedHistory history = io::velocityHistory(record);
+  physics::TabulatedHistory history = velocityHistory(record);
   double pgv = 0; // of the motion the record describes (as the PGA), not of the incident wave
   for (double v : history.values) pgv = std::max(pgv, std::fabs(v) / incident_share);
   const size_t n = record.time.size();
@@ -275,8 +275,8 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
                                 : "the incident wave itself (a rock outcrop would move twice as much)";
   char buf[PETSC_MAX_PATH_LEN + 512];
   std::snprintf(buf, sizeof buf, "record %s (%s in %s, %zu samples, %g to %g s)%s; PGA %.4g g (scale factor %.4g on the record's %.4g g); PGV %.4g m/s; %s", file,
-                at2 ? "AT2" : "CSV", record.file_unit == io::AccelerationUnit::G ? "g" : "m/s^2", n, record.time.front(), record.time.back(),
-                baseline ? ", baseline-corrected" : "", std::fabs(factor) * record_peak / io::kStandardGravity, factor, record_peak / io::kStandardGravity, pgv,
+                at2 ? "AT2" : "CSV", record.file_unit == AccelerationUnit::G ? "g" : "m/s^2", n, record.time.front(), record.time.back(),
+                baseline ? ", baseline-corrected" : "", std::fabs(factor) * record_peak / kStandardGravity, factor, record_peak / kStandardGravity, pgv,
                 what);
   impl_->record_acceleration  = record.acceleration;
   impl_->record_top_frequency = spectralTopFrequency(history);

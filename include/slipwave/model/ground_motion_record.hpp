@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace slipwave::io {
+namespace slipwave::model {
 
 constexpr double kStandardGravity = 9.80665;  // m/s^2, converts .AT2 values given in g
 
@@ -52,4 +52,4 @@ void removeBaselineDrift(GroundMotionRecord *record);
 // The velocity history (trapezoid integral of the acceleration) for the incident wave.
 physics::TabulatedHistory velocityHistory(const GroundMotionRecord &record);
 
-} // namespace slipwave::io
+} // namespace slipwave::model

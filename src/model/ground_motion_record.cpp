@@ -1,4 +1,4 @@
-#include "slipwave/io/ground_motion_record.hpp"
+#include "slipwave/model/ground_motion_record.hpp"
 
 #include <cctype>
 #include <cerrno>
@@ -8,7 +8,7 @@
 #include <regex>
 #include <sstream>
 
-namespace slipwave::io {
+namespace slipwave::model {
 namespace {
 
 ReadStatus failure(const std::string &path, int line, const std::string &what) {
@@ -190,4 +190,4 @@ physics::TabulatedHistory velocityHistory(const GroundMotionRecord &record) {
   return {record.time, integrateTrapezoid(record.time, record.acceleration)};
 }
 
-} // namespace slipwave::io
+} // namespace slipwave::model
