@@ -35,12 +35,13 @@ PetscErrorCode cellVerticesInKernelOrder(DM dm, PetscInt cell, CellShape shape, 
   PetscCall(DMPlexGetDepthStratum(dm, 1, &e_start, &e_end));
   PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &nclosure, &closure));
   PetscInt nv = 0;
-  PetscInt edges[12][2];
+  constexpr int kHexEdges = 12;
+  PetscInt      edges[kHexEdges][2];
   PetscInt ne = 0;
   for (PetscInt i = 0; i < nclosure; ++i) {
     const PetscInt p = closure[2 * i];
     if (p >= v_start && p < v_end) verts[nv++] = p;
-    else if (shape == CellShape::Hex8 && p >= e_start && p < e_end && ne < 12) {
+    else if (shape == CellShape::Hex8 && p >= e_start && p < e_end && ne < kHexEdges) {
       const PetscInt *cone;
       PetscCall(DMPlexGetCone(dm, p, &cone));
       edges[ne][0] = cone[0];
@@ -207,13 +208,6 @@ PetscErrorCode BulkOperator::Setup(DM dm, const std::vector<RegionMaterial> &mat
   lumped_.clear();
   for (PetscInt c = 0; c < ncell_; ++c) {
     const double *x = cellCoordinates(c);
-    double        hmax = 0;
-    for (PetscInt a = 0; a < nen_; ++a)
-      for (PetscInt b = a + 1; b < nen_; ++b) {
-        double d2 = 0;
-        for (PetscInt i = 0; i < dim_; ++i) d2 += (x[a * dim_ + i] - x[b * dim_ + i]) * (x[a * dim_ + i] - x[b * dim_ + i]);
-        hmax = std::max(hmax, std::sqrt(d2));
-      }
     for (PetscInt a = 0; a < nen_; ++a)
       for (PetscInt i = 0; i < dim_; ++i) rel[a * dim_ + i] = x[a * dim_ + i] - x[i];
     // Cells with the same region and the same vertex positions relative to their first vertex
@@ -233,10 +227,10 @@ PetscErrorCode BulkOperator::Setup(DM dm, const std::vector<RegionMaterial> &mat
     seen.emplace(std::move(key), idx);
     cell_matrix_[c] = idx;
     stiffness_.resize((size_t)(idx + 1) * ndof * ndof);
-    stress_op_.resize((size_t)(idx + 1) * 6 * ndof);
+    stress_op_.resize((size_t)(idx + 1) * kStressComponents * ndof);
     lumped_.resize((size_t)(idx + 1) * nen_);
     elementStiffness(shape_, x, m.lame, &stiffness_[(size_t)idx * ndof * ndof]);
-    elementStressOperator(shape_, x, m.lame, &stress_op_[(size_t)idx * 6 * ndof]);
+    elementStressOperator(shape_, x, m.lame, &stress_op_[(size_t)idx * kStressComponents * ndof]);
     elementLumpedMass(shape_, x, m.rho, &lumped_[(size_t)idx * nen_]);
   }
   matrix_count_ = seen.size();
@@ -309,15 +303,15 @@ void BulkOperator::addStiffnessRowAbsSums(PetscScalar *rowabs) const {
 
 void BulkOperator::cellStress(const PetscScalar *u, PetscScalar *stress) const {
   const PetscInt n = nen_ * dim_;
-  double         ue[24];
+  double         ue[kMaxCellDofs];
   for (PetscInt c = 0; c < ncell_; ++c) {
     for (PetscInt a = 0; a < nen_; ++a)
       for (PetscInt i = 0; i < dim_; ++i) ue[a * dim_ + i] = PetscRealPart(u[cell_dofs_[c * nen_ + a] + i]);
-    const double *S = &stress_op_[(size_t)cell_matrix_[c] * 6 * n];
-    for (int k = 0; k < 6; ++k) {
+    const double *S = &stress_op_[(size_t)cell_matrix_[c] * kStressComponents * n];
+    for (int k = 0; k < kStressComponents; ++k) {
       double s = 0;
       for (PetscInt j = 0; j < n; ++j) s += S[k * n + j] * ue[j];
-      stress[c * 6 + k] = s;
+      stress[c * kStressComponents + k] = s;
     }
   }
 }

@@ -34,8 +34,8 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
   PetscCall(DMLocalToGlobal(dm, u_local_, INSERT_VALUES, geometry_));
   PetscCall(VecSetBlockSize(geometry_, dim));
 
-  PetscCall(VecCreateMPI(comm, ncell * 6, PETSC_DETERMINE, &stress_));
-  PetscCall(VecSetBlockSize(stress_, 6));
+  PetscCall(VecCreateMPI(comm, ncell * fem::kStressComponents, PETSC_DETERMINE, &stress_));
+  PetscCall(VecSetBlockSize(stress_, fem::kStressComponents));
   PetscCall(VecCreateMPI(comm, ncell, PETSC_DETERMINE, &region_));
   PetscScalar *r;
   PetscCall(VecGetArray(region_, &r));

@@ -419,7 +419,7 @@ PetscErrorCode InterfacePairsBuild(DM dm, const InterfaceSpec &spec, InterfacePa
     PetscCheck(nfv >= 2 && nfv <= 4 && (nodes_per_face == 0 || nodes_per_face == nfv), PETSC_COMM_SELF, PETSC_ERR_SUP,
                "InterfacePairsBuild: interface face %" PetscInt_FMT " has %" PetscInt_FMT " vertices; one face type (2, 3 or 4 vertices) per mesh", f, nfv);
     nodes_per_face = nfv;
-    double x[12], w[4], n[3], xc[3], xf[3], dot = 0;
+    double x[fem::kMaxFaceNodes * 3], w[fem::kMaxFaceNodes], n[3], xc[3], xf[3], dot = 0;
     for (PetscInt a = 0; a < nfv; ++a) {
       PetscInt coff;
       PetscCall(PetscSectionGetOffset(csec, fverts[a], &coff));

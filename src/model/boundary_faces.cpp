@@ -51,9 +51,9 @@ PetscErrorCode BoundaryFacesGet(DM dm, const std::string &name, std::vector<Boun
       PetscInt    *closure = nullptr, nclosure;
       PetscCall(DMPlexGetTransitiveClosure(dm, f, PETSC_TRUE, &nclosure, &closure));
       for (PetscInt j = 0; j < nclosure; ++j)
-        if (closure[2 * j] >= v_start && closure[2 * j] < v_end && face.nvert < 4) face.vertices[face.nvert++] = closure[2 * j];
+        if (closure[2 * j] >= v_start && closure[2 * j] < v_end && face.nvert < fem::kMaxFaceNodes) face.vertices[face.nvert++] = closure[2 * j];
       PetscCall(DMPlexRestoreTransitiveClosure(dm, f, PETSC_TRUE, &nclosure, &closure));
-      double x[12];
+      double x[fem::kMaxFaceNodes * 3];
       for (PetscInt a = 0; a < face.nvert; ++a) {
         PetscInt off;
         PetscCall(PetscSectionGetOffset(coord_section, face.vertices[a], &off));

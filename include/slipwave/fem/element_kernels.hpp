@@ -29,6 +29,7 @@ enum class CellShape { Tri3, Quad4, Tet4, Hex8 };
 enum class FaceShape { Seg2, Tri3, Quad4 };  // 2D boundary faces: Seg2; 3D: Tri3 / Quad4
 
 constexpr int kMaxCellNodes = 8;
+constexpr int kMaxFaceNodes = 4;
 constexpr int kMaxCellDofs = 24;
 constexpr int kStressComponents = 6;  // xx, yy, zz, xy, yz, xz
 

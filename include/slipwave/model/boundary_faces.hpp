@@ -5,6 +5,8 @@
 #pragma once
 #include <petscdmplex.h>
 
+#include "slipwave/fem/element_kernels.hpp"
+
 #include <string>
 #include <vector>
 
@@ -12,8 +14,8 @@ namespace slipwave::model {
 
 struct BoundaryFace {
   PetscInt nvert = 0;
-  PetscInt vertices[4];
-  double   weights[4];
+  PetscInt vertices[fem::kMaxFaceNodes];
+  double   weights[fem::kMaxFaceNodes];
   double   normal[3] = {0, 0, 0};
   PetscInt region = -1;
 };
