@@ -8,7 +8,7 @@
 // D = M^{-1} C is nodal (a dim x dim block per node: Lysmer dashpots, mass-proportional
 // damping) and treated centred, so it does not lower the stable step. Terms that are not
 // nodal (stiffness-proportional damping) go into the RHS with the half-step velocity,
-// available there through TSCDGetHalfStepVelocity.
+// available there through CentralDifferenceGetHalfStepVelocity.
 // The TS solution is u; the velocity rides along through TS2SetSolution/TS2GetSolution.
 #pragma once
 #include <petscts.h>
