@@ -1,5 +1,7 @@
-// Mohr-Coulomb interface law (spec docs/interface-law.md). Every expected value is derived
-// on paper from the rate equations of spec section 4; the derivation is stated with it.
+// Mohr-Coulomb interface law ("spec N": section N of the interface-law specification, not
+// part of this repository; the law itself is stated in mohr_coulomb_interface.hpp). Every
+// expected value is derived on paper from the rate equations of spec section 4; the
+// derivation is stated with it.
 #include "slipwave/physics/mohr_coulomb_interface.hpp"
 
 #include "unit_check.hpp"

@@ -1,7 +1,7 @@
 // Time series output of one grid as HDF5 data + an XDMF index, written in parallel through
 // PetscViewerHDF5 from plain global Vecs (no DM needed). The .xmf opens in ParaView 5.11
 // with its default XDMF3 readers and with the legacy "XDMF Reader" (PETSc's
-// petsc_gen_xdmf.py output opens only with the latter, see docs/petsc-3.18-notes.md).
+// petsc_gen_xdmf.py output opens only with the latter).
 //
 // HDF5 layout of DIR/<name>.h5 (every dataset is [rows, components]):
 //   /geometry               float64 [nodes, 3]   (2D coordinates padded with z = 0)

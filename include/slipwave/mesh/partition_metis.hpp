@@ -1,5 +1,5 @@
 // A PetscPartitioner of type "metis" on top of serial METIS 5, because Debian's PETSc 3.18
-// is built without METIS/ParMETIS (see docs/petsc-3.18-notes.md). The cell graph, which
+// is built without METIS/ParMETIS. The cell graph, which
 // may be spread over several ranks, is gathered on rank 0, partitioned there and the
 // assignment is sent back; output follows PETSc's own partitioners, so
 //   -petscpartitioner_type metis

@@ -1,5 +1,7 @@
-// Mohr-Coulomb soil-structure interface law with the explicit gamma-split of
-// docs/interface-law.md (shared spec), for one pair of coincident nodes.
+// Mohr-Coulomb soil-structure interface law with the explicit gamma-split, for one pair of
+// coincident nodes. "spec N" refers to section N of the project's interface-law
+// specification, which is not part of this repository; everything the code relies on is
+// stated here.
 //
 // Conventions (spec section 2): w_N > 0 is opening, sigma_N > 0 is tension, the tangential
 // traction has the dimension of the tangential jump (1 component in 2D, 2 in 3D).
