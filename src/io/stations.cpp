@@ -47,7 +47,7 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const mesh:
   const char *sides[] = {"structure", "soil"};
   char        side_name[64] = "structure";
   char      file[PETSC_MAX_PATH_LEN] = "", names[4096] = "";
-  PetscReal xs[300];
+  PetscReal xs[300] = {};  // -help prints xs[0] as the default
   PetscInt  nx = 300;
   PetscBool has_file, has_coords;
   PetscFunctionBeginUser;
