@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "slipwave/mesh/labels.hpp"
+#include "slipwave/mesh/vertex_coordinates.hpp"
 
 namespace slipwave::fem {
 namespace {
@@ -163,29 +164,22 @@ PetscErrorCode BulkOperator::Setup(DM dm, const std::vector<RegionMaterial> &mat
   cell_matrix_.resize(ncell_);
   cell_coords_.resize(ncell_ * nen_ * dim_);
 
-  Vec                coords_local;
-  PetscSection       coord_section;
-  DM                 cdm;
-  const PetscScalar *xarr;
-  PetscCall(DMGetCoordinatesLocal(dm, &coords_local));
-  PetscCall(DMGetCoordinateDM(dm, &cdm));
-  PetscCall(DMGetLocalSection(cdm, &coord_section));
-  PetscCall(VecGetArrayRead(coords_local, &xarr));
+  mesh::VertexCoordinates coords;
+  PetscCall(coords.Open(dm));
 
   double bbox_lo[3] = {1e300, 1e300, 1e300}, bbox_hi[3] = {-1e300, -1e300, -1e300};
   for (PetscInt c = 0; c < ncell_; ++c) {
     PetscInt *verts = &cell_vertices_[c * nen_];
     PetscCall(cellVerticesInKernelOrder(dm, c_start + c, shape_, verts));
     for (PetscInt a = 0; a < nen_; ++a) {
-      PetscInt off, coff;
+      PetscInt off;
       PetscCall(PetscSectionGetOffset(section, verts[a], &off));
-      PetscCall(PetscSectionGetOffset(coord_section, verts[a], &coff));
       cell_dofs_[c * nen_ + a] = off;
+      double *x = &cell_coords_[(c * nen_ + a) * dim_];
+      PetscCall(coords.Get(verts[a], x));
       for (PetscInt i = 0; i < dim_; ++i) {
-        const double x = PetscRealPart(xarr[coff + i]);
-        cell_coords_[(c * nen_ + a) * dim_ + i] = x;
-        bbox_lo[i] = std::min(bbox_lo[i], x);
-        bbox_hi[i] = std::max(bbox_hi[i], x);
+        bbox_lo[i] = std::min(bbox_lo[i], x[i]);
+        bbox_hi[i] = std::max(bbox_hi[i], x[i]);
       }
     }
     PetscInt region;
@@ -193,7 +187,7 @@ PetscErrorCode BulkOperator::Setup(DM dm, const std::vector<RegionMaterial> &mat
     PetscCheck(region >= 0 && region < (PetscInt)materials.size(), PETSC_COMM_SELF, PETSC_ERR_PLIB, "cell %" PetscInt_FMT " has no region", c_start + c);
     cell_region_[c] = region;
   }
-  PetscCall(VecRestoreArrayRead(coords_local, &xarr));
+  PetscCall(coords.Close());
 
   double extent = 0;
   for (PetscInt i = 0; i < dim_; ++i) extent = std::max(extent, bbox_hi[i] - bbox_lo[i]);

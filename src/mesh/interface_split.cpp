@@ -1,5 +1,6 @@
 #include "slipwave/mesh/interface_split.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
+#include "slipwave/mesh/vertex_coordinates.hpp"
 
 #include "slipwave/fem/element_kernels.hpp"
 #include "slipwave/mesh/labels.hpp"
@@ -195,23 +196,14 @@ PetscErrorCode InterfaceSplitSerialMesh(DM serial, const std::vector<std::string
   // Coordinates: the copies sit exactly on their originals.
   std::vector<PetscReal> xyz((size_t)nv_new * cdim);
   {
-    Vec                coords;
-    DM                 cdm;
-    PetscSection       csec;
-    const PetscScalar *x;
-    PetscCall(DMGetCoordinatesLocal(serial, &coords));
-    PetscCall(DMGetCoordinateDM(serial, &cdm));
-    PetscCall(DMGetLocalSection(cdm, &csec));
-    PetscCall(VecGetArrayRead(coords, &x));
+    VertexCoordinates coords;
+    PetscCall(coords.Open(serial));
     for (PetscInt v = v_start; v < v_end; ++v) {
-      PetscInt off;
-      PetscCall(PetscSectionGetOffset(csec, v, &off));
-      for (PetscInt d = 0; d < cdim; ++d) {
-        xyz[(size_t)(v - v_start) * cdim + d] = PetscRealPart(x[off + d]);
-        if (copy_of[v - v_start] >= 0) xyz[(size_t)copy_of[v - v_start] * cdim + d] = PetscRealPart(x[off + d]);
-      }
+      PetscReal *xv = &xyz[(size_t)(v - v_start) * cdim];
+      PetscCall(coords.Get(v, xv));
+      if (copy_of[v - v_start] >= 0) std::copy(xv, xv + cdim, &xyz[(size_t)copy_of[v - v_start] * cdim]);
     }
-    PetscCall(VecRestoreArrayRead(coords, &x));
+    PetscCall(coords.Close());
   }
 
   DM dm;
@@ -367,14 +359,8 @@ PetscErrorCode InterfacePairsBuild(DM dm, const InterfaceSpec &spec, InterfacePa
   auto                  nsum = [&](PetscInt p) { return &geo[(size_t)p * (2 * dim + 1) + 1]; };
   auto                  xp   = [&](PetscInt p) { return &geo[(size_t)p * (2 * dim + 1) + 1 + dim]; };
 
-  Vec                coords;
-  DM                 cdm;
-  PetscSection       csec;
-  const PetscScalar *xarr;
-  PetscCall(DMGetCoordinatesLocal(dm, &coords));
-  PetscCall(DMGetCoordinateDM(dm, &cdm));
-  PetscCall(DMGetLocalSection(cdm, &csec));
-  PetscCall(VecGetArrayRead(coords, &xarr));
+  VertexCoordinates coords;
+  PetscCall(coords.Open(dm));
 
   for (PetscInt v = v_start; v < v_end; ++v) {
     PetscInt p, side;
@@ -394,9 +380,7 @@ PetscErrorCode InterfacePairsBuild(DM dm, const InterfaceSpec &spec, InterfacePa
     (side == 0 ? soil : strct)[p] = goff;
     if (side == 0 && owned) {
       owner[p] = rank;
-      PetscInt coff;
-      PetscCall(PetscSectionGetOffset(csec, v, &coff));
-      for (PetscInt d = 0; d < dim; ++d) xp(p)[d] = PetscRealPart(xarr[coff + d]);
+      PetscCall(coords.Get(v, xp(p)));
     }
   }
 
@@ -420,15 +404,11 @@ PetscErrorCode InterfacePairsBuild(DM dm, const InterfaceSpec &spec, InterfacePa
                "InterfacePairsBuild: interface face %" PetscInt_FMT " has %" PetscInt_FMT " vertices; one face type (2, 3 or 4 vertices) per mesh", f, nfv);
     nodes_per_face = nfv;
     double x[fem::kMaxFaceNodes * 3], w[fem::kMaxFaceNodes], n[3], xc[3], xf[3], dot = 0;
-    for (PetscInt a = 0; a < nfv; ++a) {
-      PetscInt coff;
-      PetscCall(PetscSectionGetOffset(csec, fverts[a], &coff));
-      for (PetscInt d = 0; d < dim; ++d) x[a * dim + d] = PetscRealPart(xarr[coff + d]);
-    }
+    for (PetscInt a = 0; a < nfv; ++a) PetscCall(coords.Get(fverts[a], &x[a * dim]));
     const fem::FaceShape shape = dim == 2 ? fem::FaceShape::Seg2 : (nfv == 3 ? fem::FaceShape::Tri3 : fem::FaceShape::Quad4);
     fem::faceLumpedWeights(shape, (int)dim, x, w);
     fem::faceNormal(shape, (int)dim, x, n);
-    // Outward from the soil cell = towards the structure (interface-law.md §2).
+    // Outward from the soil cell = towards the structure (InterfacePairs::normal).
     PetscCall(MeshPointCentroid(dm, supp[0], xc));
     PetscCall(MeshPointCentroid(dm, f, xf));
     for (PetscInt d = 0; d < dim; ++d) dot += n[d] * (xf[d] - xc[d]);
@@ -445,7 +425,7 @@ PetscErrorCode InterfacePairsBuild(DM dm, const InterfaceSpec &spec, InterfacePa
       face_pairs.push_back(p);
     }
   }
-  PetscCall(VecRestoreArrayRead(coords, &xarr));
+  PetscCall(coords.Close());
 
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, soil.data(), (int)npairs, MPIU_INT, MPI_MAX, comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, strct.data(), (int)npairs, MPIU_INT, MPI_MAX, comm));

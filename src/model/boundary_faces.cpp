@@ -3,6 +3,7 @@
 #include "slipwave/fem/element_kernels.hpp"
 #include "slipwave/mesh/labels.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
+#include "slipwave/mesh/vertex_coordinates.hpp"
 
 namespace slipwave::model {
 
@@ -19,14 +20,8 @@ PetscErrorCode BoundaryFacesGet(DM dm, const std::string &name, std::vector<Boun
   PetscCall(DMGetDimension(dm, &dim));
   PetscCall(DMPlexGetHeightStratum(dm, 1, &f_start, &f_end));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &v_start, &v_end));
-  Vec                coords_local;
-  PetscSection       coord_section;
-  DM                 cdm;
-  const PetscScalar *xarr;
-  PetscCall(DMGetCoordinatesLocal(dm, &coords_local));
-  PetscCall(DMGetCoordinateDM(dm, &cdm));
-  PetscCall(DMGetLocalSection(cdm, &coord_section));
-  PetscCall(VecGetArrayRead(coords_local, &xarr));
+  mesh::VertexCoordinates coords;
+  PetscCall(coords.Open(dm));
 
   PetscCall(DMLabelGetValueIS(label, &values_is));
   PetscInt        nvalues;
@@ -54,11 +49,7 @@ PetscErrorCode BoundaryFacesGet(DM dm, const std::string &name, std::vector<Boun
         if (closure[2 * j] >= v_start && closure[2 * j] < v_end && face.nvert < fem::kMaxFaceNodes) face.vertices[face.nvert++] = closure[2 * j];
       PetscCall(DMPlexRestoreTransitiveClosure(dm, f, PETSC_TRUE, &nclosure, &closure));
       double x[fem::kMaxFaceNodes * 3];
-      for (PetscInt a = 0; a < face.nvert; ++a) {
-        PetscInt off;
-        PetscCall(PetscSectionGetOffset(coord_section, face.vertices[a], &off));
-        for (PetscInt d = 0; d < dim; ++d) x[a * dim + d] = PetscRealPart(xarr[off + d]);
-      }
+      for (PetscInt a = 0; a < face.nvert; ++a) PetscCall(coords.Get(face.vertices[a], &x[a * dim]));
       const fem::FaceShape shape = dim == 2 ? fem::FaceShape::Seg2 : (face.nvert == 3 ? fem::FaceShape::Tri3 : fem::FaceShape::Quad4);
       fem::faceLumpedWeights(shape, (int)dim, x, face.weights);
       fem::faceNormal(shape, (int)dim, x, face.normal);
@@ -78,7 +69,7 @@ PetscErrorCode BoundaryFacesGet(DM dm, const std::string &name, std::vector<Boun
   }
   PetscCall(ISRestoreIndices(values_is, &values));
   PetscCall(ISDestroy(&values_is));
-  PetscCall(VecRestoreArrayRead(coords_local, &xarr));
+  PetscCall(coords.Close());
   PetscFunctionReturn(0);
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "slipwave/model/attenuation.hpp"
+#include "slipwave/mesh/vertex_coordinates.hpp"
 #include "slipwave/model/boundary_faces.hpp"
 #include "slipwave/physics/absorbing_boundary.hpp"
 
@@ -11,34 +12,13 @@ namespace slipwave::model {
 namespace {
 
 // Height (last coordinate) of a vertex point.
-struct VertexHeights {
-  PetscSection       section = nullptr;
-  Vec                coords  = nullptr;
-  const PetscScalar *x       = nullptr;
-  PetscInt           dim     = 0;
-  PetscErrorCode     open(DM dm) {
-    DM cdm;
-    PetscFunctionBeginUser;
-    PetscCall(DMGetDimension(dm, &dim));
-    PetscCall(DMGetCoordinatesLocal(dm, &coords));
-    PetscCall(DMGetCoordinateDM(dm, &cdm));
-    PetscCall(DMGetLocalSection(cdm, &section));
-    PetscCall(VecGetArrayRead(coords, &x));
-    PetscFunctionReturn(0);
-  }
-  PetscErrorCode height(PetscInt v, double *z) const {
-    PetscInt off;
-    PetscFunctionBeginUser;
-    PetscCall(PetscSectionGetOffset(section, v, &off));
-    *z = PetscRealPart(x[off + dim - 1]);
-    PetscFunctionReturn(0);
-  }
-  PetscErrorCode close() {
-    PetscFunctionBeginUser;
-    PetscCall(VecRestoreArrayRead(coords, &x));
-    PetscFunctionReturn(0);
-  }
-};
+PetscErrorCode vertexHeight(const mesh::VertexCoordinates &vc, PetscInt v, double *z) {
+  double x[3];
+  PetscFunctionBeginUser;
+  PetscCall(vc.Get(v, x));
+  *z = x[vc.dimension() - 1];
+  PetscFunctionReturn(0);
+}
 
 bool sameMaterial(const RegionMaterialInfo &a, const RegionMaterialInfo &b) {
   return a.elastic.rho == b.elastic.rho && a.elastic.vp == b.elastic.vp && a.elastic.vs == b.elastic.vs && a.damping_ratio == b.damping_ratio;
@@ -53,8 +33,8 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
   side->name = name;
   std::vector<BoundaryFace> faces;
   PetscCall(BoundaryFacesGet(dm, name, &faces));
-  VertexHeights vh;
-  PetscCall(vh.open(dm));
+  mesh::VertexCoordinates vc;
+  PetscCall(vc.Open(dm));
   // Faces must be vertical: the column models a vertically propagating wave seen through a
   // vertical side.
   std::vector<double> local_z;
@@ -64,7 +44,7 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
                name.c_str(), name.c_str(), f.normal[0], f.normal[1], dim == 3 ? ", ..." : "");
     for (PetscInt k = 0; k < f.nvert; ++k) {
       double z = 0;
-      PetscCall(vh.height(f.vertices[k], &z));
+      PetscCall(vertexHeight(vc, f.vertices[k], &z));
       local_z.push_back(z);
     }
   }
@@ -99,7 +79,7 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
     int    nodes[4];
     for (PetscInt k = 0; k < f.nvert; ++k) {
       double z = 0;
-      PetscCall(vh.height(f.vertices[k], &z));
+      PetscCall(vertexHeight(vc, f.vertices[k], &z));
       nodes[k] = probe.findNode(z, tol);
       PetscCheck(nodes[k] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "free-field side '%s': vertex at height %g has no column node", name.c_str(), z);
       lo = std::min(lo, nodes[k]);
@@ -122,7 +102,7 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
       side->terms.push_back(term);
     }
   }
-  PetscCall(vh.close());
+  PetscCall(vc.Close());
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, seg_min.data(), nseg, MPIU_INT, MPI_MIN, comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, seg_max.data(), nseg, MPIU_INT, MPI_MAX, comm));
   std::vector<physics::ElasticMaterial> seg_mat(nseg);

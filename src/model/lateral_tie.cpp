@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "slipwave/mesh/vertex_coordinates.hpp"
 #include "slipwave/model/boundary_faces.hpp"
 
 namespace slipwave::model {
@@ -20,36 +21,32 @@ struct SideNode {
 PetscErrorCode sideNodes(DM dm, const std::string &side, PetscInt axis, double quantum, std::vector<SideNode> *nodes, double normal_sum[3]) {
   MPI_Comm     comm = PetscObjectComm((PetscObject)dm);
   PetscInt     dim;
-  PetscSection gs, cs;
-  Vec          coords;
-  DM           cdm;
+  PetscSection gs;
   PetscFunctionBeginUser;
   PetscCall(DMGetDimension(dm, &dim));
   PetscCall(DMGetGlobalSection(dm, &gs));
-  PetscCall(DMGetCoordinatesLocal(dm, &coords));
-  PetscCall(DMGetCoordinateDM(dm, &cdm));
-  PetscCall(DMGetLocalSection(cdm, &cs));
   std::vector<BoundaryFace> faces;
   PetscCall(BoundaryFacesGet(dm, side, &faces));
-  const PetscScalar *x;
-  PetscCall(VecGetArrayRead(coords, &x));
+  mesh::VertexCoordinates vc;
+  PetscCall(vc.Open(dm));
   std::vector<double> local; // per owned vertex: dof, then dim-1 coordinates
   std::map<PetscInt, bool> done;
   for (const BoundaryFace &f : faces) {
     for (PetscInt d = 0; d < dim; ++d) normal_sum[d] += f.normal[d];
     for (PetscInt k = 0; k < f.nvert; ++k) {
       const PetscInt v = f.vertices[k];
-      PetscInt       goff, coff;
+      PetscInt       goff;
       PetscCall(PetscSectionGetOffset(gs, v, &goff));
       if (goff < 0 || done[v]) continue; // a ghost: its owner lists it
       done[v] = true;
-      PetscCall(PetscSectionGetOffset(cs, v, &coff));
+      double x[3];
+      PetscCall(vc.Get(v, x));
       local.push_back((double)goff);
       for (PetscInt d = 0; d < dim; ++d)
-        if (d != axis) local.push_back(PetscRealPart(x[coff + d]));
+        if (d != axis) local.push_back(x[d]);
     }
   }
-  PetscCall(VecRestoreArrayRead(coords, &x));
+  PetscCall(vc.Close());
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, normal_sum, 3, MPI_DOUBLE, MPI_SUM, comm));
   if (axis < 0) PetscFunctionReturn(0); // only the direction was asked for
   PetscMPIInt size, n = (PetscMPIInt)local.size();
