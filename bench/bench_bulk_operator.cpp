@@ -22,6 +22,7 @@
 #include "slipwave/app/log_events.hpp"
 #include "slipwave/fem/element_kernels.hpp"
 #include "slipwave/model/elastodynamics.hpp"
+#include "slipwave/model/stable_step.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 using namespace slipwave;
@@ -103,7 +104,7 @@ PetscErrorCode runCase(PetscInt dim, PetscInt nc, Row *row) {
   double                t0 = now();
   PetscCall(model::ElastodynamicsCreate(PETSC_COMM_WORLD, &m));
   model::StableStep st;
-  PetscCall(model::ElastodynamicsStableStep(&m, &st));
+  PetscCall(model::StableStepCompute(&m, &st));
   row->setup = now() - t0;
   row->ncell = m.bulk.cellCount();
 

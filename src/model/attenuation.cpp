@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "slipwave/model/stable_step.hpp"
+
 namespace slipwave::model {
 namespace {
 
@@ -72,15 +74,10 @@ PetscErrorCode AttenuationChooseReferences(Attenuation *att, DM dm, const fem::B
   PetscScalar *a;
   PetscFunctionBeginUser;
   // Gershgorin per dof of the elastic bulk, omega_i^2 = sum_j |K_ij| / m_i (free dofs only), as
-  // ElastodynamicsStableStep bounds it.
-  PetscCall(DMGetLocalVector(dm, &omega2_local));
-  PetscCall(VecZeroEntries(omega2_local));
-  PetscCall(VecGetArray(omega2_local, &a));
-  bulk.addStiffnessRowAbsSums(a);
-  PetscCall(VecRestoreArray(omega2_local, &a));
+  // StableStepCompute bounds it.
   PetscCall(VecDuplicate(mass, &omega2));
-  PetscCall(VecZeroEntries(omega2));
-  PetscCall(DMLocalToGlobal(dm, omega2_local, ADD_VALUES, omega2));
+  PetscCall(BulkGershgorinRowSums(dm, bulk, omega2));
+  PetscCall(DMGetLocalVector(dm, &omega2_local));
   PetscCall(VecPointwiseDivide(omega2, omega2, mass));
   PetscCall(VecPointwiseMult(omega2, omega2, free_mask));
   PetscReal omega2_all;

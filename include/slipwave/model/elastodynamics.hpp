@@ -22,17 +22,6 @@ struct FreeField;  // model/free_field.hpp
 struct LateralTie; // model/lateral_tie.hpp
 struct Attenuation; // model/attenuation.hpp
 
-struct StableStep {
-  double omega_max_bulk = 0; // Gershgorin bound on the largest angular frequency [rad/s]
-  double dt_bulk = 0;        // critical step of the bulk (with stiffness damping) [s]
-  double dt_cfl = 0;         // h_min / vp_max, for comparison only [s]
-  double dt_limit = 0;       // the limit a run must respect [s]
-  double dt_without_interfaces = 0; // the bulk alone, to report what the penalty costs [s]
-  double dt_free_field = 1e300; // the free-field columns' own limit (normally above the bulk's) [s]
-  double dt_without_stiffness_damping = 0; // the same bound with beta = 0, to report what Rayleigh costs [s]
-  std::string governing;     // which constraint sets dt_limit
-};
-
 struct Elastodynamics {
   MPI_Comm                        comm = MPI_COMM_NULL;
   DM                              dm   = nullptr;
@@ -68,7 +57,6 @@ PetscErrorCode ElastodynamicsDestroy(Elastodynamics *model);
 PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx);
 // Global f = K x by the element loop (ghost exchange included), as the RHS computes it.
 PetscErrorCode ElastodynamicsStiffnessTimes(Elastodynamics *model, Vec x, Vec f);
-PetscErrorCode ElastodynamicsStableStep(Elastodynamics *model, StableStep *step);
 // Stores the cell stresses of the global displacement u as the initial stress.
 PetscErrorCode ElastodynamicsSetInitialStress(Elastodynamics *model, Vec u);
 
