@@ -167,12 +167,10 @@ PetscErrorCode runCase(PetscInt dim, PetscInt nc, Row *row) {
     PetscCall(time::CentralDifferenceRegister());
     PetscCall(TSCreate(PETSC_COMM_WORLD, &ts));
     PetscCall(TSSetType(ts, time::kTSCentralDifference));
-    PetscCall(TSSetRHSFunction(ts, nullptr, model::ElastodynamicsRHS, &m));
     PetscCall(TSSetMaxTime(ts, 1e30));
     PetscCall(TSSetMaxSteps(ts, PETSC_MAX_INT));
     PetscCall(TSSetTimeStep(ts, 0.9 * st.dt_limit));
-    m.ts = ts;
-    PetscCall(time::CentralDifferenceSetNodalDamping(ts, m.dim, m.damping_blocks));
+    PetscCall(model::ElastodynamicsSetUpTS(&m, ts));
     PetscCall(VecDuplicate(x, &u));
     PetscCall(VecDuplicate(x, &v));
     PetscCall(VecZeroEntries(u));

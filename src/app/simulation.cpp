@@ -395,18 +395,16 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
 
   PetscCall(TSCreate(comm, &ts));
   PetscCall(TSSetType(ts, time::kTSCentralDifference));
-  PetscCall(TSSetRHSFunction(ts, nullptr, model::ElastodynamicsRHS, &r->model));
   PetscCall(TSSetMaxTime(ts, 1.0));
   PetscCall(TSSetMaxSteps(ts, PETSC_MAX_INT));
   PetscCall(TSSetExactFinalTime(ts, TS_EXACTFINALTIME_MATCHSTEP));
   PetscCall(TSSetFromOptions(ts));
   PetscCall(model::TimeStepChoose(ts, r->step, r->time_step, !r->model.interfaces.empty()));
   PetscCall(TSGetMaxTime(ts, &r->max_time));
-  r->model.ts = ts;
   PetscReal dt;
   PetscCall(TSGetTimeStep(ts, &dt));
   if (r->opt.output_interval <= 0) r->opt.output_interval = r->max_time / 50;
-  PetscCall(time::CentralDifferenceSetNodalDamping(ts, r->model.dim, r->model.damping_blocks));
+  PetscCall(model::ElastodynamicsSetUpTS(&r->model, ts));
   PetscCall(OptionsErrorIfUnused(comm));
   PetscCall(report(r, ts));
   PetscCall(PetscLogStagePop());

@@ -244,7 +244,7 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscCall(VecAXPBY(m->f_input, v_in, 0.0, m->bc.input_force));
   PetscCall(VecWAXPY(m->f_external, 1.0, m->bc.constant_force, m->f_input));
   if (m->free_field) {
-    // The columns step here, once per new time; their force C v_ff + A t_ff at t is external.
+    // The columns' trial reaches t here; their force C v_ff + A t_ff at t is external.
     PetscCall(FreeFieldUpdate(m->free_field, m->dm, ts, t, v_in, m->input_enabled));
     PetscCall(VecAXPY(m->f_external, 1.0, m->free_field->force));
   }
@@ -273,7 +273,6 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscCall(VecRestoreArray(a, &acc));
   for (const PrescribedVelocity &p : m->bc.prescribed) PetscCall(VecAXPY(a, p.history.acceleration(t), p.dofs));
   PetscCall(LateralTieApply(m->tie, a));
-  m->rhs_time = t;
   PetscCall(PetscLogEventEnd(app::event_boundary, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -281,6 +280,26 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
 } // namespace slipwave::model
 
 namespace slipwave::model {
+
+PetscErrorCode ElastodynamicsCommit(Elastodynamics *m) {
+  PetscFunctionBeginUser;
+  for (auto &iface : m->interfaces) iface.Commit();
+  FreeFieldCommit(m->free_field);
+  AttenuationCommit(m->attenuation);
+  PetscFunctionReturn(0);
+}
+
+namespace {
+PetscErrorCode commitHook(void *ctx) { return ElastodynamicsCommit(static_cast<Elastodynamics *>(ctx)); }
+} // namespace
+
+PetscErrorCode ElastodynamicsSetUpTS(Elastodynamics *m, TS ts) {
+  PetscFunctionBeginUser;
+  PetscCall(TSSetRHSFunction(ts, nullptr, ElastodynamicsRHS, m));
+  PetscCall(time::CentralDifferenceSetCommit(ts, commitHook, m));
+  PetscCall(time::CentralDifferenceSetNodalDamping(ts, m->dim, m->damping_blocks));
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode ElastodynamicsSetInitialStress(Elastodynamics *m, Vec u) {
   const PetscScalar *ul;
