@@ -22,6 +22,7 @@
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/fem/element_kernels.hpp"
 #include "slipwave/model/elastodynamics.hpp"
+#include "slipwave/model/stable_step.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 using namespace slipwave;
@@ -103,7 +104,7 @@ PetscErrorCode runCase(PetscInt dim, PetscInt nc, Row *row) {
   double                t0 = now();
   PetscCall(model::ElastodynamicsCreate(PETSC_COMM_WORLD, &m));
   model::StableStep st;
-  PetscCall(model::ElastodynamicsStableStep(&m, &st));
+  PetscCall(model::StableStepCompute(&m, &st));
   row->setup = now() - t0;
   row->ncell = m.bulk.cellCount();
 
@@ -166,12 +167,10 @@ PetscErrorCode runCase(PetscInt dim, PetscInt nc, Row *row) {
     PetscCall(time::CentralDifferenceRegister());
     PetscCall(TSCreate(PETSC_COMM_WORLD, &ts));
     PetscCall(TSSetType(ts, time::kTSCentralDifference));
-    PetscCall(TSSetRHSFunction(ts, nullptr, model::ElastodynamicsRHS, &m));
     PetscCall(TSSetMaxTime(ts, 1e30));
     PetscCall(TSSetMaxSteps(ts, PETSC_MAX_INT));
     PetscCall(TSSetTimeStep(ts, 0.9 * st.dt_limit));
-    m.ts = ts;
-    PetscCall(time::CentralDifferenceSetNodalDamping(ts, m.dim, m.damping_blocks));
+    PetscCall(model::ElastodynamicsSetUpTS(&m, ts));
     PetscCall(VecDuplicate(x, &u));
     PetscCall(VecDuplicate(x, &v));
     PetscCall(VecZeroEntries(u));

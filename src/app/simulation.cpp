@@ -17,24 +17,16 @@
 #include "slipwave/model/elastodynamics.hpp"
 #include "slipwave/model/energy_ledger.hpp"
 #include "slipwave/model/geostatic.hpp"
+#include "slipwave/model/stable_step.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 namespace slipwave::app {
 using namespace core;  // the ground floor: log events and stages, the unused-option check
 namespace {
 
-// Default fractions of the stable step. With contact interfaces the open/close switching of a
-// pair is not covered by the linear bound: in the two-bar impact (penalty factor 1) the energy
-// grew by 2.5 % at 0.9 of the limit, 1.1 % at 0.7 and 0.5 % at 0.5 (the spec saw +0.09 % at
-// half the limit and +180 % at it), so interfaces get 0.5.
-constexpr PetscReal kSafetyBulk       = 0.9;
-constexpr PetscReal kSafetyInterfaces = 0.5;
-
 struct RunOptions {
   char      output_dir[PETSC_MAX_PATH_LEN] = "output";
   PetscReal output_interval                = -1; // [s]; <0: 50 frames over the run
-  PetscReal safety                         = -1; // default: kSafetyBulk, or kSafetyInterfaces with interfaces
-  PetscBool safety_set                     = PETSC_FALSE;
   PetscReal progress_interval              = 5.0; // wall seconds
   PetscReal energy_growth_limit            = 2.0;
   PetscBool dry_run                        = PETSC_FALSE;
@@ -48,6 +40,7 @@ struct Run {
   RunOptions           opt;
   model::Elastodynamics model;
   model::StableStep    step;
+  model::TimeStepOptions time_step;
   model::EnergyLedger  ledger;
   model::GeostaticOptions geostatic;
   io::Stations         stations;
@@ -76,9 +69,6 @@ PetscErrorCode readRunOptions(MPI_Comm comm, RunOptions *o) {
   PetscCall(PetscOptionsReal("-output_interval", "time between field outputs [s] (default: 50 frames over -ts_max_time)", "SimulationRun", o->output_interval,
                              &o->output_interval, nullptr));
   PetscCall(PetscOptionsBool("-output_fields", "write volume fields (HDF5 + XDMF)", "SimulationRun", o->fields, &o->fields, nullptr));
-  PetscCall(PetscOptionsReal("-time_step_safety",
-                             "time step as a fraction of the stable limit, used when -ts_dt is not given (0 < s <= 1; default 0.9, 0.5 with interfaces)", "SimulationRun",
-                             o->safety, &o->safety, &o->safety_set));
   PetscCall(PetscOptionsReal("-progress_interval", "wall-clock seconds between progress lines (0: every step)", "SimulationRun", o->progress_interval,
                              &o->progress_interval, nullptr));
   PetscCall(PetscOptionsReal("-energy_growth_limit", "stop when kinetic+strain energy exceeds this multiple of the energy put in (divergence guard)", "SimulationRun",
@@ -94,7 +84,6 @@ PetscErrorCode readRunOptions(MPI_Comm comm, RunOptions *o) {
                                   nullptr));
   PetscOptionsEnd();
   PetscCheck(o->checkpoint_interval >= 0, comm, PETSC_ERR_USER_INPUT, "-checkpoint_interval = %" PetscInt_FMT "; allowed: >= 0 steps", o->checkpoint_interval);
-  PetscCheck(!o->safety_set || (o->safety > 0 && o->safety <= 1), comm, PETSC_ERR_USER_INPUT, "-time_step_safety = %g; allowed: 0 < s <= 1", (double)o->safety);
   PetscFunctionReturn(0);
 }
 
@@ -398,39 +387,25 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
   PetscCall(time::CentralDifferenceRegister());
   PetscCall(PetscLogStagePush(stage_setup));
   PetscCall(readRunOptions(comm, &r->opt));
+  PetscCall(model::TimeStepOptionsRead(comm, &r->time_step));
   PetscCall(model::ElastodynamicsCreate(comm, &r->model));
-  PetscCall(model::ElastodynamicsStableStep(&r->model, &r->step));
+  PetscCall(model::StableStepCompute(&r->model, &r->step));
   PetscCall(r->stations.Setup(r->model.dm, r->model.bulk, r->model.mesh));
   PetscCall(readRegionInitialVelocities(r));
   PetscCall(model::GeostaticOptionsRead(comm, &r->geostatic));
 
-  if (!r->opt.safety_set) r->opt.safety = r->model.interfaces.empty() ? kSafetyBulk : kSafetyInterfaces;
   PetscCall(TSCreate(comm, &ts));
   PetscCall(TSSetType(ts, time::kTSCentralDifference));
-  PetscCall(TSSetRHSFunction(ts, nullptr, model::ElastodynamicsRHS, &r->model));
   PetscCall(TSSetMaxTime(ts, 1.0));
   PetscCall(TSSetMaxSteps(ts, PETSC_MAX_INT));
   PetscCall(TSSetExactFinalTime(ts, TS_EXACTFINALTIME_MATCHSTEP));
-  PetscCall(TSSetTimeStep(ts, r->opt.safety * r->step.dt_limit));
   PetscCall(TSSetFromOptions(ts));
-  PetscBool user_dt;
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-ts_dt", &user_dt));
+  PetscCall(model::TimeStepChoose(ts, r->step, r->time_step, !r->model.interfaces.empty()));
   PetscCall(TSGetMaxTime(ts, &r->max_time));
-  if (!user_dt && r->max_time > 0) {
-    // A whole number of equal steps: a shortened last step would break the constant-step
-    // energy identity the ledger checks.
-    PetscCall(TSSetTimeStep(ts, r->max_time / std::ceil(r->max_time / (r->opt.safety * r->step.dt_limit))));
-  }
-  r->model.ts = ts;
   PetscReal dt;
   PetscCall(TSGetTimeStep(ts, &dt));
-  PetscCheck(dt <= r->step.dt_limit, comm, PETSC_ERR_USER_INPUT,
-             "-ts_dt = %.6g s is above the stable limit %.6g s (%s); allowed: 0 < dt <= %.6g s (omit -ts_dt to use %.2f of the limit)", (double)dt, r->step.dt_limit,
-             r->step.governing.c_str(), r->step.dt_limit, (double)r->opt.safety);
-  PetscCheck(dt > 0, comm, PETSC_ERR_USER_INPUT, "-ts_dt = %g; allowed: 0 < dt <= %.6g s", (double)dt, r->step.dt_limit);
-  PetscCheck(r->max_time > 0, comm, PETSC_ERR_USER_INPUT, "-ts_max_time = %g; allowed: > 0 s", (double)r->max_time);
   if (r->opt.output_interval <= 0) r->opt.output_interval = r->max_time / 50;
-  PetscCall(time::CentralDifferenceSetNodalDamping(ts, r->model.dim, r->model.damping_blocks));
+  PetscCall(model::ElastodynamicsSetUpTS(&r->model, ts));
   PetscCall(OptionsErrorIfUnused(comm));
   PetscCall(report(r, ts));
   PetscCall(PetscLogStagePop());

@@ -167,14 +167,27 @@ PetscErrorCode InterfaceAssembler::AddForces(Vec u, Vec f) {
   PetscCall(VecGetArrayRead(pair_u_, &pu));
   PetscCall(VecGetArray(pair_f_, &pf));
   const physics::InterfaceLaw law(params_);
-  const double drift = dim_ == 2 ? updatePairs<2>(law, pairs_, tangent_.data(), states2_, jump_prev_, pu, pf)
-                                 : updatePairs<3>(law, pairs_, tangent_.data(), states3_, jump_prev_, pu, pf);
-  max_drift_ = std::max(max_drift_, drift);
+  trial_states2_ = states2_;
+  trial_states3_ = states3_;
+  trial_jump_    = jump_prev_;
+  const double drift = dim_ == 2 ? updatePairs<2>(law, pairs_, tangent_.data(), trial_states2_, trial_jump_, pu, pf)
+                                 : updatePairs<3>(law, pairs_, tangent_.data(), trial_states3_, trial_jump_, pu, pf);
+  trial_max_drift_ = std::max(max_drift_, drift);
+  has_trial_       = true;
   PetscCall(VecRestoreArray(pair_f_, &pf));
   PetscCall(VecRestoreArrayRead(pair_u_, &pu));
   PetscCall(VecScatterBegin(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecScatterEnd(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));
   PetscFunctionReturn(0);
+}
+
+void InterfaceAssembler::Commit() {
+  if (!has_trial_) return;
+  states2_.swap(trial_states2_);
+  states3_.swap(trial_states3_);
+  jump_prev_.swap(trial_jump_);
+  max_drift_ = trial_max_drift_;
+  has_trial_ = false;
 }
 
 namespace {
@@ -209,8 +222,8 @@ PetscErrorCode InterfaceAssembler::AddDampingForces(Vec v, Vec f) {
   PetscScalar       *pf;
   PetscCall(VecGetArrayRead(pair_u_, &pv));
   PetscCall(VecGetArray(pair_f_, &pf));
-  if (dim_ == 2) dampPairs<2>(pairs_, dashpot_, states2_, pv, pf);
-  else dampPairs<3>(pairs_, dashpot_, states3_, pv, pf);
+  if (dim_ == 2) dampPairs<2>(pairs_, dashpot_, trial_states2_, pv, pf);
+  else dampPairs<3>(pairs_, dashpot_, trial_states3_, pv, pf);
   PetscCall(VecRestoreArray(pair_f_, &pf));
   PetscCall(VecRestoreArrayRead(pair_u_, &pv));
   PetscCall(VecScatterBegin(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));

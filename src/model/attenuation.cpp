@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "slipwave/model/stable_step.hpp"
+
 namespace slipwave::model {
 namespace {
 
@@ -72,15 +74,10 @@ PetscErrorCode AttenuationChooseReferences(Attenuation *att, DM dm, const fem::B
   PetscScalar *a;
   PetscFunctionBeginUser;
   // Gershgorin per dof of the elastic bulk, omega_i^2 = sum_j |K_ij| / m_i (free dofs only), as
-  // ElastodynamicsStableStep bounds it.
-  PetscCall(DMGetLocalVector(dm, &omega2_local));
-  PetscCall(VecZeroEntries(omega2_local));
-  PetscCall(VecGetArray(omega2_local, &a));
-  bulk.addStiffnessRowAbsSums(a);
-  PetscCall(VecRestoreArray(omega2_local, &a));
+  // StableStepCompute bounds it.
   PetscCall(VecDuplicate(mass, &omega2));
-  PetscCall(VecZeroEntries(omega2));
-  PetscCall(DMLocalToGlobal(dm, omega2_local, ADD_VALUES, omega2));
+  PetscCall(BulkGershgorinRowSums(dm, bulk, omega2));
+  PetscCall(DMGetLocalVector(dm, &omega2_local));
   PetscCall(VecPointwiseDivide(omega2, omega2, mass));
   PetscCall(VecPointwiseMult(omega2, omega2, free_mask));
   PetscReal omega2_all;
@@ -178,22 +175,14 @@ PetscErrorCode AttenuationDestroy(Attenuation **att) {
 PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator &bulk, Vec u_local, Vec f_internal, PetscReal t, Vec f) {
   constexpr int kMaxMechanisms = 8;
   PetscFunctionBeginUser;
-  if (!att->started) {
-    att->started        = true;
-    att->committed_time = att->trial_time = t;
-  } else if (t != att->trial_time) {
-    PetscCheck(t > att->trial_time, PETSC_COMM_SELF, PETSC_ERR_ORDER, "attenuation: force asked at t = %g s, before the last evaluation at %g s", (double)t,
-               att->trial_time);
-    for (DampedRegion &d : att->damped) {
-      d.zeta_committed.swap(d.zeta_trial);
-      d.drive_committed.swap(d.drive_trial);
-    }
-    att->committed_time = att->trial_time;
-    att->trial_time     = t;
-  }
+  // Before the first commit the trial starts the memory at t (a zero interval).
+  const double t_committed = att->started ? att->committed_time : t;
+  PetscCheck(t >= t_committed, PETSC_COMM_SELF, PETSC_ERR_ORDER, "attenuation: force asked at t = %g s, before the committed state at %g s", (double)t, t_committed);
+  att->trial_time = t;
+  att->has_trial  = true;
   const PetscInt        L = att->mechanisms;
   physics::MemoryUpdate upd[kMaxMechanisms];
-  for (PetscInt l = 0; l < L; ++l) upd[l] = physics::memoryUpdate(att->omega[l], t - att->committed_time);
+  for (PetscInt l = 0; l < L; ++l) upd[l] = physics::memoryUpdate(att->omega[l], t - t_committed);
   PetscCall(VecZeroEntries(f));
   PetscScalar *fa;
   for (DampedRegion &d : att->damped) {
@@ -275,10 +264,21 @@ std::vector<std::string> AttenuationReport(const Attenuation *att, const std::ve
   return lines;
 }
 
+void AttenuationCommit(Attenuation *att) {
+  if (!att || !att->has_trial) return;
+  for (DampedRegion &d : att->damped) {
+    d.zeta_committed.swap(d.zeta_trial);
+    d.drive_committed.swap(d.drive_trial);
+  }
+  att->started        = true;
+  att->committed_time = att->trial_time;
+  att->has_trial      = false;
+}
+
 std::vector<double> AttenuationState(const Attenuation *att) {
-  std::vector<double> s = {att->started ? 1.0 : 0.0, att->committed_time, att->trial_time};
+  std::vector<double> s = {att->started ? 1.0 : 0.0, att->committed_time};
   for (const DampedRegion &d : att->damped)
-    for (const std::vector<double> *x : {&d.zeta_committed, &d.zeta_trial, &d.drive_committed, &d.drive_trial}) s.insert(s.end(), x->begin(), x->end());
+    for (const std::vector<double> *x : {&d.zeta_committed, &d.drive_committed}) s.insert(s.end(), x->begin(), x->end());
   return s;
 }
 
@@ -286,10 +286,10 @@ bool AttenuationSetState(Attenuation *att, const std::vector<double> &s) {
   if ((PetscInt)s.size() != AttenuationStateSize(att)) return false;
   att->started        = s[0] != 0;
   att->committed_time = s[1];
-  att->trial_time     = s[2];
-  size_t o = 3;
+  att->has_trial      = false;
+  size_t o = 2;
   for (DampedRegion &d : att->damped)
-    for (std::vector<double> *x : {&d.zeta_committed, &d.zeta_trial, &d.drive_committed, &d.drive_trial}) {
+    for (std::vector<double> *x : {&d.zeta_committed, &d.drive_committed}) {
       std::copy(s.begin() + o, s.begin() + o + x->size(), x->begin());
       o += x->size();
     }
@@ -297,8 +297,8 @@ bool AttenuationSetState(Attenuation *att, const std::vector<double> &s) {
 }
 
 PetscInt AttenuationStateSize(const Attenuation *att) {
-  size_t n = 3;
-  for (const DampedRegion &d : att->damped) n += 2 * (d.zeta_committed.size() + d.drive_committed.size());
+  size_t n = 2;
+  for (const DampedRegion &d : att->damped) n += d.zeta_committed.size() + d.drive_committed.size();
   return (PetscInt)n;
 }
 

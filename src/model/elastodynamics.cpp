@@ -9,7 +9,6 @@
 #include "slipwave/model/free_field.hpp"
 #include "slipwave/model/lateral_tie.hpp"
 #include "slipwave/model/node_fields.hpp"
-#include "slipwave/physics/stable_time_step.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 namespace slipwave::model {
@@ -245,7 +244,7 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscCall(VecAXPBY(m->f_input, v_in, 0.0, m->bc.input_force));
   PetscCall(VecWAXPY(m->f_external, 1.0, m->bc.constant_force, m->f_input));
   if (m->free_field) {
-    // The columns step here, once per new time; their force C v_ff + A t_ff at t is external.
+    // The columns' trial reaches t here; their force C v_ff + A t_ff at t is external.
     PetscCall(FreeFieldUpdate(m->free_field, m->dm, ts, t, v_in, m->input_enabled));
     PetscCall(VecAXPY(m->f_external, 1.0, m->free_field->force));
   }
@@ -274,95 +273,33 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscCall(VecRestoreArray(a, &acc));
   for (const PrescribedVelocity &p : m->bc.prescribed) PetscCall(VecAXPY(a, p.history.acceleration(t), p.dofs));
   PetscCall(LateralTieApply(m->tie, a));
-  m->rhs_time = t;
   PetscCall(PetscLogEventEnd(core::event_boundary, 0, 0, 0, 0));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode ElastodynamicsStableStep(Elastodynamics *m, StableStep *step) {
-  PetscScalar *a;
-  Vec          rowabs;
-  PetscFunctionBeginUser;
-  PetscCall(VecZeroEntries(m->u_local));
-  PetscCall(VecGetArray(m->u_local, &a));
-  m->bulk.addStiffnessRowAbsSums(a);
-  PetscCall(VecRestoreArray(m->u_local, &a));
-  PetscCall(VecDuplicate(m->mass, &rowabs));
-  PetscCall(VecZeroEntries(rowabs));
-  PetscCall(DMLocalToGlobal(m->dm, m->u_local, ADD_VALUES, rowabs));
-  // Gershgorin on M^{-1} K (similar to M^{-1/2} K M^{-1/2}): every eigenvalue omega^2 is at
-  // most max_i sum_j |K_ij| / m_i, with K the bulk and the interface springs together (adding
-  // the rows, not taking the larger of two frequencies). Held dofs do not vibrate.
-  auto omegaMax = [&](Vec rows, PetscReal *omega) -> PetscErrorCode {
-    Vec w;
-    PetscFunctionBeginUser;
-    PetscCall(VecDuplicate(rows, &w));
-    PetscCall(VecPointwiseMult(w, rows, m->inv_mass));
-    PetscCall(VecPointwiseMult(w, w, m->bc.free_mask));
-    PetscReal omega2;
-    PetscCall(VecMax(w, nullptr, &omega2));
-    PetscCall(VecDestroy(&w));
-    *omega = std::sqrt(std::max(omega2, (PetscReal)0));
-    PetscFunctionReturn(0);
-  };
-  PetscReal omega_bulk = 0, omega_all = 0;
-  PetscCall(omegaMax(rowabs, &omega_bulk));
-  for (auto &iface : m->interfaces) PetscCall(iface.AddStiffnessRowAbsSums(rowabs));
-  PetscCall(omegaMax(rowabs, &omega_all));
-  auto dtOf = [&](double omega) { return omega > 0 ? physics::centralDifferenceStableStep(omega, m->rayleigh.beta) : 1e300; };
-  step->omega_max_bulk        = omega_all;
-  step->dt_bulk               = dtOf(omega_all);
-  step->dt_without_interfaces = dtOf(omega_bulk);
-  step->dt_without_stiffness_damping = omega_all > 0 ? physics::centralDifferenceStableStep(omega_all, 0.0) : 1e300;
-  // Contact dashpots are not proportional to K: the bound is taken row by row, with the
-  // Rayleigh beta K rows added to the dashpot rows (every pair counted as closed).
-  Vec       dashpot_rows;
-  PetscReal dashpot_max;
-  PetscCall(VecDuplicate(rowabs, &dashpot_rows));
-  PetscCall(VecZeroEntries(dashpot_rows));
-  for (auto &iface : m->interfaces) PetscCall(iface.AddDampingRowAbsSums(dashpot_rows));
-  PetscCall(VecMax(dashpot_rows, nullptr, &dashpot_max));
-  const bool dashpots = dashpot_max > 0;
-  if (dashpots) {
-    PetscInt           n;
-    const PetscScalar *k, *c, *im, *mask;
-    double             dt_rows = 1e300;
-    PetscCall(VecGetLocalSize(rowabs, &n));
-    PetscCall(VecGetArrayRead(rowabs, &k));
-    PetscCall(VecGetArrayRead(dashpot_rows, &c));
-    PetscCall(VecGetArrayRead(m->inv_mass, &im));
-    PetscCall(VecGetArrayRead(m->bc.free_mask, &mask));
-    for (PetscInt i = 0; i < n; ++i)
-      if (PetscRealPart(mask[i]) > 0 && PetscRealPart(k[i]) + PetscRealPart(c[i]) > 0)
-        dt_rows = std::min(dt_rows, physics::centralDifferenceStableStepOfRow(PetscRealPart(k[i] * im[i]), PetscRealPart((m->rayleigh.beta * k[i] + c[i]) * im[i])));
-    PetscCall(VecRestoreArrayRead(m->bc.free_mask, &mask));
-    PetscCall(VecRestoreArrayRead(m->inv_mass, &im));
-    PetscCall(VecRestoreArrayRead(dashpot_rows, &c));
-    PetscCall(VecRestoreArrayRead(rowabs, &k));
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &dt_rows, 1, MPI_DOUBLE, MPI_MIN, m->comm));
-    step->dt_bulk = std::min(step->dt_bulk, dt_rows);
-  }
-  PetscCall(VecDestroy(&dashpot_rows));
-  PetscCall(VecDestroy(&rowabs));
-  double vp_max        = 0;
-  for (const auto &info : m->materials) vp_max = std::max(vp_max, info.elastic.vp);
-  step->dt_cfl    = m->bulk.minCellSize() / vp_max;
-  step->dt_limit  = step->dt_bulk;
-  // The free-field columns are 1D chains of the side's cells, so their Gershgorin bound is
-  // normally below the mesh's; checked anyway, since they step with the same dt.
-  step->dt_free_field = FreeFieldStableStep(m->free_field);
-  const bool free_field_governs = step->dt_free_field < step->dt_limit;
-  step->dt_limit = std::min(step->dt_limit, step->dt_free_field);
-  const bool interfaces_matter = step->dt_bulk < step->dt_without_interfaces * (1 - 1e-12);
-  step->governing = std::string(interfaces_matter ? "bulk stiffness and interface penalty springs" : "bulk stiffness") +
-                    (m->rayleigh.beta > 0 ? " with stiffness-proportional damping" : "") + (dashpots ? " and contact dashpots" : "") + " (Gershgorin bound)";
-  if (free_field_governs) step->governing = "free-field column (Gershgorin bound)";
   PetscFunctionReturn(0);
 }
 
 } // namespace slipwave::model
 
 namespace slipwave::model {
+
+PetscErrorCode ElastodynamicsCommit(Elastodynamics *m) {
+  PetscFunctionBeginUser;
+  for (auto &iface : m->interfaces) iface.Commit();
+  FreeFieldCommit(m->free_field);
+  AttenuationCommit(m->attenuation);
+  PetscFunctionReturn(0);
+}
+
+namespace {
+PetscErrorCode commitHook(void *ctx) { return ElastodynamicsCommit(static_cast<Elastodynamics *>(ctx)); }
+} // namespace
+
+PetscErrorCode ElastodynamicsSetUpTS(Elastodynamics *m, TS ts) {
+  PetscFunctionBeginUser;
+  PetscCall(TSSetRHSFunction(ts, nullptr, ElastodynamicsRHS, m));
+  PetscCall(time::CentralDifferenceSetCommit(ts, commitHook, m));
+  PetscCall(time::CentralDifferenceSetNodalDamping(ts, m->dim, m->damping_blocks));
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode ElastodynamicsSetInitialStress(Elastodynamics *m, Vec u) {
   const PetscScalar *ul;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "slipwave/model/attenuation.hpp"
 #include "slipwave/mesh/vertex_coordinates.hpp"
@@ -161,7 +162,8 @@ PetscErrorCode FreeFieldUpdate(FreeField *ff, DM dm, TS ts, PetscReal t, double 
   PetscReal h_ts = 0;
   if (ts) PetscCall(TSGetTimeStep(ts, &h_ts));
   for (FreeFieldSide &side : ff->sides) {
-    physics::FreeFieldColumn &col = side.column;
+    physics::FreeFieldColumn &col = side.trial;
+    col                           = side.column;
     if (!col.started()) {
       col.start(t, v_in);
     } else if (t > col.time()) {
@@ -173,12 +175,13 @@ PetscErrorCode FreeFieldUpdate(FreeField *ff, DM dm, TS ts, PetscReal t, double 
                  col.time(), (double)t);
     }
   }
+  ff->has_trial = true;
   PetscScalar   *f;
   const PetscInt dim = ff->dim;
   PetscCall(VecZeroEntries(ff->force_local));
   PetscCall(VecGetArray(ff->force_local, &f));
   for (FreeFieldSide &side : ff->sides) {
-    const physics::FreeFieldColumn &col = side.column;
+    const physics::FreeFieldColumn &col = side.trial;
     std::vector<double>             stress(col.segmentCount() * dim * dim);
     for (int e = 0; e < col.segmentCount(); ++e) col.segmentStress(e, &stress[e * dim * dim]);
     for (const FreeFieldTerm &term : side.terms) {
@@ -194,6 +197,12 @@ PetscErrorCode FreeFieldUpdate(FreeField *ff, DM dm, TS ts, PetscReal t, double 
   PetscCall(VecZeroEntries(ff->force));
   PetscCall(DMLocalToGlobal(dm, ff->force_local, ADD_VALUES, ff->force));
   PetscFunctionReturn(0);
+}
+
+void FreeFieldCommit(FreeField *ff) {
+  if (!ff || !ff->has_trial) return;
+  for (FreeFieldSide &side : ff->sides) std::swap(side.column, side.trial);
+  ff->has_trial = false;
 }
 
 double FreeFieldStableStep(const FreeField *ff) {

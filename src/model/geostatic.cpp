@@ -79,6 +79,15 @@ PetscErrorCode unbalancedRatio(Elastodynamics *m, Vec a, Vec mask, double *ratio
   PetscFunctionReturn(0);
 }
 
+// The stage's own steps are accepted as soon as taken: the RHS's trial states (interface
+// pairs) are committed at once.
+PetscErrorCode relaxationForces(Elastodynamics *m, Vec u, Vec a) {
+  PetscFunctionBeginUser;
+  PetscCall(ElastodynamicsRHS(nullptr, 0.0, u, a, m));
+  PetscCall(ElastodynamicsCommit(m));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode GeostaticOptionsRead(MPI_Comm comm, GeostaticOptions *o) {
@@ -169,7 +178,7 @@ PetscErrorCode GeostaticStage(Elastodynamics *m, const GeostaticOptions &o, doub
       // This evaluation advances every pair from its initial state by the whole static jump
       // in one increment of the law: a pair that stays on the linear stick branch ends with
       // exactly the spring's traction; one that would slip or open is flagged.
-      PetscCall(ElastodynamicsRHS(nullptr, 0.0, u, a, m));
+      PetscCall(relaxationForces(m, u, a));
       PetscCall(unbalancedRatio(m, a, mask, &report->static_ratio));
       for (const auto &iface : m->interfaces) {
         PetscInt off;
@@ -182,7 +191,7 @@ PetscErrorCode GeostaticStage(Elastodynamics *m, const GeostaticOptions &o, doub
   }
   double   ratio = report->static_ratio;
   PetscInt step  = 0;
-  if (relax) PetscCall(ElastodynamicsRHS(nullptr, 0.0, u, a, m));
+  if (relax) PetscCall(relaxationForces(m, u, a));
   for (; relax && step < o.max_steps; ++step) {
     // Local damping: each dof's unbalanced force f = M a is opposed by alpha |f| sign(v), so
     // the damping always works against the motion and cannot feed any mode (unlike zeroing
@@ -200,7 +209,7 @@ PetscErrorCode GeostaticStage(Elastodynamics *m, const GeostaticOptions &o, doub
     PetscCall(VecRestoreArrayRead(a, &aa));
     PetscCall(VecRestoreArray(v, &va));
     PetscCall(VecAXPY(u, dt, v));
-    PetscCall(ElastodynamicsRHS(nullptr, 0.0, u, a, m));
+    PetscCall(relaxationForces(m, u, a));
     if (step % 10 == 0) {
       PetscCall(unbalancedRatio(m, a, mask, &ratio));
       PetscCheck(std::isfinite(ratio), m->comm, PETSC_ERR_NOT_CONVERGED, "geostatic stage diverged at step %" PetscInt_FMT "; the relaxation step %g s may be too large", step,

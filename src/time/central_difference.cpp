@@ -14,6 +14,8 @@ struct CentralDifference {
   Vec       damping     = nullptr; // nodal blocks of M^{-1} C, or null
   PetscInt  damping_bs  = 0;
   PetscBool have_accel  = PETSC_FALSE;
+  PetscErrorCode (*commit)(void *) = nullptr;
+  void     *commit_ctx  = nullptr;
 };
 
 CentralDifference *data(TS ts) { return static_cast<CentralDifference *>(ts->data); }
@@ -82,6 +84,12 @@ PetscErrorCode dampedVelocity(CentralDifference *cd, PetscReal s, Vec v, Vec a) 
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode commitState(CentralDifference *cd) {
+  PetscFunctionBeginUser;
+  if (cd->commit) PetscCall(cd->commit(cd->commit_ctx));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode velocityVector(TS ts, Vec *v) {
   PetscFunctionBeginUser;
   *v = ts->vec_dot;
@@ -110,6 +118,7 @@ PetscErrorCode stepCentralDifference(TS ts) {
   PetscCall(VecWAXPY(v, 0.5 * h, cd->accel_star, cd->v_half));
   PetscCall(dampedVelocity(cd, 0.5 * h, v, cd->accel));
   PetscCall(TSPostStage(ts, ts->ptime + h, 0, &u));
+  PetscCall(commitState(cd));
 
   ts->ptime += h;
   ts->time_step = next_h;
@@ -196,6 +205,14 @@ PetscErrorCode CentralDifferenceSetNodalDamping(TS ts, PetscInt bs, Vec blocks) 
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CentralDifferenceSetCommit(TS ts, PetscErrorCode (*commit)(void *ctx), void *ctx) {
+  PetscFunctionBeginUser;
+  PetscCall(requireCentralDifference(ts));
+  data(ts)->commit     = commit;
+  data(ts)->commit_ctx = ctx;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CentralDifferenceGetHalfStepVelocity(TS ts, Vec *v_half) {
   PetscFunctionBeginUser;
   PetscCall(requireCentralDifference(ts));
@@ -230,6 +247,7 @@ PetscErrorCode CentralDifferenceComputeInitialAcceleration(TS ts) {
     PetscCall(VecCopy(cd->accel_star, cd->accel));
   }
   PetscCall(VecDestroy(&v_copy));
+  PetscCall(commitState(cd));
   cd->have_accel = PETSC_TRUE;
   PetscFunctionReturn(0);
 }

@@ -46,7 +46,7 @@ $SW $O -restart "$WORK/FB/checkpoint.bin" -output_dir "$WORK/FB" | grep -E "^res
 cmp "$WORK/FB/energy.csv" "$WORK/FC/energy.csv"
 for f in "$WORK"/FC/stations/*.csv; do cmp "$f" "$WORK/FB/stations/$(basename "$f")"; done
 echo "free-field restart: energy.csv and $(ls "$WORK"/FC/stations/*.csv | wc -l) station files identical"
-# The same with constant-Q damping: the memory variables (committed and trial) are part of the
+# The same with constant-Q damping: the committed memory variables are part of the
 # state, and the continued run must be bit-identical.
 O="-regions rock,soil -material_soil_rho 1900 -material_soil_vp 500 -material_soil_vs 200 -material_soil_damping_ratio 0.05 -material_rock_rho 2400
  -material_rock_vp 1600 -material_rock_vs 800 -region_soil_box -10,10,0,30 -mesh_box_faces 10,20 -mesh_box_lower -10,-10 -mesh_box_upper 10,30

@@ -1,10 +1,10 @@
 // Checkpoint and restart: the full state of a run at the end of a step, so that a continued
 // run is identical to an uninterrupted one. The file (PETSc binary, written to a temporary
 // name and renamed, so a crash never leaves half a checkpoint) holds: time, step and step
-// size; u, v, a and the force parts of the last right-hand side (the energy ledger needs
-// them); the constant loads and initial stresses left by a geostatic stage; every interface
-// pair's state; the free-field columns; the constant-Q memory variables; the energy ledger; the station records and the
-// output times so far.
+// size; u, v, a; the constant loads and initial stresses left by a geostatic stage; the
+// committed history: every interface pair's state, the free-field columns, the constant-Q
+// memory variables; the energy ledger; the station records and the output times so far. No
+// cache of the last right-hand side (its force parts): the next step recomputes them.
 // A restart runs on the same number of ranks (pairs and stations are stored per rank).
 #pragma once
 #include <petscts.h>

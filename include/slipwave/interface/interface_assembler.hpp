@@ -3,8 +3,8 @@
 // displacement), advance each pair with the Mohr-Coulomb law on the jump increment of the
 // step, and add the forces +A tau on the soil node and -A tau on the structure node to the
 // global force vector (the reverse scatter adds them, wherever the nodes are owned).
-// The central-difference TS evaluates the right-hand side once per step, so the state is
-// committed at each evaluation.
+// AddForces computes a trial state from the committed one (asking again gives the same
+// forces); Commit makes the last trial the committed state once the step is accepted.
 #pragma once
 #include <petscmat.h>
 
@@ -32,9 +32,12 @@ public:
   // normal damping, 0 for none (physics/contact_damping.hpp).
   PetscErrorCode Setup(MPI_Comm comm, PetscInt dim, const mesh::InterfaceSpec &spec, const mesh::InterfacePairs &pairs, const physics::InterfaceParams &params,
                        double sigma_N0, double contact_damping, Vec mass);
-  // f += interface forces at displacement u; advances and commits every pair's state.
+  // f += interface forces at displacement u: every pair advanced from its committed state into
+  // the trial state.
   PetscErrorCode AddForces(Vec u, Vec f);
-  // f += contact damping forces of the pairs closed after the last AddForces, from the
+  // The trial state of the last AddForces becomes the committed state (no-op without one).
+  void Commit();
+  // f += contact damping forces of the pairs closed in the last AddForces' trial, from the
   // velocity v (the half-step velocity that the step's other damping terms use). No-op
   // without contact damping.
   PetscErrorCode AddDampingForces(Vec v, Vec f);
@@ -86,7 +89,13 @@ private:
   std::vector<physics::InterfaceState<2>> states2_;
   std::vector<physics::InterfaceState<3>> states3_;
   std::vector<double> tangent_;   // (dim-1) unit tangents per pair, dim components each
-  std::vector<double> jump_prev_; // [u] at the last evaluation, dim per pair
+  std::vector<double> jump_prev_; // [u] at the committed state, dim per pair
+  // The last AddForces: states, jumps and drift it reached, not yet committed.
+  std::vector<physics::InterfaceState<2>> trial_states2_;
+  std::vector<physics::InterfaceState<3>> trial_states3_;
+  std::vector<double> trial_jump_;
+  double              trial_max_drift_ = 0;
+  bool                has_trial_       = false;
   double              contact_damping_ = 0;
   std::vector<double> dashpot_;   // normal dashpot c per pair [N s/m]
   double              max_drift_ = 0;

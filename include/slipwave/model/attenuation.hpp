@@ -16,9 +16,9 @@
 // K_U u is one more pass of the element loop over its cells.
 // The update is the exact one for a drive linear in time between the committed state
 // (committed_time) and the trial time (memoryUpdate): the trial is computed from the committed
-// state, so asking again at the same time gives the same force; a later time commits the last
-// trial first (the "cd" TS evaluates the RHS once per new time). Off during the geostatic
-// stage: the memory starts from zero with the dynamic stage, as the displacements do.
+// state, so asking again at the same time gives the same force; AttenuationCommit, once the
+// step is accepted, makes the trial the committed state. Off during the geostatic stage: the
+// memory starts from zero with the dynamic stage, as the displacements do.
 #pragma once
 #include <petscdm.h>
 
@@ -51,7 +51,8 @@ struct Attenuation {
   bool                                 reference_auto = true;
   std::vector<DampedRegion>            damped;
   Vec                                  drive = nullptr, drive_local = nullptr; // work: a region's K_U u
-  bool   started = false;
+  bool   started   = false; // a trial has been committed
+  bool   has_trial = false; // AttenuationForce computed a trial not yet committed
   double committed_time = 0, trial_time = 0;
 };
 
@@ -71,7 +72,9 @@ PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator
 // Lines for the run report: per damped region the fitted Q over the band, the reference
 // frequency, the speeds at the band ends and the stable-step cost.
 std::vector<std::string> AttenuationReport(const Attenuation *att, const std::vector<RegionMaterialInfo> &materials);
-// Full state for checkpoints: [started, committed_time, trial_time, memory of this rank].
+// The trial of the last AttenuationForce becomes the committed state (no-op without one).
+void AttenuationCommit(Attenuation *att);
+// Committed state for checkpoints: [started, committed_time, memory and drive of this rank].
 std::vector<double> AttenuationState(const Attenuation *att);
 bool                AttenuationSetState(Attenuation *att, const std::vector<double> &state);
 PetscInt            AttenuationStateSize(const Attenuation *att);

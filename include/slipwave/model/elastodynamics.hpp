@@ -3,6 +3,9 @@
 // ElastodynamicsRHS is the TS right-hand side for the "cd" type: it returns
 // a* = M^{-1}(f_ext - K u - beta K v_{n+1/2} + f_anelastic) on free dofs and the prescribed acceleration
 // on held ones; the nodal part of C (dashpots, alpha M) goes to the TS as damping blocks.
+// It is a function of (t, u, v_{n+1/2}) and the committed history (interface pairs, free-field
+// columns, constant-Q memory), which it advances into trial states only; ElastodynamicsCommit,
+// the TS's commit hook, accepts them after each step.
 #pragma once
 #include <petscts.h>
 
@@ -21,17 +24,6 @@ namespace slipwave::model {
 struct FreeField;  // model/free_field.hpp
 struct LateralTie; // model/lateral_tie.hpp
 struct Attenuation; // model/attenuation.hpp
-
-struct StableStep {
-  double omega_max_bulk = 0; // Gershgorin bound on the largest angular frequency [rad/s]
-  double dt_bulk = 0;        // critical step of the bulk (with stiffness damping) [s]
-  double dt_cfl = 0;         // h_min / vp_max, for comparison only [s]
-  double dt_limit = 0;       // the limit a run must respect [s]
-  double dt_without_interfaces = 0; // the bulk alone, to report what the penalty costs [s]
-  double dt_free_field = 1e300; // the free-field columns' own limit (normally above the bulk's) [s]
-  double dt_without_stiffness_damping = 0; // the same bound with beta = 0, to report what Rayleigh costs [s]
-  std::string governing;     // which constraint sets dt_limit
-};
 
 struct Elastodynamics {
   MPI_Comm                        comm = MPI_COMM_NULL;
@@ -54,10 +46,8 @@ struct Elastodynamics {
   Vec       f_internal = nullptr, f_external = nullptr, f_input = nullptr, f_stiffness_damping = nullptr, f_interface = nullptr;
   Vec       f_anelastic = nullptr; // + sum of the constant-Q memory forces (zero without attenuation)
   Vec       f_contact_damping = nullptr; // the interfaces' contact dashpots (zero without them)
-  PetscReal rhs_time = 0;
   bool      input_enabled = true;       // off during the geostatic stage
   std::vector<double> initial_stress;   // 6 per local cell: the geostatic state, added to the output
-  TS        ts = nullptr; // set by the driver: the RHS reads the half-step velocity from it
   FreeField  *free_field = nullptr; // free-field lateral columns (-bc_<side>_type freefield), or null
   LateralTie *tie        = nullptr; // tied lateral sides (-bc_<side>_type tied), or null
   Attenuation *attenuation = nullptr; // constant-Q damping of regions with a damping ratio, or null
@@ -66,9 +56,12 @@ struct Elastodynamics {
 PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);
 PetscErrorCode ElastodynamicsDestroy(Elastodynamics *model);
 PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx);
+// The trial states of the last RHS evaluation become the committed ones.
+PetscErrorCode ElastodynamicsCommit(Elastodynamics *model);
+// A "cd" TS (type set, options read) gets the RHS, the commit hook and the nodal damping.
+PetscErrorCode ElastodynamicsSetUpTS(Elastodynamics *model, TS ts);
 // Global f = K x by the element loop (ghost exchange included), as the RHS computes it.
 PetscErrorCode ElastodynamicsStiffnessTimes(Elastodynamics *model, Vec x, Vec f);
-PetscErrorCode ElastodynamicsStableStep(Elastodynamics *model, StableStep *step);
 // Stores the cell stresses of the global displacement u as the initial stress.
 PetscErrorCode ElastodynamicsSetInitialStress(Elastodynamics *model, Vec u);
 

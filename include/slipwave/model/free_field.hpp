@@ -23,8 +23,9 @@
 //  - The column carries only the dynamic part (no gravity): the geostatic stress is the
 //    initial stress of the main mesh, and the free-field side acts as a roller during the
 //    geostatic stage (model/geostatic.cpp), then its reaction becomes a constant load.
-// The column is advanced inside the RHS when the RHS is called at a new time (the "cd" TS
-// calls it exactly once per step, at t_{n+1} after u_{n+1} is known), with the TS's step.
+// The RHS brings a trial copy of each column from its committed time to t (with the TS's
+// step), so asking again at the same time gives the same force; FreeFieldCommit, after the
+// step is accepted, makes the trial the committed column.
 #pragma once
 #include <petscts.h>
 
@@ -51,7 +52,8 @@ struct FreeFieldTerm {
 
 struct FreeFieldSide {
   std::string                 name;
-  physics::FreeFieldColumn    column;
+  physics::FreeFieldColumn    column; // committed
+  physics::FreeFieldColumn    trial;  // the last FreeFieldUpdate's
   std::vector<FreeFieldTerm>  terms; // this rank's faces
 };
 
@@ -60,6 +62,7 @@ struct FreeField {
   std::vector<FreeFieldSide> sides;
   Vec                        force = nullptr;       // global: C v_ff + A t_ff of the last update [N]
   Vec                        force_local = nullptr;
+  bool                       has_trial = false;
 };
 
 // Builds the columns of every boundary of type freefield (bc must be created). h_min: the
@@ -67,10 +70,12 @@ struct FreeField {
 // the constant-Q damping the columns' segments take from their regions.
 PetscErrorCode FreeFieldCreate(DM dm, const BoundaryConditions &bc, const std::vector<RegionMaterialInfo> &materials, const physics::RayleighCoefficients &rayleigh,
                                const Attenuation *attenuation, double h_min, FreeField **ff);
-// Brings the columns to time t (starting them on the first call, stepping them when t is new)
-// and assembles the force into ff->force. enabled = false (geostatic stage): the force is zero
-// and the columns stay unstarted. ts may be null; it supplies the step when given.
+// Brings trial copies of the columns to time t (starting them on the first call, stepping them
+// when t is new) and assembles the force into ff->force. enabled = false (geostatic stage): the
+// force is zero and the columns stay unstarted. ts may be null; it supplies the step when given.
 PetscErrorCode FreeFieldUpdate(FreeField *ff, DM dm, TS ts, PetscReal t, double v_in, bool enabled);
+// The trial columns of the last FreeFieldUpdate become the committed ones (no-op without one).
+void           FreeFieldCommit(FreeField *ff);
 // Smallest stable step of the columns (1e300 if none).
 double         FreeFieldStableStep(const FreeField *ff);
 PetscErrorCode FreeFieldDestroy(FreeField **ff);

@@ -25,6 +25,12 @@ PetscErrorCode CentralDifferenceRegister();
 // The TS keeps a reference. Pass nullptr to remove.
 PetscErrorCode CentralDifferenceSetNodalDamping(TS ts, PetscInt bs, Vec blocks);
 
+// commit(ctx) runs after every step (and after the initial acceleration at t_0): the state the
+// last RHS evaluation reached is accepted, so the model makes its trial state (history
+// variables the RHS advanced from the committed ones) the committed state. The RHS itself
+// stays a function of (t, u, v_{n+1/2}) and the committed state.
+PetscErrorCode CentralDifferenceSetCommit(TS ts, PetscErrorCode (*commit)(void *ctx), void *ctx);
+
 // The half-step velocity v_{n+1/2} used by the step in progress (for the RHS function).
 PetscErrorCode CentralDifferenceGetHalfStepVelocity(TS ts, Vec *v_half);
 

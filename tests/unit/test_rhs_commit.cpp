@@ -1,0 +1,126 @@
+// The right-hand side is a function of (t, u, v_{n+1/2}) and the committed history only: the
+// interface pairs, the free-field columns and the constant-Q memory advance into trial states
+// that the "cd" TS's commit hook accepts after each step (model/elastodynamics.hpp). Checked
+// on two scenes of config/scenes (run from the repository root):
+//  - default.yaml, coarsened (interface with contact damping, constant-Q soil and block,
+//    gravity without the geostatic stage, so the block settles and the pairs' states change),
+//  - free_field_site.yaml (free-field columns, Rayleigh damping, incident SV wave),
+// each stepped to t = 0.1 s (0.5 s) twice: plainly, and with two extra RHS evaluations before every
+// step at a state the run never takes (t_{n+2}, u_n + 1 mm of noise). A pure RHS leaves the
+// second run bit for bit equal to the first (u, v, interface totals); an RHS that committed
+// would have moved the pairs' jump reference to the probe, stepped the columns past t_{n+1}
+// (then refused to go back) and committed the memory at t_{n+2}. Also: the two probes at the
+// same (t, u) give the same acceleration bit for bit.
+#include "slipwave/model/elastodynamics.hpp"
+#include "slipwave/model/stable_step.hpp"
+#include "slipwave/time/central_difference.hpp"
+
+#include "petsc_test_main.hpp"
+
+#include <petscts.h>
+
+#include <string>
+#include <utility>
+
+namespace {
+
+using namespace slipwave;
+
+struct Final {
+  Vec    u = nullptr, v = nullptr;
+  double stored = 0, dissipated = 0;
+  PetscInt steps = 0;
+};
+
+PetscErrorCode runScene(const std::string &scene_options, PetscReal t_end, bool probe, Final *out) {
+  MPI_Comm              comm = PETSC_COMM_WORLD;
+  model::Elastodynamics m;
+  model::StableStep     step;
+  TS                    ts;
+  Vec                   u, v, a_probe, a_again, u_probe;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsClear(nullptr));
+  PetscCall(PetscOptionsInsertString(nullptr, scene_options.c_str()));
+  PetscCall(model::ElastodynamicsCreate(comm, &m));
+  PetscCall(model::StableStepCompute(&m, &step));
+  PetscCall(TSCreate(comm, &ts));
+  PetscCall(TSSetType(ts, time::kTSCentralDifference));
+  PetscCall(TSSetMaxTime(ts, t_end));
+  PetscCall(TSSetExactFinalTime(ts, TS_EXACTFINALTIME_MATCHSTEP));
+  PetscCall(model::TimeStepChoose(ts, step, model::TimeStepOptions{}, !m.interfaces.empty()));
+  PetscCall(model::ElastodynamicsSetUpTS(&m, ts));
+  PetscCall(DMCreateGlobalVector(m.dm, &u));
+  PetscCall(VecDuplicate(u, &v));
+  PetscCall(VecDuplicate(u, &a_probe));
+  PetscCall(VecDuplicate(u, &a_again));
+  PetscCall(VecDuplicate(u, &u_probe));
+  PetscCall(VecZeroEntries(u));
+  PetscCall(VecZeroEntries(v));
+  PetscCall(TS2SetSolution(ts, u, v));
+  PetscCall(time::CentralDifferenceComputeInitialAcceleration(ts));
+  PetscRandom rnd;
+  PetscCall(PetscRandomCreate(comm, &rnd));
+  PetscCall(PetscRandomSetInterval(rnd, -1e-3, 1e-3));
+  PetscReal t, dt;
+  bool      same_probe = true;
+  PetscCall(TSGetTime(ts, &t));
+  for (; t < t_end * (1 - 1e-12);) {
+    if (probe) {
+      PetscCall(TSGetTimeStep(ts, &dt));
+      PetscCall(VecSetRandom(u_probe, rnd));
+      PetscCall(VecAXPY(u_probe, 1.0, u));
+      PetscCall(model::ElastodynamicsRHS(ts, t + 2 * dt, u_probe, a_probe, &m));
+      PetscCall(model::ElastodynamicsRHS(ts, t + 2 * dt, u_probe, a_again, &m));
+      PetscBool equal;
+      PetscCall(VecEqual(a_probe, a_again, &equal));
+      same_probe = same_probe && equal;
+    }
+    PetscCall(TSStep(ts));
+    PetscCall(TSGetTime(ts, &t));
+  }
+  if (probe) unit::check(same_probe, scene_options + ": the RHS twice at the same (t, u) gives the same acceleration");
+  PetscCall(TSGetStepNumber(ts, &out->steps));
+  for (const auto &iface : m.interfaces) {
+    interface::InterfaceTotals totals;
+    PetscCall(iface.Totals(&totals));
+    out->stored += totals.stored;
+    out->dissipated += totals.dissipated;
+  }
+  PetscCall(VecDuplicate(u, &out->u));
+  PetscCall(VecDuplicate(v, &out->v));
+  PetscCall(VecCopy(u, out->u));
+  PetscCall(VecCopy(v, out->v));
+  PetscCall(PetscRandomDestroy(&rnd));
+  for (Vec *x : {&u, &v, &a_probe, &a_again, &u_probe}) PetscCall(VecDestroy(x));
+  PetscCall(TSDestroy(&ts));
+  PetscCall(model::ElastodynamicsDestroy(&m));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Run(bool) {
+  PetscFunctionBeginUser;
+  PetscCall(time::CentralDifferenceRegister());
+  // The free-field site's wave (Ricker, f0 = 2 Hz) reaches the surface after 0.3 s.
+  const std::pair<std::string, PetscReal> scenes[] = {{"-options_file config/scenes/default.yaml -mesh_box_faces 60,30", 0.1},
+                                                      {"-options_file config/scenes/free_field_site.yaml", 0.5}};
+  for (const auto &[scene, t_end] : scenes) {
+    Final plain, probed;
+    PetscCall(runScene(scene, t_end, false, &plain));
+    PetscCall(runScene(scene, t_end, true, &probed));
+    PetscBool u_equal, v_equal;
+    PetscReal u_norm;
+    PetscCall(VecEqual(plain.u, probed.u, &u_equal));
+    PetscCall(VecEqual(plain.v, probed.v, &v_equal));
+    PetscCall(VecNorm(plain.u, NORM_INFINITY, &u_norm));
+    unit::check(plain.steps > 0 && u_norm > 0, scene + ": the run moves (" + std::to_string(plain.steps) + " steps, max |u| " + std::to_string(u_norm) + " m)");
+    unit::check(u_equal && v_equal, scene + ": probe evaluations leave u and v at the end bit for bit unchanged");
+    unit::check(plain.stored == probed.stored && plain.dissipated == probed.dissipated, scene + ": and the interface totals (stored " +
+                                                                                             std::to_string(plain.stored) + " J)");
+    for (Vec *x : {&plain.u, &plain.v, &probed.u, &probed.v}) PetscCall(VecDestroy(x));
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+int main(int argc, char **argv) { return unit::runPetscTest(argc, argv, Run); }
