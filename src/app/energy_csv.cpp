@@ -6,9 +6,10 @@ namespace slipwave::app {
 namespace {
 
 // The columns after "step", in the order Append writes them.
-constexpr std::array<const char *, 15> kValueColumns = {"time",           "kinetic",          "strain",       "input_work",           "external_work",
-                                                        "absorbed",       "damped",           "anelastic",    "interface_work",       "interface_stored",
-                                                        "interface_dissipated", "contact_damped", "stored_change", "balance_error", "relative_balance_error"};
+constexpr std::array<const char *, 15> kValueColumns = {"time",           "kinetic",          "strain",         "input_work",
+                                                        "external_work",  "absorbed",         "damped",         "anelastic",
+                                                        "interface_work", "interface_stored", "interface_dissipated", "contact_damped",
+                                                        "stored_change",  "balance_error",    "relative_balance_error"};
 
 std::string header() {
   std::string line = "step";
