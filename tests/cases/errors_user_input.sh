@@ -5,8 +5,9 @@
 # material must succeed, so no case passes because of a mistake in the base command.
 # Expected messages come from the checks at their sources (src/model/materials.cpp,
 # src/mesh/mesh_builder.cpp, src/model/boundary_conditions.cpp, src/model/time_function.cpp,
-# src/app/simulation.cpp, src/core/options_check.cpp, src/model/elastodynamics.cpp); the
-# stable limit 0.00204124 s is the Gershgorin bound the dry run of the control reports.
+# src/app/simulation.cpp, src/app/initial_conditions.cpp, src/core/options_check.cpp,
+# src/model/elastodynamics.cpp); the stable limit 0.00204124 s is the Gershgorin bound the dry
+# run of the control reports.
 set -u
 BUILD=${BUILD:-build}
 bin="$BUILD/slipwave"

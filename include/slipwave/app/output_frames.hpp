@@ -1,0 +1,39 @@
+// The output frames: the volume fields (OUTPUT_DIR/volume.xmf/h5) and each interface's
+// state (interface_<name>.xmf/h5), written together at the first step, then every
+// -output_interval and at the last step. The frame times and the next output time are
+// part of a checkpoint, so a restarted run continues the same series.
+#pragma once
+#include <petscvec.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "slipwave/io/interface_output.hpp"
+#include "slipwave/io/volume_output.hpp"
+#include "slipwave/model/elastodynamics.hpp"
+
+namespace slipwave::app {
+
+class OutputFrames {
+public:
+  // interval: time between frames [s]. After a restart (restarted) the frames in times() are
+  // kept in the files and the series continues from them.
+  PetscErrorCode Open(const model::Elastodynamics &model, const std::string &dir, PetscReal interval, bool restarted);
+  // Writes a frame at the first step, at the last one and whenever the next output time is reached.
+  PetscErrorCode WriteIfDue(const model::Elastodynamics &model, PetscInt step, PetscReal t, bool last, Vec u, Vec v, Vec a);
+  PetscErrorCode Close();
+
+  // What a checkpoint saves and restores (before Open).
+  std::vector<PetscReal> *times() { return &times_; }
+  PetscReal              *nextOutput() { return &next_output_; }
+
+private:
+  PetscReal                                         interval_    = 0;
+  PetscReal                                         next_output_ = 0;
+  std::vector<PetscReal>                            times_; // times of the frames written
+  io::VolumeOutput                                  volume_;
+  std::vector<std::unique_ptr<io::InterfaceOutput>> interfaces_;
+};
+
+} // namespace slipwave::app

@@ -1,0 +1,29 @@
+// What a run tells its user: the setup report before the first step (mesh, materials and
+// resolution, boundaries and their warnings, input, damping and attenuation, interfaces,
+// station notes, the stable step and the step chosen, memory and a run-time estimate),
+// OUTPUT_DIR/run_info.json for the plotting script, and the summary after the last step.
+#pragma once
+#include <petscsys.h>
+
+#include <string>
+
+#include "slipwave/io/stations.hpp"
+#include "slipwave/model/elastodynamics.hpp"
+#include "slipwave/model/stable_step.hpp"
+#include "slipwave/model/energy_ledger.hpp"
+
+namespace slipwave::app {
+
+// dt: the time step chosen; max_time: -ts_max_time [s].
+PetscErrorCode ReportSetup(const model::Elastodynamics &model, const model::StableStep &limit, const io::Stations &stations, PetscReal dt, PetscReal max_time,
+                           const std::string &output_dir);
+
+// Rank 0: OUTPUT_DIR/run_info.json (resolved frequency, h_min, input top frequency, dt).
+void WriteRunInfo(const model::Elastodynamics &model, const std::string &output_dir, double dt);
+
+// The interfaces' final states, the contact dashpots' work, steps and wall time, the energy
+// balance error and where the output is.
+PetscErrorCode ReportEnd(const model::Elastodynamics &model, const model::EnergyLedger &ledger, bool with_stations, PetscInt steps, double wall,
+                         const std::string &output_dir);
+
+} // namespace slipwave::app

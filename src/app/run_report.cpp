@@ -1,0 +1,157 @@
+#include "slipwave/app/run_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "slipwave/model/attenuation.hpp"
+
+namespace slipwave::app {
+namespace {
+
+// Memory in use after setup (all ranks) and a run-time estimate: the element loop timed here
+// times the ratio of a whole step to it (measured: 2.6 on a 512^2 mesh, docs/performance.md;
+// 4.3 on the default scene, where the per-step vector work weighs more; 4 is used, so the
+// estimate is good to a factor 2), doubled with stiffness-proportional damping (a second loop).
+PetscErrorCode reportCost(const model::Elastodynamics &model, double steps) {
+  constexpr double kStepOverLoop = 4.0;
+  PetscLogDouble   memory, t0, t1;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemoryGetCurrentUsage(&memory));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &memory, 1, MPI_DOUBLE, MPI_SUM, model.comm));
+  std::vector<PetscScalar> u, f;
+  PetscInt                 n;
+  PetscCall(VecGetLocalSize(model.u_local, &n));
+  u.assign(n, 1e-6);
+  f.assign(n, 0.0);
+  PetscCall(PetscTime(&t0));
+  const int repeats = 5;
+  for (int k = 0; k < repeats; ++k) model.bulk.addStiffnessTimes(u.data(), f.data());
+  PetscCall(PetscTime(&t1));
+  double loop = (t1 - t0) / repeats;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &loop, 1, MPI_DOUBLE, MPI_MAX, model.comm));
+  const double per_step = loop * kStepOverLoop * (model.rayleigh.beta > 0 ? 2 : 1);
+  PetscCall(PetscPrintf(model.comm, "  memory in use after setup: %.1f MB (all ranks); estimated run time %.0f s (%.0f steps x %.3g ms; within a factor 2)\n",
+                        memory / 1048576.0, steps * per_step, steps, 1e3 * per_step));
+  PetscFunctionReturn(0);
+}
+
+// The highest frequency the mesh carries: 10 points per S wavelength in the slowest region
+// (Kuhlemeyer & Lysmer 1973: elements of 1/8 to 1/10 of the shortest wavelength), with the
+// smallest cell size of the mesh.
+constexpr double kPointsPerWavelength = 10;
+
+struct Resolution {
+  double      frequency = 0; // Hz
+  std::string region;
+};
+
+Resolution resolvedFrequency(const model::Elastodynamics &model) {
+  Resolution res;
+  for (const auto &m : model.materials) {
+    const double f = m.elastic.vs / (kPointsPerWavelength * model.bulk.minCellSize());
+    if (res.region.empty() || f < res.frequency) res = {f, m.region};
+  }
+  return res;
+}
+
+PetscErrorCode reportInterfaces(const model::Elastodynamics &model) {
+  MPI_Comm comm = model.comm;
+  PetscFunctionBeginUser;
+  for (size_t k = 0; k < model.interfaces.size(); ++k) {
+    const auto &iface = model.interfaces[k];
+    const auto &p     = iface.params();
+    PetscCall(PetscPrintf(comm, "  interface %s between %s (soil side) and %s: %" PetscInt_FMT " node pairs; phi %.4g deg, psi %.4g deg, c %.4g Pa, e_ini %.4g m\n",
+                          iface.spec().name.c_str(), iface.spec().soil_region.c_str(), iface.spec().structure_region.c_str(), iface.pairs().n_global,
+                          p.phi * 180 / PETSC_PI, p.psi * 180 / PETSC_PI, p.c, p.e_ini));
+    PetscInt cut;
+    PetscCall(iface.CountCutPairs(model.mass, &cut));
+    PetscCall(PetscPrintf(comm, "    %s; %" PetscInt_FMT " pairs have their two nodes on different ranks\n", model.penalty_notes[k].c_str(), cut));
+    double c_min, c_max;
+    PetscCall(iface.DashpotRange(&c_min, &c_max));
+    PetscCall(PetscPrintf(comm, "    contact damping %.3g of critical on closed pairs (normal dashpots %.4g .. %.4g N s/m)\n", iface.contactDamping(), c_min, c_max));
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+void WriteRunInfo(const model::Elastodynamics &model, const std::string &output_dir, double dt) {
+  const Resolution  res  = resolvedFrequency(model);
+  const std::string path = output_dir + "/run_info.json";
+  if (FILE *f = std::fopen(path.c_str(), "w")) {
+    std::fprintf(f, "{\"resolved_frequency_hz\": %.6g, \"points_per_wavelength\": %g, \"slowest_region\": \"%s\", \"h_min_m\": %.6g,\n", res.frequency,
+                 kPointsPerWavelength, res.region.c_str(), model.bulk.minCellSize());
+    std::fprintf(f, " \"input_top_frequency_hz\": %.6g, \"time_step_s\": %.10g}\n", model.bc.input.active() ? model.bc.input.topFrequency() : 0.0, dt);
+    std::fclose(f);
+  }
+}
+
+PetscErrorCode ReportSetup(const model::Elastodynamics &model, const model::StableStep &limit, const io::Stations &stations, PetscReal dt, PetscReal max_time,
+                           const std::string &output_dir) {
+  MPI_Comm    comm = model.comm;
+  PetscMPIInt size;
+  PetscInt    n_nodes, ncell_local = model.bulk.cellCount(), ncell;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(VecGetSize(model.mass, &n_nodes));
+  PetscCallMPI(MPI_Allreduce(&ncell_local, &ncell, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCall(PetscPrintf(comm, "slipwave: explicit elastodynamics, %" PetscInt_FMT "D %s, %d rank%s (partitioner %s)\n", model.dim, model.dim == 2 ? "plane strain" : "", size,
+                        size > 1 ? "s" : "", model.mesh.partitioner.c_str()));
+  PetscCall(PetscPrintf(comm, "  mesh: %s, %" PetscInt_FMT " cells, %" PetscInt_FMT " nodes, %" PetscInt_FMT " distinct element matrices on rank 0\n",
+                        model.mesh.source.c_str(), ncell, n_nodes / model.dim, model.bulk.distinctMatrices()));
+  const double fmax = model.bc.input.active() ? model.bc.input.topFrequency() : 0.0;
+  for (const auto &m : model.materials) {
+    PetscCall(PetscPrintf(comm, "  region %-10s rho %8.1f kg/m3  vp %8.1f m/s  vs %8.1f m/s", m.region.c_str(), m.elastic.rho, m.elastic.vp, m.elastic.vs));
+    if (fmax > 0)
+      PetscCall(PetscPrintf(comm, "  %5.1f points per S wavelength at %.2f Hz (h_min %.3g m)", m.elastic.vs / fmax / model.bulk.minCellSize(), fmax, model.bulk.minCellSize()));
+    PetscCall(PetscPrintf(comm, "\n"));
+  }
+  const Resolution res = resolvedFrequency(model);
+  PetscCall(PetscPrintf(comm, "  resolution: S waves up to %.3g Hz (%d points per wavelength in region %s, h_min %.3g m)\n", res.frequency, (int)kPointsPerWavelength,
+                        res.region.c_str(), model.bulk.minCellSize()));
+  std::string bcs;
+  for (size_t i = 0; i < model.bc.names.size(); ++i) bcs += " " + model.bc.names[i] + "=" + model::boundaryTypeName(model.bc.types[i]);
+  PetscCall(PetscPrintf(comm, "  boundaries:%s\n", bcs.c_str()));
+  for (const std::string &w : model.bc.warnings) PetscCall(PetscPrintf(comm, "  warning: %s\n", w.c_str()));
+  if (model.bc.input_wave != "none")
+    PetscCall(PetscPrintf(comm, "  input: %s wave through '%s', %s\n", model.bc.input_wave.c_str(), model.bc.input_boundary.c_str(), model.bc.input.describe().c_str()));
+  if (model.damping_ratio > 0)
+    PetscCall(PetscPrintf(comm, "  Rayleigh damping %.3g %% at %g and %g Hz: alpha %.4g 1/s, beta %.4g s\n", 100 * model.damping_ratio, model.damping_f1, model.damping_f2,
+                          model.rayleigh.alpha, model.rayleigh.beta));
+  if (model.rayleigh.beta > 0)
+    PetscCall(PetscPrintf(comm, "    its stiffness-proportional part lowers the stable step from %.4e s (undamped) to %.4e s (-%.1f %%)\n", limit.dt_without_stiffness_damping,
+                          limit.dt_bulk, 100 * (1 - limit.dt_bulk / limit.dt_without_stiffness_damping)));
+  for (const std::string &line : model::AttenuationReport(model.attenuation, model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+  PetscCall(reportInterfaces(model));
+  for (const std::string &line : stations.ambiguities()) PetscCall(PetscPrintf(comm, "  %s\n", line.c_str()));
+  PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", limit.dt_limit, limit.governing.c_str(), limit.dt_cfl));
+  if (limit.dt_limit < limit.dt_without_interfaces * (1 - 1e-12))
+    PetscCall(PetscPrintf(comm, "  warning: the interface penalty lowers the stable step from %.4e s (bulk alone) to %.4e s (-%.1f %%)\n", limit.dt_without_interfaces,
+                          limit.dt_limit, 100 * (1 - limit.dt_limit / limit.dt_without_interfaces)));
+  PetscCall(PetscPrintf(comm, "  time step %.4e s = %.3f of the limit; %.0f steps to t = %g s\n", (double)dt, dt / limit.dt_limit, std::ceil(max_time / dt), (double)max_time));
+  PetscCall(PetscPrintf(comm, "  output: %s/\n", output_dir.c_str()));
+  PetscCall(reportCost(model, std::ceil(max_time / dt)));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ReportEnd(const model::Elastodynamics &model, const model::EnergyLedger &ledger, bool with_stations, PetscInt steps, double wall,
+                         const std::string &output_dir) {
+  MPI_Comm comm = model.comm;
+  PetscFunctionBeginUser;
+  for (const auto &iface : model.interfaces) {
+    interface::InterfaceTotals t;
+    PetscCall(iface.Totals(&t));
+    PetscCall(PetscPrintf(comm, "interface %s: %" PetscInt_FMT " stick, %" PetscInt_FMT " slip, %" PetscInt_FMT " open at the end; dissipated %.4g J; largest yield-surface drift corrected %.3g Pa\n",
+                          iface.spec().name.c_str(), t.n_stick, t.n_slip, t.n_open, t.dissipated, t.max_drift));
+  }
+  if (!model.interfaces.empty()) PetscCall(PetscPrintf(comm, "contact dashpots (all interfaces): took %.4g J\n", ledger.contact_damped));
+  PetscCall(PetscPrintf(comm, "done: %" PetscInt_FMT " steps in %.2f s wall (%.3g s per step); energy balance error %.2e of the largest energy\n", steps, wall,
+                        wall / std::max<PetscInt>(steps, 1), ledger.relativeError()));
+  PetscCall(PetscPrintf(comm, "output in %s/: volume.xmf%s (open in ParaView), energy.csv%s\n", output_dir.c_str(), model.interfaces.empty() ? "" : ", interface_<name>.xmf",
+                        with_stations ? ", stations/*.csv, stations.h5" : ""));
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::app
