@@ -16,7 +16,7 @@ namespace {
 PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, std::vector<std::string> *names, std::vector<double> *coords) {
   PetscFunctionBeginUser;
   std::ifstream in(file);
-  PetscCheck(in.good(), comm, PETSC_ERR_FILE_OPEN, "-stations_file = %s: cannot open the file; allowed: a CSV file with rows name,x,y%s", file, dim == 3 ? ",z" : "");
+  PetscCheck(in.good(), comm, PETSC_ERR_FILE_OPEN, "-station_file = %s: cannot open the file; allowed: a CSV file with rows name,x,y%s", file, dim == 3 ? ",z" : "");
   std::string line;
   int         lineno = 0;
   while (std::getline(in, line)) {
@@ -27,13 +27,13 @@ PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, st
     std::vector<std::string> cells;
     while (std::getline(ss, cell, ',')) cells.push_back(cell);
     if (lineno == 1 && cells.size() > 1 && cells[1].find_first_of("0123456789") == std::string::npos) continue; // header
-    PetscCheck((PetscInt)cells.size() == dim + 1, comm, PETSC_ERR_USER_INPUT, "-stations_file = %s, line %d: %zu columns; allowed: name,x,y%s", file, lineno,
+    PetscCheck((PetscInt)cells.size() == dim + 1, comm, PETSC_ERR_USER_INPUT, "-station_file = %s, line %d: %zu columns; allowed: name,x,y%s", file, lineno,
                cells.size(), dim == 3 ? ",z" : "");
     names->push_back(cells[0]);
     for (PetscInt d = 0; d < dim; ++d) {
       char        *end;
       const double x = std::strtod(cells[1 + d].c_str(), &end);
-      PetscCheck(end != cells[1 + d].c_str(), comm, PETSC_ERR_USER_INPUT, "-stations_file = %s, line %d: '%s' is not a number", file, lineno, cells[1 + d].c_str());
+      PetscCheck(end != cells[1 + d].c_str(), comm, PETSC_ERR_USER_INPUT, "-station_file = %s, line %d: '%s' is not a number", file, lineno, cells[1 + d].c_str());
       coords->push_back(x);
     }
   }
@@ -53,7 +53,7 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const mesh:
   PetscFunctionBeginUser;
   dim_ = bulk.dimension();
   PetscOptionsBegin(comm, "", "Stations (time series at points)", "slipwave");
-  PetscCall(PetscOptionsString("-stations_file", "CSV file with rows name,x,y[,z] [m]", "Stations::Setup", file, file, sizeof file, &has_file));
+  PetscCall(PetscOptionsString("-station_file", "CSV file with rows name,x,y[,z] [m]", "Stations::Setup", file, file, sizeof file, &has_file));
   PetscCall(PetscOptionsRealArray("-station_coordinates", "x1,y1[,z1],x2,y2[,z2],... [m]", "Stations::Setup", xs, &nx, &has_coords));
   PetscCall(PetscOptionsString("-station_names", "comma-separated names for -station_coordinates (default S1, S2, ...)", "Stations::Setup", names, names, sizeof names,
                                nullptr));
