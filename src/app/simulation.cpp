@@ -350,8 +350,8 @@ PetscErrorCode report(Run *r, TS ts) {
   for (size_t i = 0; i < r->model.bc.names.size(); ++i) bcs += " " + r->model.bc.names[i] + "=" + model::boundaryTypeName(r->model.bc.types[i]);
   PetscCall(PetscPrintf(comm, "  boundaries:%s\n", bcs.c_str()));
   for (const std::string &w : r->model.bc.warnings) PetscCall(PetscPrintf(comm, "  warning: %s\n", w.c_str()));
-  if (r->model.bc.input_wave != "none")
-    PetscCall(PetscPrintf(comm, "  input: %s wave through '%s', %s\n", r->model.bc.input_wave.c_str(), r->model.bc.input_boundary.c_str(),
+  if (r->model.bc.input_wave != model::InputWave::None)
+    PetscCall(PetscPrintf(comm, "  input: %s wave through '%s', %s\n", model::inputWaveName(r->model.bc.input_wave), r->model.bc.input_boundary.c_str(),
                           r->model.bc.input.describe().c_str()));
   if (r->model.damping_ratio > 0)
     PetscCall(PetscPrintf(comm, "  Rayleigh damping %.3g %% at %g and %g Hz: alpha %.4g 1/s, beta %.4g s\n", 100 * r->model.damping_ratio, r->model.damping_f1,

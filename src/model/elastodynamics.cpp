@@ -241,7 +241,7 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   }
 
   PetscCall(PetscLogEventBegin(app::event_boundary, 0, 0, 0, 0));
-  const double v_in = m->input_enabled && m->bc.input.active() && m->bc.input_wave != "none" ? m->bc.input.velocity(t) : 0.0;
+  const double v_in = m->input_enabled && m->bc.input.active() && m->bc.input_wave != InputWave::None ? m->bc.input.velocity(t) : 0.0;
   PetscCall(VecAXPBY(m->f_input, v_in, 0.0, m->bc.input_force));
   PetscCall(VecWAXPY(m->f_external, 1.0, m->bc.constant_force, m->f_input));
   if (m->free_field) {
