@@ -21,9 +21,9 @@ PetscErrorCode readDamping(Elastodynamics *m) {
   PetscBool set;
   PetscFunctionBeginUser;
   PetscOptionsBegin(m->comm, "damping_", "Rayleigh damping", "slipwave");
-  PetscCall(PetscOptionsReal("-ratio", "damping ratio xi [-] reached at both frequencies (0: undamped)", "ElastodynamicsCreate", m->damping_ratio, &m->damping_ratio,
+  PetscCall(PetscOptionsReal("-ratio", "damping ratio xi [-] reached at both frequencies, 0 <= xi < 1 (0: undamped)", "ElastodynamicsCreate", m->damping_ratio, &m->damping_ratio,
                              nullptr));
-  PetscCall(PetscOptionsRealArray("-frequencies", "the two frequencies f1,f2 [Hz] where the ratio is exact", "ElastodynamicsCreate", freqs, &n, &set));
+  PetscCall(PetscOptionsRealArray("-frequencies", "the two frequencies f1,f2 [Hz] where the ratio is exact, 0 < f1 < f2", "ElastodynamicsCreate", freqs, &n, &set));
   PetscOptionsEnd();
   PetscCheck(!set || n == 2, m->comm, PETSC_ERR_USER_INPUT, "-damping_frequencies has %" PetscInt_FMT " values; allowed: two frequencies f1,f2 [Hz]", n);
   m->damping_f1 = freqs[0];
