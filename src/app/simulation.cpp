@@ -62,16 +62,16 @@ PetscErrorCode readRunOptions(MPI_Comm comm, RunOptions *o) {
   PetscOptionsBegin(comm, "", "Run control and output", "slipwave");
   PetscCall(PetscOptionsString("-output_dir", "directory for volume.xmf/h5, stations, energy.csv", "SimulationRun", o->output_dir, o->output_dir, sizeof o->output_dir,
                                nullptr));
-  PetscCall(PetscOptionsReal("-output_interval", "time between field outputs [s] (default: 50 frames over -ts_max_time)", "SimulationRun", o->output_interval,
+  PetscCall(PetscOptionsReal("-output_interval", "time between field outputs [s], > 0 (default: 50 frames over -ts_max_time)", "SimulationRun", o->output_interval,
                              &o->output_interval, nullptr));
   PetscCall(PetscOptionsBool("-output_fields", "write volume fields (HDF5 + XDMF)", "SimulationRun", o->fields, &o->fields, nullptr));
-  PetscCall(PetscOptionsReal("-progress_interval", "wall-clock seconds between progress lines (0: every step)", "SimulationRun", o->progress_interval,
+  PetscCall(PetscOptionsReal("-progress_interval", "wall-clock time between progress lines [s], >= 0 (0: every step)", "SimulationRun", o->progress_interval,
                              &o->progress_interval, nullptr));
-  PetscCall(PetscOptionsReal("-energy_growth_limit", "stop when kinetic+strain energy exceeds this multiple of the energy put in (divergence guard)", "SimulationRun",
+  PetscCall(PetscOptionsReal("-energy_growth_limit", "stop when kinetic+strain energy exceeds this multiple of the energy put in [-], > 0 (divergence guard)", "SimulationRun",
                              o->energy_growth_limit, &o->energy_growth_limit, nullptr));
   PetscCall(PetscOptionsBool("-dry_run", "print the setup report (stable step, what governs it, points per wavelength) and stop", "SimulationRun", o->dry_run,
                              &o->dry_run, nullptr));
-  PetscCall(PetscOptionsInt("-checkpoint_interval", "write the full state to OUTPUT_DIR/checkpoint.bin every N steps (0: never)", "SimulationRun",
+  PetscCall(PetscOptionsInt("-checkpoint_interval", "write the full state to OUTPUT_DIR/checkpoint.bin every N steps [steps], >= 0 (0: never)", "SimulationRun",
                             o->checkpoint_interval, &o->checkpoint_interval, nullptr));
   PetscCall(PetscOptionsString("-restart", "continue from this checkpoint file (same scene options and number of ranks)", "SimulationRun", o->restart, o->restart,
                                sizeof o->restart, nullptr));

@@ -66,7 +66,7 @@ PetscErrorCode run(MPI_Comm comm) {
   PetscCall(PetscOptionsString("-output", "Result CSV (default: standard output)", "slipwave-law", output, output,
                                sizeof output, &has_output));
   PetscOptionsEnd();
-  PetscCall(interface::InterfaceOptionsRead(comm, "interface_", &options));
+  PetscCall(interface::InterfaceOptionsRead(comm, "interface_", interface::InterfaceUse::LawAlone, &options));
   PetscCall(core::OptionsErrorIfUnused(comm));
   PetscCall(PetscOptionsHasHelp(nullptr, &help_requested));
   if (help_requested) PetscFunctionReturn(0);

@@ -2,6 +2,7 @@
 #include <petscsys.h>
 
 #include "slipwave/core/errors.hpp"
+#include "slipwave/core/options_check.hpp"
 #include "slipwave/app/simulation.hpp"
 
 static const char help[] = "slipwave: explicit elastodynamics on PETSc for seismic soil-structure interaction.\n"
@@ -11,6 +12,7 @@ int main(int argc, char **argv) {
   PetscErrorCode ierr = PetscInitialize(&argc, &argv, nullptr, help);
   if (ierr) return 1;
   ierr = slipwave::core::ErrorsPushUserInputHandler("slipwave");
+  if (!ierr) ierr = slipwave::core::OptionsApplyRenames(PETSC_COMM_WORLD);
   if (!ierr) ierr = slipwave::app::SimulationRun(PETSC_COMM_WORLD);
   const PetscErrorCode fin = PetscFinalize();
   return (ierr || fin) ? 1 : 0;

@@ -16,7 +16,32 @@ bool readAtExit(const char *name) {
   return false;
 }
 
+// Options renamed for the consistent prefix scheme (see README.md, Options): the old name is
+// accepted, and reported, until the next release.
+struct RenamedOption {
+  const char *old_name, *new_name;
+};
+const RenamedOption kRenamed[] = {{"-stations_file", "-station_file"}};
+
 } // namespace
+
+PetscErrorCode OptionsApplyRenames(MPI_Comm comm) {
+  PetscFunctionBeginUser;
+  for (const RenamedOption &r : kRenamed) {
+    const char *old_value = nullptr, *new_value = nullptr;
+    PetscBool   old_set = PETSC_FALSE, new_set = PETSC_FALSE;
+    PetscCall(PetscOptionsFindPair(nullptr, nullptr, r.old_name, &old_value, &old_set));
+    if (!old_set) continue;
+    PetscCall(PetscOptionsFindPair(nullptr, nullptr, r.new_name, &new_value, &new_set));
+    PetscCheck(!new_set, comm, PETSC_ERR_USER_INPUT, "%s and %s are both given (%s is the old name of %s); allowed: only %s", r.old_name, r.new_name, r.old_name,
+               r.new_name, r.new_name);
+    const std::string value = old_value ? old_value : "";
+    PetscCall(PetscOptionsSetValue(nullptr, r.new_name, old_value ? value.c_str() : nullptr));
+    PetscCall(PetscOptionsClearValue(nullptr, r.old_name));
+    PetscCall(PetscPrintf(comm, "%s is renamed %s; the old name is accepted until the next release\n", r.old_name, r.new_name));
+  }
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode OptionsErrorIfUnused(MPI_Comm comm) {
   PetscInt n = 0;

@@ -40,7 +40,7 @@ PetscErrorCode readStiffness(PetscOptionItems *PetscOptionsObject, MPI_Comm comm
 
 } // namespace
 
-PetscErrorCode InterfaceOptionsRead(MPI_Comm comm, const char *prefix, InterfaceOptions *options) {
+PetscErrorCode InterfaceOptionsRead(MPI_Comm comm, const char *prefix, InterfaceUse use, InterfaceOptions *options) {
   const char *pre = prefix ? prefix : kDefaultPrefix;
   InterfaceOptions o;
   PetscReal phi_deg = 30.0, psi_deg = 0.0, c = 0.0, e_ini = 0.0, sigma_t = 0.0, sigma_N0 = 0.0;
@@ -60,6 +60,13 @@ PetscErrorCode InterfaceOptionsRead(MPI_Comm comm, const char *prefix, Interface
                              "InterfaceOptionsRead", sigma_t, &sigma_t, nullptr));
   PetscCall(PetscOptionsReal("-sigma_N0", "Initial normal traction [Pa], tension positive (compression < 0)",
                              "InterfaceOptionsRead", sigma_N0, &sigma_N0, nullptr));
+  if (use == InterfaceUse::Mesh) {
+    PetscCall(PetscOptionsReal("-penalty_factor", "E, G given as auto: factor x (lambda+2mu)/h and factor x mu/h of the softer side [-], > 0", "InterfaceOptionsRead",
+                               o.penalty_factor, &o.penalty_factor, nullptr));
+    PetscCall(PetscOptionsReal("-contact_damping",
+                               "normal dashpot of closed pairs, fraction of the critical damping of the pair's penalty spring between its two nodal masses [-], 0..1",
+                               "InterfaceOptionsRead", o.contact_damping, &o.contact_damping, nullptr));
+  }
   PetscOptionsEnd();
 
   o.params.phi = phi_deg * kRadPerDeg;
@@ -69,6 +76,9 @@ PetscErrorCode InterfaceOptionsRead(MPI_Comm comm, const char *prefix, Interface
   o.params.tensile_strength = sigma_t;
   o.sigma_N0 = sigma_N0;
   PetscCall(InterfaceOptionsCheck(comm, pre, o));
+  PetscCheck(o.penalty_factor > 0, comm, PETSC_ERR_USER_INPUT, "-%spenalty_factor = %g; allowed: > 0", pre, o.penalty_factor);
+  PetscCheck(o.contact_damping >= 0 && o.contact_damping <= 1, comm, PETSC_ERR_USER_INPUT, "-%scontact_damping = %g; allowed: 0 <= ratio <= 1 (fraction of critical)", pre,
+             o.contact_damping);
   *options = o;
   PetscFunctionReturn(0);
 }

@@ -9,14 +9,17 @@
 #include <sstream>
 
 #include "slipwave/core/log_events.hpp"
+#include "slipwave/core/option_choice.hpp"
 
 namespace slipwave::io {
 namespace {
 
+constexpr PetscInt kMaxListedStations = 100; // by -station_coordinates / -station_names
+
 PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, std::vector<std::string> *names, std::vector<double> *coords) {
   PetscFunctionBeginUser;
   std::ifstream in(file);
-  PetscCheck(in.good(), comm, PETSC_ERR_FILE_OPEN, "-stations_file = %s: cannot open the file; allowed: a CSV file with rows name,x,y%s", file, dim == 3 ? ",z" : "");
+  PetscCheck(in.good(), comm, PETSC_ERR_FILE_OPEN, "-station_file = %s: cannot open the file; allowed: a CSV file with rows name,x,y%s", file, dim == 3 ? ",z" : "");
   std::string line;
   int         lineno = 0;
   while (std::getline(in, line)) {
@@ -27,13 +30,13 @@ PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, st
     std::vector<std::string> cells;
     while (std::getline(ss, cell, ',')) cells.push_back(cell);
     if (lineno == 1 && cells.size() > 1 && cells[1].find_first_of("0123456789") == std::string::npos) continue; // header
-    PetscCheck((PetscInt)cells.size() == dim + 1, comm, PETSC_ERR_USER_INPUT, "-stations_file = %s, line %d: %zu columns; allowed: name,x,y%s", file, lineno,
+    PetscCheck((PetscInt)cells.size() == dim + 1, comm, PETSC_ERR_USER_INPUT, "-station_file = %s, line %d: %zu columns; allowed: name,x,y%s", file, lineno,
                cells.size(), dim == 3 ? ",z" : "");
     names->push_back(cells[0]);
     for (PetscInt d = 0; d < dim; ++d) {
       char        *end;
       const double x = std::strtod(cells[1 + d].c_str(), &end);
-      PetscCheck(end != cells[1 + d].c_str(), comm, PETSC_ERR_USER_INPUT, "-stations_file = %s, line %d: '%s' is not a number", file, lineno, cells[1 + d].c_str());
+      PetscCheck(end != cells[1 + d].c_str(), comm, PETSC_ERR_USER_INPUT, "-station_file = %s, line %d: '%s' is not a number", file, lineno, cells[1 + d].c_str());
       coords->push_back(x);
     }
   }
@@ -44,36 +47,33 @@ PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, st
 
 PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const mesh::MeshDescription &mesh) {
   MPI_Comm  comm = PetscObjectComm((PetscObject)dm);
-  const char *sides[] = {"structure", "soil"};
-  char        side_name[64] = "structure";
-  char      file[PETSC_MAX_PATH_LEN] = "", names[4096] = "";
-  PetscReal xs[300] = {};  // -help prints xs[0] as the default
-  PetscInt  nx = 300;
+  const char *const sides[] = {"structure", "soil"};
+  PetscInt          side = 0; // index in sides[]
+  char      file[PETSC_MAX_PATH_LEN] = "";
+  PetscReal xs[3 * kMaxListedStations] = {}; // -help prints xs[0] as the default
+  PetscInt  nx = 3 * kMaxListedStations;
+  char     *listed_names[kMaxListedStations];
+  PetscInt  nnames = kMaxListedStations;
   PetscBool has_file, has_coords;
   PetscFunctionBeginUser;
   dim_ = bulk.dimension();
   PetscOptionsBegin(comm, "", "Stations (time series at points)", "slipwave");
-  PetscCall(PetscOptionsString("-stations_file", "CSV file with rows name,x,y[,z] [m]", "Stations::Setup", file, file, sizeof file, &has_file));
+  PetscCall(PetscOptionsString("-station_file", "CSV file with rows name,x,y[,z] [m]", "Stations::Setup", file, file, sizeof file, &has_file));
   PetscCall(PetscOptionsRealArray("-station_coordinates", "x1,y1[,z1],x2,y2[,z2],... [m]", "Stations::Setup", xs, &nx, &has_coords));
-  PetscCall(PetscOptionsString("-station_names", "comma-separated names for -station_coordinates (default S1, S2, ...)", "Stations::Setup", names, names, sizeof names,
-                               nullptr));
-  PetscCall(PetscOptionsString("-station_side", "side recorded by a station on an interface (split nodes): structure or soil", "Stations::Setup", side_name, side_name,
-                               sizeof side_name, nullptr));
+  PetscCall(PetscOptionsStringArray("-station_names", "comma-separated names for -station_coordinates (default S1, S2, ...)", "Stations::Setup", listed_names, &nnames,
+                                    nullptr));
+  PetscCall(core::OptionsChoice(PetscOptionsObject, "-station_side", "side recorded by a station on an interface (split nodes): structure or soil", sides, 2, &side,
+                                nullptr));
   PetscOptionsEnd();
-  // A string, not an EList: an unknown value then stops with one line, not PETSc's traceback.
-  PetscCheck(!std::strcmp(side_name, sides[0]) || !std::strcmp(side_name, sides[1]), comm, PETSC_ERR_USER_INPUT, "-station_side = %s; allowed: structure, soil", side_name);
-  const int side = std::strcmp(side_name, sides[0]) ? 1 : 0;
   if (has_file) PetscCall(readStationFile(comm, file, dim_, &names_, &coords_));
   if (has_coords) {
     PetscCheck(nx % dim_ == 0, comm, PETSC_ERR_USER_INPUT, "-station_coordinates has %" PetscInt_FMT " values; allowed: a multiple of %" PetscInt_FMT, nx, dim_);
-    std::stringstream ss(names);
     for (PetscInt s = 0; s < nx / dim_; ++s) {
-      std::string name;
-      if (!std::getline(ss, name, ',') || name.empty()) name = "S" + std::to_string(names_.size() + 1);
-      names_.push_back(name);
+      names_.push_back(s < nnames && listed_names[s][0] ? std::string(listed_names[s]) : "S" + std::to_string(names_.size() + 1));
       for (PetscInt d = 0; d < dim_; ++d) coords_.push_back(xs[s * dim_ + d]);
     }
   }
+  for (PetscInt k = 0; k < nnames; ++k) PetscCall(PetscFree(listed_names[k]));
   PetscMPIInt rank, size;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCallMPI(MPI_Comm_size(comm, &size));

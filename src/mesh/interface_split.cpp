@@ -53,240 +53,312 @@ std::string joinNames(const std::vector<std::string> &names) {
   return s;
 }
 
-} // namespace
-
-PetscErrorCode InterfaceSplitSerialMesh(DM serial, const std::vector<std::string> &regions, const std::vector<std::string> &boundaries,
-                                        const std::vector<InterfaceSpec> &specs, DM *split) {
-  MPI_Comm    comm = PetscObjectComm((PetscObject)serial);
+// The serial mesh being split: its point ranges and region label (on rank 0; the other
+// ranks hold no points).
+struct SerialMesh {
+  DM          dm;
+  MPI_Comm    comm;
   PetscMPIInt rank;
   PetscInt    dim, cdim, c_start, c_end, v_start, v_end, f_start, f_end;
   DMLabel     region_label;
+};
+
+PetscErrorCode serialMeshGet(DM dm, SerialMesh *m) {
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(DMGetDimension(serial, &dim));
-  PetscCall(DMGetCoordinateDim(serial, &cdim));
-  PetscCall(DMPlexGetHeightStratum(serial, 0, &c_start, &c_end));
-  PetscCall(DMPlexGetDepthStratum(serial, 0, &v_start, &v_end));
-  PetscCall(DMPlexGetHeightStratum(serial, 1, &f_start, &f_end));
-  PetscCall(DMGetLabel(serial, kRegionLabel, &region_label));
+  m->dm   = dm;
+  m->comm = PetscObjectComm((PetscObject)dm);
+  PetscCallMPI(MPI_Comm_rank(m->comm, &m->rank));
+  PetscCall(DMGetDimension(dm, &m->dim));
+  PetscCall(DMGetCoordinateDim(dm, &m->cdim));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &m->c_start, &m->c_end));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &m->v_start, &m->v_end));
+  PetscCall(DMPlexGetHeightStratum(dm, 1, &m->f_start, &m->f_end));
+  PetscCall(DMGetLabel(dm, kRegionLabel, &m->region_label));
   {
     // Labels may exist only on rank 0 (the one holding the cells): decide there, for everyone.
     PetscInt depth, ok[2];
-    PetscCall(DMPlexGetDepth(serial, &depth));
-    ok[0] = region_label != nullptr, ok[1] = depth == dim;
-    PetscCallMPI(MPI_Bcast(ok, 2, MPIU_INT, 0, comm));
-    PetscCheck(ok[0], comm, PETSC_ERR_ARG_WRONG, "InterfaceSplitSerialMesh: the mesh has no '%s' label; label the regions first", kRegionLabel);
-    PetscCheck(ok[1], comm, PETSC_ERR_ARG_WRONG, "InterfaceSplitSerialMesh: the mesh is not interpolated (no faces); create it with interpolate = PETSC_TRUE");
+    PetscCall(DMPlexGetDepth(dm, &depth));
+    ok[0] = m->region_label != nullptr, ok[1] = depth == m->dim;
+    PetscCallMPI(MPI_Bcast(ok, 2, MPIU_INT, 0, m->comm));
+    PetscCheck(ok[0], m->comm, PETSC_ERR_ARG_WRONG, "InterfaceSplitSerialMesh: the mesh has no '%s' label; label the regions first", kRegionLabel);
+    PetscCheck(ok[1], m->comm, PETSC_ERR_ARG_WRONG, "InterfaceSplitSerialMesh: the mesh is not interpolated (no faces); create it with interpolate = PETSC_TRUE");
   }
-  {
-    // The split must see every cell: a mesh already spread over ranks would lose the faces
-    // between ranks (and PETSc's own split corrupts distributed meshes, see the notes).
-    PetscInt on_other_ranks = rank == 0 ? 0 : c_end - c_start;
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &on_other_ranks, 1, MPIU_INT, MPI_SUM, comm));
-    PetscCheck(on_other_ranks == 0, comm, PETSC_ERR_ARG_WRONG, "InterfaceSplitSerialMesh: %" PetscInt_FMT " cells on ranks other than 0; split the serial mesh before DMPlexDistribute",
-               on_other_ranks);
-  }
+  // The split must see every cell: a mesh already spread over ranks would lose the faces
+  // between ranks (and PETSc's own split corrupts distributed meshes, see the notes).
+  PetscInt on_other_ranks = m->rank == 0 ? 0 : m->c_end - m->c_start;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &on_other_ranks, 1, MPIU_INT, MPI_SUM, m->comm));
+  PetscCheck(on_other_ranks == 0, m->comm, PETSC_ERR_ARG_WRONG,
+             "InterfaceSplitSerialMesh: %" PetscInt_FMT " cells on ranks other than 0; split the serial mesh before DMPlexDistribute", on_other_ranks);
+  PetscFunctionReturn(0);
+}
 
-  const PetscInt        nspecs = (PetscInt)specs.size();
-  std::vector<PetscInt> soil_of(nspecs), structure_of(nspecs);
-  for (PetscInt s = 0; s < nspecs; ++s) {
-    const InterfaceSpec &sp = specs[s];
-    soil_of[s]              = regionIndex(regions, sp.soil_region);
-    structure_of[s]         = regionIndex(regions, sp.structure_region);
-    PetscCheck(soil_of[s] >= 0, comm, PETSC_ERR_USER_INPUT, "interface '%s': soil region '%s' is not a region of the mesh; allowed: %s", sp.name.c_str(),
-               sp.soil_region.c_str(), joinNames(regions).c_str());
-    PetscCheck(structure_of[s] >= 0, comm, PETSC_ERR_USER_INPUT, "interface '%s': structure region '%s' is not a region of the mesh; allowed: %s", sp.name.c_str(),
-               sp.structure_region.c_str(), joinNames(regions).c_str());
-    PetscCheck(soil_of[s] != structure_of[s], comm, PETSC_ERR_USER_INPUT, "interface '%s': soil and structure region are both '%s'; allowed: two different regions",
-               sp.name.c_str(), sp.soil_region.c_str());
-    for (PetscInt t = 0; t < s; ++t)
-      PetscCheck(specs[t].name != sp.name, comm, PETSC_ERR_USER_INPUT, "interface '%s' is defined twice; allowed: distinct interface names", sp.name.c_str());
-  }
-
-  // 1. The interface faces of each spec (soil cell on one side, structure cell on the other)
-  //    and the vertices they touch. spec_of[v]: the interface vertex v belongs to (-1: none).
-  const PetscInt                     nv_old = v_end - v_start;
-  std::vector<PetscInt>              spec_of(nv_old, -1);
-  std::vector<std::vector<PetscInt>> iface_faces(nspecs), iface_verts(nspecs); // old points
-  std::vector<PetscInt>              fverts;
-  for (PetscInt s = 0; s < nspecs; ++s) {
-    const InterfaceSpec &sp         = specs[s];
-    DMLabel              face_label = nullptr;
-    PetscInt             touching   = -1; // an earlier interface that shares a vertex with this one
-    if (!sp.face_label.empty()) {
-      PetscCall(DMGetLabel(serial, sp.face_label.c_str(), &face_label));
-      PetscInt exists = face_label != nullptr;
-      PetscCallMPI(MPI_Bcast(&exists, 1, MPIU_INT, 0, comm));
-      PetscCheck(exists, comm, PETSC_ERR_USER_INPUT, "interface '%s': face label '%s' does not exist in the mesh; allowed: a face group of the mesh (%s)", sp.name.c_str(),
-                 sp.face_label.c_str(), joinNames(boundaries).c_str());
-    }
-    for (PetscInt f = f_start; f < f_end; ++f) {
-      PetscInt nsupp;
-      PetscCall(DMPlexGetSupportSize(serial, f, &nsupp));
-      if (nsupp != 2) continue;
-      const PetscInt *supp;
-      PetscInt        r0, r1;
-      PetscCall(DMPlexGetSupport(serial, f, &supp));
-      PetscCall(DMLabelGetValue(region_label, supp[0], &r0));
-      PetscCall(DMLabelGetValue(region_label, supp[1], &r1));
-      const bool between = (r0 == soil_of[s] && r1 == structure_of[s]) || (r1 == soil_of[s] && r0 == structure_of[s]);
-      if (!between) continue;
-      if (face_label) {
-        PetscInt value;
-        PetscCall(DMLabelGetValue(face_label, f, &value));
-        if (value < 0) continue;
-      }
-      iface_faces[s].push_back(f);
-      PetscCall(closureVertices(serial, f, v_start, v_end, &fverts));
-      for (PetscInt v : fverts) {
-        PetscInt &owner = spec_of[v - v_start];
-        if (owner >= 0 && owner != s) {
-          if (touching < 0) touching = owner;
-          continue;
-        }
-        if (owner < 0) iface_verts[s].push_back(v);
-        owner = s;
-      }
-    }
-    // A vertex on two interfaces would need three copies and a rule for which cells get which.
-    PetscCallMPI(MPI_Bcast(&touching, 1, MPIU_INT, 0, comm));
-    PetscCheck(touching < 0, comm, PETSC_ERR_USER_INPUT, "interfaces '%s' and '%s' share a vertex; not supported yet: interfaces without a common vertex",
-               specs[touching].name.c_str(), sp.name.c_str());
-    // Only rank 0 holds cells: the verdict must reach every rank before anyone errors out.
-    PetscInt nfaces = (PetscInt)iface_faces[s].size();
-    PetscCallMPI(MPI_Bcast(&nfaces, 1, MPIU_INT, 0, comm));
-    PetscCheck(nfaces > 0, comm, PETSC_ERR_USER_INPUT, "interface '%s': regions '%s' (soil) and '%s' (structure) share no face%s%s%s; allowed: two regions that touch along faces",
-               sp.name.c_str(), sp.soil_region.c_str(), sp.structure_region.c_str(), sp.face_label.empty() ? "" : " within face label '", sp.face_label.c_str(),
-               sp.face_label.empty() ? "" : "'");
-    // Pair ids in the order of the original vertex numbers: deterministic for a given mesh.
-    std::sort(iface_verts[s].begin(), iface_verts[s].end());
-  }
-
-  // 2. New vertex numbers: the originals keep theirs (0..nv_old-1), the structure copies follow,
-  //    spec by spec in pair order. copy_of[v]: new number of the structure copy of v.
-  std::vector<PetscInt> copy_of(nv_old, -1);
-  PetscInt              nv_new = nv_old;
-  for (PetscInt s = 0; s < nspecs; ++s)
-    for (PetscInt v : iface_verts[s]) copy_of[v - v_start] = nv_new++;
-  // A vertex seen from a cell of region `region`: structure cells of its interface get the copy.
-  auto mapVertex = [&](PetscInt v, PetscInt region) -> PetscInt {
+// What the split does to the old mesh: which vertices are doubled and which cells get the copy.
+struct SplitPlan {
+  std::vector<PetscInt>              soil_of, structure_of;    // per spec: region indices
+  std::vector<PetscInt>              spec_of;                  // per old vertex: its interface (-1: none)
+  std::vector<std::vector<PetscInt>> iface_faces, iface_verts; // per spec: old points
+  std::vector<PetscInt>              copy_of;                  // per old vertex: new number of its structure copy (-1: none)
+  PetscInt                           nv_new = 0;
+  PetscInt                           v_start = 0;
+  // A vertex seen from a cell of `region`: structure cells of its interface get the copy.
+  PetscInt mapVertex(PetscInt v, PetscInt region) const {
     const PetscInt s = spec_of[v - v_start];
     return (s >= 0 && region == structure_of[s]) ? copy_of[v - v_start] : v - v_start;
-  };
-
-  // 3. Cell-vertex lists in the original closure order. DMPlexCreateFromCellList takes each
-  //    cell's vertices in the order its closure returns them (checked after the build below),
-  //    so the new cells have the orientation and vertex order of the old ones.
-  const PetscInt        ncells = c_end - c_start;
-  PetscInt              ncorners = 0;
-  std::vector<PetscInt> cells, cell_region(ncells), cverts;
-  for (PetscInt c = c_start; c < c_end; ++c) {
-    PetscInt region;
-    PetscCall(DMLabelGetValue(region_label, c, &region));
-    PetscCheck(region >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "InterfaceSplitSerialMesh: cell %" PetscInt_FMT " has no region", c);
-    cell_region[c - c_start] = region;
-    PetscCall(closureVertices(serial, c, v_start, v_end, &cverts));
-    if (c == c_start) ncorners = (PetscInt)cverts.size();
-    PetscCheck((PetscInt)cverts.size() == ncorners, PETSC_COMM_SELF, PETSC_ERR_SUP, "InterfaceSplitSerialMesh: cell %" PetscInt_FMT " has %zu vertices, cell %" PetscInt_FMT " has %" PetscInt_FMT "; one cell type per mesh",
-               c, cverts.size(), c_start, ncorners);
-    for (PetscInt v : cverts) cells.push_back(mapVertex(v, region));
   }
-  PetscCallMPI(MPI_Bcast(&ncorners, 1, MPIU_INT, 0, comm));
+};
 
-  // Coordinates: the copies sit exactly on their originals.
-  std::vector<PetscReal> xyz((size_t)nv_new * cdim);
-  {
-    VertexCoordinates coords;
-    PetscCall(coords.Open(serial));
-    for (PetscInt v = v_start; v < v_end; ++v) {
-      PetscReal *xv = &xyz[(size_t)(v - v_start) * cdim];
-      PetscCall(coords.Get(v, xv));
-      if (copy_of[v - v_start] >= 0) std::copy(xv, xv + cdim, &xyz[(size_t)copy_of[v - v_start] * cdim]);
+PetscErrorCode resolveSpecRegions(MPI_Comm comm, const std::vector<std::string> &regions, const std::vector<InterfaceSpec> &specs, SplitPlan *plan) {
+  const size_t nspecs = specs.size();
+  PetscFunctionBeginUser;
+  plan->soil_of.resize(nspecs);
+  plan->structure_of.resize(nspecs);
+  for (size_t s = 0; s < nspecs; ++s) {
+    const InterfaceSpec &sp = specs[s];
+    plan->soil_of[s]        = regionIndex(regions, sp.soil_region);
+    plan->structure_of[s]   = regionIndex(regions, sp.structure_region);
+    PetscCheck(plan->soil_of[s] >= 0, comm, PETSC_ERR_USER_INPUT, "interface '%s': soil region '%s' is not a region of the mesh; allowed: %s", sp.name.c_str(),
+               sp.soil_region.c_str(), joinNames(regions).c_str());
+    PetscCheck(plan->structure_of[s] >= 0, comm, PETSC_ERR_USER_INPUT, "interface '%s': structure region '%s' is not a region of the mesh; allowed: %s", sp.name.c_str(),
+               sp.structure_region.c_str(), joinNames(regions).c_str());
+    PetscCheck(plan->soil_of[s] != plan->structure_of[s], comm, PETSC_ERR_USER_INPUT,
+               "interface '%s': soil and structure region are both '%s'; allowed: two different regions", sp.name.c_str(), sp.soil_region.c_str());
+    for (size_t t = 0; t < s; ++t)
+      PetscCheck(specs[t].name != sp.name, comm, PETSC_ERR_USER_INPUT, "interface '%s' is defined twice; allowed: distinct interface names", sp.name.c_str());
+  }
+  PetscFunctionReturn(0);
+}
+
+// The faces of interface s (soil cell on one side, structure cell on the other, within its
+// face label if it has one) and the vertices they touch, in the order of the original vertex
+// numbers, so the pair ids are deterministic for a given mesh.
+PetscErrorCode findInterfaceFaces(const SerialMesh &m, const std::vector<std::string> &boundaries, const std::vector<InterfaceSpec> &specs, PetscInt s,
+                                  SplitPlan *plan) {
+  const InterfaceSpec  &sp         = specs[s];
+  DMLabel               face_label = nullptr;
+  PetscInt              touching   = -1; // an earlier interface that shares a vertex with this one
+  std::vector<PetscInt> fverts;
+  PetscFunctionBeginUser;
+  if (!sp.face_label.empty()) {
+    PetscCall(DMGetLabel(m.dm, sp.face_label.c_str(), &face_label));
+    PetscInt exists = face_label != nullptr;
+    PetscCallMPI(MPI_Bcast(&exists, 1, MPIU_INT, 0, m.comm));
+    PetscCheck(exists, m.comm, PETSC_ERR_USER_INPUT, "interface '%s': face label '%s' does not exist in the mesh; allowed: a face group of the mesh (%s)", sp.name.c_str(),
+               sp.face_label.c_str(), joinNames(boundaries).c_str());
+  }
+  for (PetscInt f = m.f_start; f < m.f_end; ++f) {
+    PetscInt nsupp;
+    PetscCall(DMPlexGetSupportSize(m.dm, f, &nsupp));
+    if (nsupp != 2) continue;
+    const PetscInt *supp;
+    PetscInt        r0, r1;
+    PetscCall(DMPlexGetSupport(m.dm, f, &supp));
+    PetscCall(DMLabelGetValue(m.region_label, supp[0], &r0));
+    PetscCall(DMLabelGetValue(m.region_label, supp[1], &r1));
+    const bool between = (r0 == plan->soil_of[s] && r1 == plan->structure_of[s]) || (r1 == plan->soil_of[s] && r0 == plan->structure_of[s]);
+    if (!between) continue;
+    if (face_label) {
+      PetscInt value;
+      PetscCall(DMLabelGetValue(face_label, f, &value));
+      if (value < 0) continue;
     }
-    PetscCall(coords.Close());
+    plan->iface_faces[s].push_back(f);
+    PetscCall(closureVertices(m.dm, f, m.v_start, m.v_end, &fverts));
+    for (PetscInt v : fverts) {
+      PetscInt &owner = plan->spec_of[v - m.v_start];
+      if (owner >= 0 && owner != s) {
+        if (touching < 0) touching = owner;
+        continue;
+      }
+      if (owner < 0) plan->iface_verts[s].push_back(v);
+      owner = s;
+    }
   }
+  // A vertex on two interfaces would need three copies and a rule for which cells get which.
+  PetscCallMPI(MPI_Bcast(&touching, 1, MPIU_INT, 0, m.comm));
+  PetscCheck(touching < 0, m.comm, PETSC_ERR_USER_INPUT, "interfaces '%s' and '%s' share a vertex; not supported yet: interfaces without a common vertex",
+             specs[touching].name.c_str(), sp.name.c_str());
+  // Only rank 0 holds cells: the verdict must reach every rank before anyone errors out.
+  PetscInt nfaces = (PetscInt)plan->iface_faces[s].size();
+  PetscCallMPI(MPI_Bcast(&nfaces, 1, MPIU_INT, 0, m.comm));
+  PetscCheck(nfaces > 0, m.comm, PETSC_ERR_USER_INPUT,
+             "interface '%s': regions '%s' (soil) and '%s' (structure) share no face%s%s%s; allowed: two regions that touch along faces", sp.name.c_str(),
+             sp.soil_region.c_str(), sp.structure_region.c_str(), sp.face_label.empty() ? "" : " within face label '", sp.face_label.c_str(),
+             sp.face_label.empty() ? "" : "'");
+  std::sort(plan->iface_verts[s].begin(), plan->iface_verts[s].end());
+  PetscFunctionReturn(0);
+}
 
-  DM dm;
-  PetscCall(DMPlexCreateFromCellListPetsc(comm, dim, rank == 0 ? ncells : 0, rank == 0 ? nv_new : 0, ncorners, PETSC_TRUE, rank == 0 ? cells.data() : nullptr, cdim,
-                                          rank == 0 ? xyz.data() : nullptr, &dm));
-  {
-    const char *name;
-    PetscCall(PetscObjectGetName((PetscObject)serial, &name));
-    PetscCall(PetscObjectSetName((PetscObject)dm, name));
-  }
+// 1. The interface faces and vertices of every spec; 2. new vertex numbers: the originals
+// keep theirs (0..nv_old-1), the structure copies follow, spec by spec in pair order.
+PetscErrorCode planSplit(const SerialMesh &m, const std::vector<std::string> &regions, const std::vector<std::string> &boundaries,
+                         const std::vector<InterfaceSpec> &specs, SplitPlan *plan) {
+  const PetscInt nspecs = (PetscInt)specs.size(), nv_old = m.v_end - m.v_start;
+  PetscFunctionBeginUser;
+  PetscCall(resolveSpecRegions(m.comm, regions, specs, plan));
+  plan->v_start = m.v_start;
+  plan->spec_of.assign(nv_old, -1);
+  plan->iface_faces.assign(nspecs, {});
+  plan->iface_verts.assign(nspecs, {});
+  for (PetscInt s = 0; s < nspecs; ++s) PetscCall(findInterfaceFaces(m, boundaries, specs, s, plan));
+  plan->copy_of.assign(nv_old, -1);
+  plan->nv_new = nv_old;
+  for (PetscInt s = 0; s < nspecs; ++s)
+    for (PetscInt v : plan->iface_verts[s]) plan->copy_of[v - m.v_start] = plan->nv_new++;
+  PetscFunctionReturn(0);
+}
 
-  PetscInt nc_start, nc_end, nv_start, nv_end, nf_start, nf_end;
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &nc_start, &nc_end));
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &nv_start, &nv_end));
-  PetscCall(DMPlexGetHeightStratum(dm, 1, &nf_start, &nf_end));
-  PetscCheck(nc_end - nc_start == (rank == 0 ? ncells : 0) && nv_end - nv_start == (rank == 0 ? nv_new : 0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
-             "InterfaceSplitSerialMesh: the rebuilt mesh has %" PetscInt_FMT " cells and %" PetscInt_FMT " vertices, expected %" PetscInt_FMT " and %" PetscInt_FMT, nc_end - nc_start,
-             nv_end - nv_start, ncells, nv_new);
-  // Everything below relies on PETSc keeping the cell and vertex numbers of the list (cell k
-  // = nc_start + k, vertex k = nv_start + k) and on the closure returning the vertices in the
-  // order given: check both, cheaply, instead of trusting them. (PETSc reproduces any order it
-  // is given, so this does not prove the cells valid: that follows from passing the closure
-  // order of the valid original cells; tests/unit/test_interface_split.cpp checks it with
-  // DMPlexCheck and cell-by-cell coordinates for quads, hexes, triangles and tets.)
-  for (PetscInt c = 0; c < (rank == 0 ? ncells : 0); ++c) {
-    PetscCall(closureVertices(dm, nc_start + c, nv_start, nv_end, &cverts));
-    bool same = (PetscInt)cverts.size() == ncorners;
-    for (PetscInt a = 0; a < ncorners && same; ++a) same = cverts[a] - nv_start == cells[c * ncorners + a];
-    PetscCheck(same, PETSC_COMM_SELF, PETSC_ERR_PLIB, "InterfaceSplitSerialMesh: cell %" PetscInt_FMT " of the rebuilt mesh lists its vertices in another order than the original cell",
-               c);
-  }
+// The split mesh as DMPlexCreateFromCellList takes it: cell-vertex lists in the original
+// closure order (so the new cells have the orientation and vertex order of the old ones) and
+// the vertex coordinates, the copies exactly on their originals.
+struct CellList {
+  PetscInt               ncells = 0, ncorners = 0;
+  std::vector<PetscInt>  cells, cell_region;
+  std::vector<PetscReal> xyz;
+};
 
-  // 4. Labels. Faces of the new mesh are found by their vertex sets.
-  std::vector<std::pair<FaceKey, PetscInt>> face_of;
-  for (PetscInt f = nf_start; f < nf_end; ++f) {
-    PetscCall(closureVertices(dm, f, nv_start, nv_end, &fverts));
-    for (PetscInt &v : fverts) v -= nv_start;
-    face_of.emplace_back(makeKey(fverts.data(), (PetscInt)fverts.size()), f);
+PetscErrorCode buildCellList(const SerialMesh &m, const SplitPlan &plan, CellList *list) {
+  std::vector<PetscInt> cverts;
+  PetscFunctionBeginUser;
+  list->ncells = m.c_end - m.c_start;
+  list->cell_region.resize(list->ncells);
+  for (PetscInt c = m.c_start; c < m.c_end; ++c) {
+    PetscInt region;
+    PetscCall(DMLabelGetValue(m.region_label, c, &region));
+    PetscCheck(region >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "InterfaceSplitSerialMesh: cell %" PetscInt_FMT " has no region", c);
+    list->cell_region[c - m.c_start] = region;
+    PetscCall(closureVertices(m.dm, c, m.v_start, m.v_end, &cverts));
+    if (c == m.c_start) list->ncorners = (PetscInt)cverts.size();
+    PetscCheck((PetscInt)cverts.size() == list->ncorners, PETSC_COMM_SELF, PETSC_ERR_SUP,
+               "InterfaceSplitSerialMesh: cell %" PetscInt_FMT " has %zu vertices, cell %" PetscInt_FMT " has %" PetscInt_FMT "; one cell type per mesh", c, cverts.size(),
+               m.c_start, list->ncorners);
+    for (PetscInt v : cverts) list->cells.push_back(plan.mapVertex(v, region));
   }
-  std::sort(face_of.begin(), face_of.end());
-  // The new face made of the old face f's vertices as seen from a cell of `region`.
-  auto newFace = [&](PetscInt f, PetscInt region, PetscInt *nf) -> PetscErrorCode {
+  PetscCallMPI(MPI_Bcast(&list->ncorners, 1, MPIU_INT, 0, m.comm));
+
+  list->xyz.resize((size_t)plan.nv_new * m.cdim);
+  // The copies sit exactly on their originals.
+  VertexCoordinates coords;
+  PetscCall(coords.Open(m.dm));
+  for (PetscInt v = m.v_start; v < m.v_end; ++v) {
+    PetscReal *xv = &list->xyz[(size_t)(v - m.v_start) * m.cdim];
+    PetscCall(coords.Get(v, xv));
+    if (plan.copy_of[v - m.v_start] >= 0) std::copy(xv, xv + m.cdim, &list->xyz[(size_t)plan.copy_of[v - m.v_start] * m.cdim]);
+  }
+  PetscCall(coords.Close());
+  PetscFunctionReturn(0);
+}
+
+// 3. The new mesh from the cell list, named as the old one. Everything after relies on PETSc
+// keeping the cell and vertex numbers of the list (cell k = first cell + k, vertex k = first
+// vertex + k) and on the closure returning the vertices in the order given: check both,
+// cheaply, instead of trusting them. (PETSc reproduces any order it is given, so this does
+// not prove the cells valid: that follows from passing the closure order of the valid
+// original cells; tests/unit/test_interface_split.cpp checks it with DMPlexCheck and
+// cell-by-cell coordinates for quads, hexes, triangles and tets.)
+PetscErrorCode rebuildMesh(const SerialMesh &m, const SplitPlan &plan, const CellList &list, DM *dm) {
+  const bool            root = m.rank == 0;
+  std::vector<PetscInt> cverts;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexCreateFromCellListPetsc(m.comm, m.dim, root ? list.ncells : 0, root ? plan.nv_new : 0, list.ncorners, PETSC_TRUE, root ? list.cells.data() : nullptr,
+                                          m.cdim, root ? list.xyz.data() : nullptr, dm));
+  const char *name;
+  PetscCall(PetscObjectGetName((PetscObject)m.dm, &name));
+  PetscCall(PetscObjectSetName((PetscObject)*dm, name));
+
+  PetscInt nc_start, nc_end, nv_start, nv_end;
+  PetscCall(DMPlexGetHeightStratum(*dm, 0, &nc_start, &nc_end));
+  PetscCall(DMPlexGetDepthStratum(*dm, 0, &nv_start, &nv_end));
+  PetscCheck(nc_end - nc_start == (root ? list.ncells : 0) && nv_end - nv_start == (root ? plan.nv_new : 0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "InterfaceSplitSerialMesh: the rebuilt mesh has %" PetscInt_FMT " cells and %" PetscInt_FMT " vertices, expected %" PetscInt_FMT " and %" PetscInt_FMT,
+             nc_end - nc_start, nv_end - nv_start, list.ncells, plan.nv_new);
+  for (PetscInt c = 0; c < (root ? list.ncells : 0); ++c) {
+    PetscCall(closureVertices(*dm, nc_start + c, nv_start, nv_end, &cverts));
+    bool same = (PetscInt)cverts.size() == list.ncorners;
+    for (PetscInt a = 0; a < list.ncorners && same; ++a) same = cverts[a] - nv_start == list.cells[c * list.ncorners + a];
+    PetscCheck(same, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "InterfaceSplitSerialMesh: cell %" PetscInt_FMT " of the rebuilt mesh lists its vertices in another order than the original cell", c);
+  }
+  PetscFunctionReturn(0);
+}
+
+// Finds the faces of the new mesh by their vertex sets.
+class NewFaceFinder {
+public:
+  PetscErrorCode Setup(DM dm) {
+    PetscInt              nv_start, nv_end, nf_start, nf_end;
+    std::vector<PetscInt> fverts;
     PetscFunctionBeginUser;
+    PetscCall(DMPlexGetDepthStratum(dm, 0, &nv_start, &nv_end));
+    PetscCall(DMPlexGetHeightStratum(dm, 1, &nf_start, &nf_end));
+    for (PetscInt f = nf_start; f < nf_end; ++f) {
+      PetscCall(closureVertices(dm, f, nv_start, nv_end, &fverts));
+      for (PetscInt &v : fverts) v -= nv_start;
+      face_of_.emplace_back(makeKey(fverts.data(), (PetscInt)fverts.size()), f);
+    }
+    std::sort(face_of_.begin(), face_of_.end());
+    PetscFunctionReturn(0);
+  }
+  // The new face made of the old face f's vertices as seen from a cell of `region`.
+  PetscErrorCode Find(const SerialMesh &m, const SplitPlan &plan, PetscInt f, PetscInt region, PetscInt *nf) const {
     std::vector<PetscInt> vs;
-    PetscCall(closureVertices(serial, f, v_start, v_end, &vs));
-    for (PetscInt &v : vs) v = mapVertex(v, region);
+    PetscFunctionBeginUser;
+    PetscCall(closureVertices(m.dm, f, m.v_start, m.v_end, &vs));
+    for (PetscInt &v : vs) v = plan.mapVertex(v, region);
     const FaceKey key = makeKey(vs.data(), (PetscInt)vs.size());
-    auto          it  = std::lower_bound(face_of.begin(), face_of.end(), std::make_pair(key, (PetscInt)-1));
-    PetscCheck(it != face_of.end() && it->first == key, PETSC_COMM_SELF, PETSC_ERR_PLIB, "InterfaceSplitSerialMesh: face %" PetscInt_FMT " has no counterpart in the rebuilt mesh", f);
+    auto          it  = std::lower_bound(face_of_.begin(), face_of_.end(), std::make_pair(key, (PetscInt)-1));
+    PetscCheck(it != face_of_.end() && it->first == key, PETSC_COMM_SELF, PETSC_ERR_PLIB, "InterfaceSplitSerialMesh: face %" PetscInt_FMT " has no counterpart in the rebuilt mesh",
+               f);
     *nf = it->second;
     PetscFunctionReturn(0);
-  };
+  }
 
-  DMLabel new_region;
+private:
+  std::vector<std::pair<FaceKey, PetscInt>> face_of_;
+};
+
+// 4a. The region label, and the boundary labels: each labelled face goes to the new face of
+// each of its cells, so a face split by an interface (say an interior Gmsh group along it) is
+// labelled on both sides.
+PetscErrorCode copyLabels(const SerialMesh &m, const SplitPlan &plan, const CellList &list, const NewFaceFinder &faces, const std::vector<std::string> &boundaries,
+                          DM dm) {
+  PetscInt nc_start, nc_end;
+  DMLabel  new_region;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &nc_start, &nc_end));
   PetscCall(DMCreateLabel(dm, kRegionLabel));
   PetscCall(DMGetLabel(dm, kRegionLabel, &new_region));
-  for (PetscInt c = 0; c < (rank == 0 ? ncells : 0); ++c) PetscCall(DMLabelSetValue(new_region, nc_start + c, cell_region[c]));
-
-  // Boundary labels: each labelled face goes to the new face of each of its cells, so a face
-  // split by an interface (say an interior Gmsh group along it) is labelled on both sides.
+  for (PetscInt c = 0; c < (m.rank == 0 ? list.ncells : 0); ++c) PetscCall(DMLabelSetValue(new_region, nc_start + c, list.cell_region[c]));
   for (const std::string &name : boundaries) {
     DMLabel old_label, new_label;
     PetscCall(DMCreateLabel(dm, name.c_str()));
     PetscCall(DMGetLabel(dm, name.c_str(), &new_label));
-    PetscCall(DMGetLabel(serial, name.c_str(), &old_label));
+    PetscCall(DMGetLabel(m.dm, name.c_str(), &old_label));
     if (!old_label) continue; // created empty on ranks that have no points, keep it that way
-    for (PetscInt f = f_start; f < f_end; ++f) {
+    for (PetscInt f = m.f_start; f < m.f_end; ++f) {
       PetscInt value;
       PetscCall(DMLabelGetValue(old_label, f, &value));
       if (value < 0) continue;
       PetscInt        nsupp;
       const PetscInt *supp;
-      PetscCall(DMPlexGetSupportSize(serial, f, &nsupp));
-      PetscCall(DMPlexGetSupport(serial, f, &supp));
+      PetscCall(DMPlexGetSupportSize(m.dm, f, &nsupp));
+      PetscCall(DMPlexGetSupport(m.dm, f, &supp));
       for (PetscInt k = 0; k < nsupp; ++k) {
         PetscInt nf = -1;
-        PetscCall(newFace(f, cell_region[supp[k] - c_start], &nf));
+        PetscCall(faces.Find(m, plan, f, list.cell_region[supp[k] - m.c_start], &nf));
         PetscCall(DMLabelSetValue(new_label, nf, value));
       }
     }
   }
+  PetscFunctionReturn(0);
+}
 
-  for (PetscInt s = 0; s < nspecs; ++s) {
+// 4b. Per interface: interface_<n>_pair (pair id on both vertices of a pair),
+// interface_<n>_side (0 soil, 1 structure) and interface_<n> (its soil-side faces).
+PetscErrorCode labelInterfaces(const SerialMesh &m, const SplitPlan &plan, const NewFaceFinder &faces, const std::vector<InterfaceSpec> &specs, DM dm) {
+  PetscInt nv_start, nv_end;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &nv_start, &nv_end));
+  for (size_t s = 0; s < specs.size(); ++s) {
     const std::string base = "interface_" + specs[s].name;
     DMLabel           pair_label, side_label, face_label;
     PetscCall(DMCreateLabel(dm, (base + "_pair").c_str()));
@@ -295,21 +367,41 @@ PetscErrorCode InterfaceSplitSerialMesh(DM serial, const std::vector<std::string
     PetscCall(DMGetLabel(dm, (base + "_pair").c_str(), &pair_label));
     PetscCall(DMGetLabel(dm, (base + "_side").c_str(), &side_label));
     PetscCall(DMGetLabel(dm, base.c_str(), &face_label));
-    for (size_t p = 0; p < iface_verts[s].size(); ++p) {
-      const PetscInt v     = iface_verts[s][p];
-      const PetscInt soil  = nv_start + (v - v_start);
-      const PetscInt strct = nv_start + copy_of[v - v_start];
+    for (size_t p = 0; p < plan.iface_verts[s].size(); ++p) {
+      const PetscInt v     = plan.iface_verts[s][p];
+      const PetscInt soil  = nv_start + (v - m.v_start);
+      const PetscInt strct = nv_start + plan.copy_of[v - m.v_start];
       PetscCall(DMLabelSetValue(pair_label, soil, (PetscInt)p));
       PetscCall(DMLabelSetValue(pair_label, strct, (PetscInt)p));
       PetscCall(DMLabelSetValue(side_label, soil, 0));
       PetscCall(DMLabelSetValue(side_label, strct, 1));
     }
-    for (PetscInt f : iface_faces[s]) {
+    for (PetscInt f : plan.iface_faces[s]) {
       PetscInt nf = -1;
-      PetscCall(newFace(f, soil_of[s], &nf));
+      PetscCall(faces.Find(m, plan, f, plan.soil_of[s], &nf));
       PetscCall(DMLabelSetValue(face_label, nf, 1));
     }
   }
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode InterfaceSplitSerialMesh(DM serial, const std::vector<std::string> &regions, const std::vector<std::string> &boundaries,
+                                        const std::vector<InterfaceSpec> &specs, DM *split) {
+  SerialMesh    m;
+  SplitPlan     plan;
+  CellList      list;
+  NewFaceFinder faces;
+  DM            dm;
+  PetscFunctionBeginUser;
+  PetscCall(serialMeshGet(serial, &m));
+  PetscCall(planSplit(m, regions, boundaries, specs, &plan));
+  PetscCall(buildCellList(m, plan, &list));
+  PetscCall(rebuildMesh(m, plan, list, &dm));
+  PetscCall(faces.Setup(dm));
+  PetscCall(copyLabels(m, plan, list, faces, boundaries, dm));
+  PetscCall(labelInterfaces(m, plan, faces, specs, dm));
   *split = dm;
   PetscFunctionReturn(0);
 }

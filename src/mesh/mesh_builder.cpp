@@ -1,4 +1,5 @@
 #include "slipwave/mesh/mesh_builder.hpp"
+#include "slipwave/mesh/mesh_options.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
 #include "slipwave/mesh/partition_metis.hpp"
 
@@ -9,14 +10,6 @@
 
 namespace slipwave::mesh {
 namespace {
-
-constexpr PetscInt kMaxRegions = 64;
-
-struct BoxSpec {
-  PetscInt  faces[3] = {40, 20, 10};
-  PetscReal lower[3] = {0, 0, 0};
-  PetscReal upper[3] = {100, 50, 25};
-};
 
 std::vector<std::string> splitNames(const char *list) {
   std::vector<std::string> out;
@@ -40,34 +33,14 @@ PetscErrorCode broadcastFromRoot(MPI_Comm comm, std::string *text) {
 }
 
 // Box meshes: each cell goes to the last listed region whose box holds its centroid; a region
-// given without a box takes every cell no other box claims.
-PetscErrorCode labelBoxRegions(MPI_Comm comm, DM dm, const std::vector<std::string> &regions, const BoxSpec &box) {
+// given without a box (bounds[r] empty) takes every cell no other box claims.
+PetscErrorCode labelBoxRegions(MPI_Comm comm, DM dm, const std::vector<std::string> &regions, const std::vector<std::vector<PetscReal>> &bounds, const BoxSpec &box) {
   PetscInt dim, c_start, c_end;
   PetscFunctionBeginUser;
   PetscCall(DMGetDimension(dm, &dim));
-  std::vector<std::vector<PetscReal>> bounds(regions.size());
-  PetscInt                            fill_region = -1;
-  for (size_t r = 0; r < regions.size(); ++r) {
-    char      opt[256];
-    PetscReal b[6];
-    PetscInt  n = 2 * dim;
-    PetscBool set;
-    std::snprintf(opt, sizeof opt, "-region_%s_box", regions[r].c_str());
-    PetscCall(PetscOptionsGetRealArray(nullptr, nullptr, opt, b, &n, &set));
-    if (set) {
-      PetscCheck(n == 2 * dim, comm, PETSC_ERR_USER_INPUT, "%s has %" PetscInt_FMT " values; allowed: %" PetscInt_FMT " values xmin,xmax,ymin,ymax%s", opt, n,
-                 2 * dim, dim == 3 ? ",zmin,zmax" : "");
-      for (PetscInt d = 0; d < dim; ++d)
-        PetscCheck(b[2 * d] < b[2 * d + 1], comm, PETSC_ERR_USER_INPUT, "%s: min %g >= max %g on axis %" PetscInt_FMT "; allowed: min < max", opt,
-                   (double)b[2 * d], (double)b[2 * d + 1], d);
-      bounds[r].assign(b, b + 2 * dim);
-    } else {
-      PetscCheck(fill_region < 0, comm, PETSC_ERR_USER_INPUT,
-                 "regions '%s' and '%s' both have no -region_<name>_box; allowed: at most one region without a box (it takes the remaining cells)",
-                 regions[fill_region].c_str(), regions[r].c_str());
-      fill_region = (PetscInt)r;
-    }
-  }
+  PetscInt fill_region = -1;
+  for (size_t r = 0; r < regions.size(); ++r)
+    if (bounds[r].empty()) fill_region = (PetscInt)r;
   PetscCall(DMCreateLabel(dm, kRegionLabel));
   DMLabel label;
   PetscCall(DMGetLabel(dm, kRegionLabel, &label));
@@ -153,25 +126,8 @@ PetscErrorCode labelBoxSides(DM dm, const BoxSpec &box, std::vector<std::string>
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode createBox(MPI_Comm comm, PetscInt dim, DM *dm, BoxSpec *box, std::string *source) {
-  PetscInt  n = dim;
-  PetscBool set;
+PetscErrorCode createBox(MPI_Comm comm, PetscInt dim, DM *dm, const BoxSpec *box, std::string *source) {
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, "mesh_box_", "Built-in box mesh (quadrilaterals in 2D, hexahedra in 3D)", "slipwave");
-  PetscCall(PetscOptionsIntArray("-faces", "number of cells along x,y[,z]", "MeshCreate", box->faces, &n, &set));
-  PetscCheck(!set || n == dim, comm, PETSC_ERR_USER_INPUT, "-mesh_box_faces has %" PetscInt_FMT " values; allowed: %" PetscInt_FMT " positive integers", n, dim);
-  n = dim;
-  PetscCall(PetscOptionsRealArray("-lower", "lower corner x,y[,z] [m]", "MeshCreate", box->lower, &n, &set));
-  PetscCheck(!set || n == dim, comm, PETSC_ERR_USER_INPUT, "-mesh_box_lower has %" PetscInt_FMT " values; allowed: %" PetscInt_FMT " coordinates", n, dim);
-  n = dim;
-  PetscCall(PetscOptionsRealArray("-upper", "upper corner x,y[,z] [m]", "MeshCreate", box->upper, &n, &set));
-  PetscCheck(!set || n == dim, comm, PETSC_ERR_USER_INPUT, "-mesh_box_upper has %" PetscInt_FMT " values; allowed: %" PetscInt_FMT " coordinates", n, dim);
-  PetscOptionsEnd();
-  for (PetscInt d = 0; d < dim; ++d) {
-    PetscCheck(box->faces[d] > 0, comm, PETSC_ERR_USER_INPUT, "-mesh_box_faces: %" PetscInt_FMT " cells on axis %" PetscInt_FMT "; allowed: >= 1", box->faces[d], d);
-    PetscCheck(box->upper[d] > box->lower[d], comm, PETSC_ERR_USER_INPUT, "-mesh_box_upper (%g) <= -mesh_box_lower (%g) on axis %" PetscInt_FMT "; allowed: upper > lower",
-               (double)box->upper[d], (double)box->lower[d], d);
-  }
   PetscCall(DMPlexCreateBoxMesh(comm, dim, PETSC_FALSE, box->faces, box->lower, box->upper, nullptr, PETSC_TRUE, dm));
   char buf[128];
   if (dim == 2) std::snprintf(buf, sizeof buf, "box %" PetscInt_FMT " x %" PetscInt_FMT " quadrilaterals", box->faces[0], box->faces[1]);
@@ -283,25 +239,20 @@ PetscErrorCode checkCellTypes(MPI_Comm comm, DM dm) {
   PetscFunctionReturn(0);
 }
 
-// -void_regions a,b: box regions whose cells are removed, so that a footing can rest on the
-// soil surface of a box mesh (the box would otherwise fill the space beside it). The rest is
+// -void_regions: box regions whose cells are removed, so that a footing can rest on the soil
+// surface of a box mesh (the box would otherwise fill the space beside it). The rest is
 // labelled again by the same rule; a void region needs no material.
-PetscErrorCode removeVoidRegions(MPI_Comm comm, DM *dm, std::vector<std::string> *regions, const BoxSpec &box) {
-  char list[1024] = "";
+PetscErrorCode removeVoidRegions(MPI_Comm comm, DM *dm, const std::vector<std::string> &voids, std::vector<std::string> *regions,
+                                 std::vector<std::vector<PetscReal>> *bounds, const BoxSpec &box) {
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, "", "Mesh and regions", "slipwave");
-  PetscCall(PetscOptionsString("-void_regions", "box regions (from -regions) whose cells are removed from the mesh, e.g. the space beside a footing", "MeshCreate",
-                               list, list, sizeof list, nullptr));
-  PetscOptionsEnd();
-  const std::vector<std::string> voids = splitNames(list);
   if (voids.empty()) PetscFunctionReturn(0);
-  std::vector<std::string> kept;
-  for (const std::string &r : *regions)
-    if (std::find(voids.begin(), voids.end(), r) == voids.end()) kept.push_back(r);
-  for (const std::string &v : voids)
-    PetscCheck(std::find(regions->begin(), regions->end(), v) != regions->end(), comm, PETSC_ERR_USER_INPUT,
-               "-void_regions names '%s', which is not in -regions; allowed: region names listed in -regions", v.c_str());
-  PetscCheck(!kept.empty(), comm, PETSC_ERR_USER_INPUT, "-void_regions removes every region; allowed: at least one region that is not void");
+  std::vector<std::string>            kept;
+  std::vector<std::vector<PetscReal>> kept_bounds;
+  for (size_t r = 0; r < regions->size(); ++r)
+    if (std::find(voids.begin(), voids.end(), (*regions)[r]) == voids.end()) {
+      kept.push_back((*regions)[r]);
+      kept_bounds.push_back((*bounds)[r]);
+    }
   DMLabel region_label, keep;
   PetscInt c_start, c_end;
   PetscCall(DMGetLabel(*dm, kRegionLabel, &region_label));
@@ -316,74 +267,35 @@ PetscErrorCode removeVoidRegions(MPI_Comm comm, DM *dm, std::vector<std::string>
   PetscCall(DMPlexFilter(*dm, keep, 1, &sub));
   PetscCall(DMLabelDestroy(&keep));
   PetscCall(DMDestroy(dm));
-  *dm = sub;
+  *dm     = sub;
   *regions = kept;
+  *bounds  = kept_bounds;
   PetscCall(DMRemoveLabel(*dm, kRegionLabel, nullptr));
-  PetscCall(labelBoxRegions(comm, *dm, *regions, box));
-  PetscFunctionReturn(0);
-}
-
-// -interfaces a,b with -interface_<name>_regions soil_region,structure_region and an
-// optional -interface_<name>_faces <face label> (Gmsh physical group).
-PetscErrorCode readInterfaceSpecs(MPI_Comm comm, const std::vector<std::string> &regions, std::vector<InterfaceSpec> *specs) {
-  char list[1024] = "";
-  PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, "", "Interfaces (split nodes)", "slipwave");
-  PetscCall(PetscOptionsString("-interfaces", "comma-separated names of soil-structure interfaces (each with -interface_<name>_regions)", "MeshCreate", list, list,
-                               sizeof list, nullptr));
-  PetscOptionsEnd();
-  for (const std::string &name : splitNames(list)) {
-    const std::string prefix = "interface_" + name + "_";
-    const std::string title  = "Interface " + name + " (geometry)";
-    char              pair[512] = "", faces[256] = "";
-    PetscBool         has_pair;
-    PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
-    PetscCall(PetscOptionsString("-regions", "soil_region,structure_region: the interface is every face between them", "MeshCreate", pair, pair, sizeof pair, &has_pair));
-    PetscCall(PetscOptionsString("-faces", "restrict the interface to the faces of this label (Gmsh physical group)", "MeshCreate", faces, faces, sizeof faces, nullptr));
-    PetscOptionsEnd();
-    const std::vector<std::string> two = splitNames(pair);
-    PetscCheck(has_pair && two.size() == 2, comm, PETSC_ERR_USER_INPUT, "-interface_%s_regions = '%s'; allowed: two region names soil_region,structure_region", name.c_str(),
-               pair);
-    for (const std::string &r : two)
-      PetscCheck(std::find(regions.begin(), regions.end(), r) != regions.end(), comm, PETSC_ERR_USER_INPUT,
-                 "-interface_%s_regions names '%s', which is not a region; allowed: names listed in -regions", name.c_str(), r.c_str());
-    PetscCheck(two[0] != two[1], comm, PETSC_ERR_USER_INPUT, "-interface_%s_regions = '%s'; allowed: two different regions", name.c_str(), pair);
-    specs->push_back(InterfaceSpec{name, two[0], two[1], faces});
-  }
+  PetscCall(labelBoxRegions(comm, *dm, *regions, *bounds, box));
   PetscFunctionReturn(0);
 }
 
 } // namespace
 
 PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
-  char      file[PETSC_MAX_PATH_LEN] = "";
-  char      region_list[1024]        = "soil";
-  PetscBool from_file;
-  BoxSpec   box;
+  MeshOptions o;
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, "", "Mesh and regions", "slipwave");
-  PetscCall(PetscOptionsString("-mesh_file", "Gmsh .msh file; without it a built-in box mesh is used", "MeshCreate", file, file, sizeof file, &from_file));
-  PetscCall(PetscOptionsRangeInt("-mesh_dim", "dimension of the built-in box mesh (2 = plane strain, 3)", "MeshCreate", desc->dim, &desc->dim, nullptr, 2, 3));
-  PetscCall(PetscOptionsString("-regions", "comma-separated region names (box: each with -region_<name>_box; Gmsh: physical group names)", "MeshCreate",
-                               region_list, region_list, sizeof region_list, nullptr));
-  PetscOptionsEnd();
-  desc->regions = splitNames(region_list);
-  PetscCheck(!desc->regions.empty() && (PetscInt)desc->regions.size() <= kMaxRegions, comm, PETSC_ERR_USER_INPUT,
-             "-regions = '%s'; allowed: 1 to %" PetscInt_FMT " comma-separated names", region_list, kMaxRegions);
+  PetscCall(MeshOptionsRead(comm, &desc->dim, &o));
+  desc->regions    = o.regions;
+  desc->interfaces = o.interfaces;
 
   DM serial;
-  if (from_file && file[0]) {
-    PetscCall(createFromGmsh(comm, file, &serial, desc->regions, &desc->boundaries));
+  if (!o.file.empty()) {
+    PetscCall(createFromGmsh(comm, o.file.c_str(), &serial, desc->regions, &desc->boundaries));
     PetscCall(DMGetDimension(serial, &desc->dim));
-    desc->source = file;
+    desc->source = o.file;
   } else {
-    PetscCall(createBox(comm, desc->dim, &serial, &box, &desc->source));
-    PetscCall(labelBoxRegions(comm, serial, desc->regions, box));
-    PetscCall(removeVoidRegions(comm, &serial, &desc->regions, box));
-    PetscCall(labelBoxSides(serial, box, &desc->boundaries));
+    PetscCall(createBox(comm, desc->dim, &serial, &o.box, &desc->source));
+    PetscCall(labelBoxRegions(comm, serial, desc->regions, o.region_boxes, o.box));
+    PetscCall(removeVoidRegions(comm, &serial, o.voids, &desc->regions, &o.region_boxes, o.box));
+    PetscCall(labelBoxSides(serial, o.box, &desc->boundaries));
   }
   PetscCall(checkCellTypes(comm, serial));
-  PetscCall(readInterfaceSpecs(comm, desc->regions, &desc->interfaces));
   if (!desc->interfaces.empty()) {
     DM split;
     PetscCall(InterfaceSplitSerialMesh(serial, desc->regions, desc->boundaries, desc->interfaces, &split));

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "slipwave/core/option_choice.hpp"
 #include "slipwave/model/boundary_faces.hpp"
 #include "slipwave/model/node_fields.hpp"
 #include "slipwave/physics/absorbing_boundary.hpp"
@@ -11,8 +12,10 @@
 namespace slipwave::model {
 namespace {
 
-const char *const kTypeNames[] = {"free", "fixed", "absorbing", "traction", "velocity", "freefield", "tied", "BoundaryType", "BC_", nullptr};
+// In the order of BoundaryType and InputWave.
+const char *const kTypeNames[] = {"free", "fixed", "absorbing", "traction", "velocity", "freefield", "tied"};
 constexpr int     kTypeCount   = 7;
+const char *const kWaveNames[] = {"none", "sv", "p"};
 
 // "x,y" -> {0,1}; an empty list means every component.
 PetscErrorCode parseComponents(MPI_Comm comm, const char *option, const char *list, PetscInt dim, std::vector<PetscInt> *components) {
@@ -64,68 +67,39 @@ PetscErrorCode addFaceLoad(PetscSection s, const BoundaryFace &f, PetscInt dim, 
   PetscFunctionReturn(0);
 }
 
-} // namespace
-
-const char *boundaryTypeName(BoundaryType t) { return kTypeNames[(int)t]; }
-
-PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &boundaries, const std::vector<RegionMaterialInfo> &materials, Vec mass,
-                                        BoundaryConditions *bc) {
-  MPI_Comm     comm = PetscObjectComm((PetscObject)dm);
-  PetscInt     dim;
-  PetscSection s, sb;
-  PetscFunctionBeginUser;
-  PetscCall(DMGetDimension(dm, &dim));
-  PetscCall(DMGetLocalSection(dm, &s));
-  PetscCall(NodeFieldCreateDM(dm, dim * dim, &bc->block_dm));
-  PetscCall(DMGetLocalSection(bc->block_dm, &sb));
-  PetscCall(DMCreateGlobalVector(bc->block_dm, &bc->absorbing_blocks));
-  PetscCall(DMCreateGlobalVector(dm, &bc->constant_force));
-  PetscCall(DMCreateGlobalVector(dm, &bc->input_force));
-  PetscCall(DMCreateGlobalVector(dm, &bc->free_mask));
-  PetscCall(VecZeroEntries(bc->absorbing_blocks));
-  PetscCall(VecZeroEntries(bc->constant_force));
-  PetscCall(VecZeroEntries(bc->input_force));
-
-  Vec constrained;
-  PetscCall(VecDuplicate(bc->free_mask, &constrained));
-  PetscCall(VecZeroEntries(constrained));
-  Vec          force_local, block_local, input_local;
-  PetscScalar *fa, *ba, *ia;
-  PetscCall(DMGetLocalVector(dm, &force_local));
-  PetscCall(DMGetLocalVector(dm, &input_local));
-  PetscCall(DMGetLocalVector(bc->block_dm, &block_local));
-  PetscCall(VecZeroEntries(force_local));
-  PetscCall(VecZeroEntries(input_local));
-  PetscCall(VecZeroEntries(block_local));
-
+// -gravity, -gravity_direction, -constrain_components and the incident wave (-input_*): the
+// "Loads and incident wave" block. Fills the load and input fields of bc; returns the
+// components held at every node.
+PetscErrorCode readLoadOptions(MPI_Comm comm, PetscInt dim, BoundaryConditions *bc, std::vector<PetscInt> *constrain_all) {
   PetscReal gravity_dir[3] = {0, 0, 0};
   PetscBool gravity_dir_set = PETSC_FALSE;
   gravity_dir[dim - 1]      = -1;
-  char      wave[16] = "none", input_boundary[256] = "bottom", component[8] = "", constrain_all[16] = "";
+  char      input_boundary[256] = "bottom", component[8] = "", constrain_list[16] = "";
+  PetscInt  wave = (PetscInt)InputWave::None;
   PetscBool input_component_set;
+  PetscFunctionBeginUser;
   PetscOptionsBegin(comm, "", "Loads and incident wave", "slipwave");
-  PetscCall(PetscOptionsReal("-gravity", "gravitational acceleration [m/s^2], along -gravity_direction", "BoundaryConditionsCreate", bc->gravity,
+  PetscCall(PetscOptionsReal("-gravity", "gravitational acceleration [m/s^2], >= 0, along -gravity_direction", "BoundaryConditionsCreate", bc->gravity,
                              &bc->gravity, nullptr));
   PetscInt ndir = dim;
   PetscCall(PetscOptionsRealArray("-gravity_direction", "direction of gravity gx,gy[,gz] (normalised; default: down the last axis; tilt it to model a slope)",
                                   "BoundaryConditionsCreate", gravity_dir, &ndir, &gravity_dir_set));
   PetscCall(PetscOptionsString("-constrain_components", "components fixed at every node, e.g. y for a 1D shear column (x,y,z)", "BoundaryConditionsCreate",
-                               constrain_all, constrain_all, sizeof constrain_all, nullptr));
-  PetscCall(PetscOptionsString("-input_wave", "vertically incident plane wave entering through an absorbing boundary: none, sv, p", "BoundaryConditionsCreate", wave,
-                               wave, sizeof wave, nullptr));
+                               constrain_list, constrain_list, sizeof constrain_list, nullptr));
+  PetscCall(core::OptionsChoice(PetscOptionsObject, "-input_wave", "vertically incident plane wave entering through an absorbing boundary: none, sv, p", kWaveNames, 3,
+                                &wave, nullptr));
   PetscCall(PetscOptionsString("-input_boundary", "absorbing boundary the incident wave enters through", "BoundaryConditionsCreate", input_boundary, input_boundary,
                                sizeof input_boundary, nullptr));
   PetscCall(PetscOptionsString("-input_component", "particle-motion component of the incident wave (x, y, z); default x for sv, the vertical for p",
                                "BoundaryConditionsCreate", component, component, sizeof component, &input_component_set));
   PetscCall(bc->input.Read(comm, "input_", HistoryRole::IncidentWave, PetscOptionsObject));
   PetscOptionsEnd();
-  bc->input_wave = wave;
-  PetscCheck(bc->input_wave == "none" || bc->input_wave == "sv" || bc->input_wave == "p", comm, PETSC_ERR_USER_INPUT, "-input_wave = %s; allowed: none, sv, p",
-             wave);
-  if (bc->input_wave != "none") {
-    PetscCheck(bc->input.active(), comm, PETSC_ERR_USER_INPUT, "-input_wave = %s needs its velocity history; allowed: -input_stf ricker, gabor or record", wave);
-    bc->input_boundary = input_boundary;
-    bc->input_component = bc->input_wave == "sv" ? 0 : dim - 1;
+  bc->input_wave = (InputWave)wave;
+  if (bc->input_wave != InputWave::None) {
+    PetscCheck(bc->input.active(), comm, PETSC_ERR_USER_INPUT, "-input_wave = %s needs its velocity history; allowed: -input_stf ricker, gabor or record",
+               kWaveNames[wave]);
+    bc->input_boundary  = input_boundary;
+    bc->input_component = bc->input_wave == InputWave::SV ? 0 : dim - 1;
     if (input_component_set) {
       std::vector<PetscInt> c;
       PetscCall(parseComponents(comm, "-input_component", component, dim, &c));
@@ -134,179 +108,262 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
     }
   }
   PetscCheck(bc->gravity >= 0, comm, PETSC_ERR_USER_INPUT, "-gravity = %g; allowed: >= 0 (its direction is -gravity_direction)", (double)bc->gravity);
-  {
-    double len = 0;
-    for (PetscInt d = 0; d < dim; ++d) len += gravity_dir[d] * gravity_dir[d];
-    len = std::sqrt(len);
-    PetscCheck(len > 0, comm, PETSC_ERR_USER_INPUT, "-gravity_direction is the zero vector; allowed: %" PetscInt_FMT " components, not all zero", dim);
-    for (PetscInt d = 0; d < dim; ++d) bc->gravity_direction[d] = gravity_dir[d] / len;
-  }
+  double len = 0;
+  for (PetscInt d = 0; d < dim; ++d) len += gravity_dir[d] * gravity_dir[d];
+  len = std::sqrt(len);
+  PetscCheck(len > 0, comm, PETSC_ERR_USER_INPUT, "-gravity_direction is the zero vector; allowed: %" PetscInt_FMT " components, not all zero", dim);
+  for (PetscInt d = 0; d < dim; ++d) bc->gravity_direction[d] = gravity_dir[d] / len;
+  constrain_all->clear();
+  if (constrain_list[0]) PetscCall(parseComponents(comm, "-constrain_components", constrain_list, dim, constrain_all));
+  PetscFunctionReturn(0);
+}
 
-  bool input_found = false;
+// The options of one side, -bc_<name>_*: its block "Boundary <name>".
+struct SideOptions {
+  BoundaryType          type = BoundaryType::Free;
+  std::vector<PetscInt> components; // held components (fixed, velocity)
+  PetscReal             traction[3] = {0, 0, 0};
+  TimeFunction          history;    // velocity
+  std::string           tie_with;   // tied
+};
+
+PetscErrorCode readSideOptions(MPI_Comm comm, PetscInt dim, const std::string &prefix, const std::string &name, SideOptions *o) {
+  const std::string title = "Boundary " + name;
+  PetscInt          type  = 0;
+  char              comps[16] = "", tie_with[256] = "";
+  PetscInt          ntraction = dim;
+  PetscBool         traction_set;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
+  PetscCall(core::OptionsChoice(PetscOptionsObject, "-type", "boundary condition", kTypeNames, kTypeCount, &type, nullptr));
+  if ((BoundaryType)type == BoundaryType::Tied)
+    PetscCall(PetscOptionsString("-tie_with", "the opposite side whose facing nodes move with this one's (type tied)", "BoundaryConditionsCreate", tie_with, tie_with,
+                                 sizeof tie_with, nullptr));
+  PetscCall(PetscOptionsString("-components", "components held (fixed, velocity): x,y[,z]; default all", "BoundaryConditionsCreate", comps, comps, sizeof comps,
+                               nullptr));
+  PetscCall(PetscOptionsRealArray("-traction", "applied traction tx,ty[,tz] [Pa] (type traction)", "BoundaryConditionsCreate", o->traction, &ntraction, &traction_set));
+  if ((BoundaryType)type == BoundaryType::Velocity) PetscCall(o->history.Read(comm, prefix, HistoryRole::BoundaryVelocity, PetscOptionsObject));
+  PetscOptionsEnd();
+  o->type     = (BoundaryType)type;
+  o->tie_with = tie_with;
+  PetscCall(parseComponents(comm, ("-" + prefix + "components").c_str(), comps, dim, &o->components));
+  PetscCheck(!traction_set || o->type == BoundaryType::Traction, comm, PETSC_ERR_USER_INPUT, "-%straction is given but -%stype = %s; allowed: -%stype traction",
+             prefix.c_str(), prefix.c_str(), kTypeNames[type], prefix.c_str());
+  PetscCheck(!traction_set || ntraction == dim, comm, PETSC_ERR_USER_INPUT, "-%straction has %" PetscInt_FMT " values; allowed: %" PetscInt_FMT, prefix.c_str(), ntraction,
+             dim);
+  PetscFunctionReturn(0);
+}
+
+// What the sides add up while they are read: held dofs (global) and, in local vectors, the
+// tractions, the dashpot blocks and the incident-wave force.
+struct SideSums {
+  PetscSection s = nullptr, sb = nullptr; // displacement and dim x dim block layouts
+  Vec          constrained = nullptr, force_local = nullptr, input_local = nullptr, block_local = nullptr;
+  bool         input_found = false;
+};
+
+PetscErrorCode addTiedSide(MPI_Comm comm, const std::vector<std::string> &boundaries, const std::string &name, const std::string &prefix, const SideOptions &o,
+                           BoundaryConditions *bc) {
+  PetscFunctionBeginUser;
+  PetscCheck(std::find(boundaries.begin(), boundaries.end(), o.tie_with) != boundaries.end() && o.tie_with != name, comm, PETSC_ERR_USER_INPUT,
+             "-%stie_with = '%s'; allowed: another boundary of the mesh (the opposite side)", prefix.c_str(), o.tie_with.c_str());
+  bool seen = false;
+  for (const auto &p : bc->tied_pairs) seen = seen || (p.first == o.tie_with && p.second == name);
+  if (!seen) bc->tied_pairs.emplace_back(name, o.tie_with);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode addFixedSide(DM dm, const std::vector<BoundaryFace> &faces, const std::string &name, const std::string &prefix, const SideOptions &o, SideSums *sums,
+                            BoundaryConditions *bc) {
+  PetscFunctionBeginUser;
+  PetscCall(markFaceDofs(dm, faces, o.components, sums->constrained));
+  // A vertically incident plane wave moves every point of a horizontally layered site
+  // alike; a side held in that component reflects the wave back into the model instead
+  // of letting it pass (rollers under SV: the default scene lost 2/3 of its surface
+  // velocity that way).
+  if (bc->input_wave != InputWave::None && name != bc->input_boundary &&
+      std::find(o.components.begin(), o.components.end(), bc->input_component) != o.components.end()) {
+    bc->warnings.push_back("boundary '" + name + "' is fixed in " + "xyz"[bc->input_component] + ", the component the incident " +
+                           (bc->input_wave == InputWave::SV ? "SV" : "P") + " wave moves: it holds back the free-field motion; use -" + prefix +
+                           "type freefield (or tied with the opposite side)");
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode addTractionSide(PetscInt dim, const std::vector<BoundaryFace> &faces, const SideOptions &o, SideSums *sums) {
+  PetscScalar *fa;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(sums->force_local, &fa));
+  for (const BoundaryFace &f : faces) PetscCall(addFaceLoad(sums->s, f, dim, o.traction, fa));
+  PetscCall(VecRestoreArray(sums->force_local, &fa));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode addVelocitySide(DM dm, const std::vector<BoundaryFace> &faces, const std::string &name, const std::string &prefix, SideOptions *o, SideSums *sums,
+                               BoundaryConditions *bc) {
+  PetscFunctionBeginUser;
+  PetscCheck(o->history.active(), PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "-%stype velocity needs a history; allowed: -%sstf ricker, gabor or record",
+             prefix.c_str(), prefix.c_str());
+  PrescribedVelocity pv;
+  pv.boundary = name;
+  PetscCall(VecDuplicate(sums->constrained, &pv.dofs));
+  PetscCall(VecZeroEntries(pv.dofs));
+  PetscCall(markFaceDofs(dm, faces, o->components, pv.dofs));
+  PetscCall(VecAXPY(sums->constrained, 1.0, pv.dofs));
+  pv.history = std::move(o->history);
+  bc->prescribed.push_back(std::move(pv));
+  PetscFunctionReturn(0);
+}
+
+// Absorbing and free-field sides: a free-field side has the same Lysmer dashpot (on v - v_ff;
+// the v_ff part is the external force of model/free_field.cpp), and never the incident wave.
+PetscErrorCode addDashpotSide(PetscInt dim, const std::vector<BoundaryFace> &faces, const std::vector<RegionMaterialInfo> &materials, const std::string &name,
+                              BoundaryType type, SideSums *sums, BoundaryConditions *bc) {
+  PetscScalar *ba, *ia;
+  PetscFunctionBeginUser;
+  bc->has_absorbing  = true;
+  bc->has_free_field = bc->has_free_field || type == BoundaryType::FreeField;
+  const bool is_input = type == BoundaryType::Absorbing && bc->input_wave != InputWave::None && name == bc->input_boundary;
+  sums->input_found   = sums->input_found || is_input;
+  PetscCall(VecGetArray(sums->block_local, &ba));
+  PetscCall(VecGetArray(sums->input_local, &ia));
+  for (const BoundaryFace &f : faces) {
+    const physics::ElasticMaterial &m = materials[f.region].elastic;
+    for (PetscInt k = 0; k < f.nvert; ++k) {
+      double   C[9];
+      PetscInt off;
+      physics::lysmerDashpot((int)dim, f.normal, f.weights[k], m, C);
+      PetscCall(PetscSectionGetOffset(sums->sb, f.vertices[k], &off));
+      for (PetscInt j = 0; j < dim * dim; ++j) ba[off + j] += C[j];
+      if (is_input) {
+        PetscCall(PetscSectionGetOffset(sums->s, f.vertices[k], &off));
+        // Force per unit incident velocity: the traction for v_in = 1 along the motion.
+        const double c = bc->input_wave == InputWave::SV ? m.vs : m.vp;
+        double       direction[3] = {0, 0, 0}, t[3];
+        direction[bc->input_component] = 1;
+        physics::incidentWaveTraction((int)dim, direction, m.rho, c, 1.0, t);
+        for (PetscInt d = 0; d < dim; ++d) ia[off + d] += t[d] * f.weights[k];
+      }
+    }
+  }
+  PetscCall(VecRestoreArray(sums->input_local, &ia));
+  PetscCall(VecRestoreArray(sums->block_local, &ba));
+  PetscFunctionReturn(0);
+}
+
+// Holds `components` at every node (-constrain_components).
+PetscErrorCode constrainEveryNode(PetscInt dim, const std::vector<PetscInt> &components, Vec constrained) {
+  PetscInt     n;
+  PetscScalar *c;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(constrained, &n));
+  PetscCall(VecGetArray(constrained, &c));
+  for (PetscInt i = 0; i < n; i += dim)
+    for (PetscInt comp : components) c[i + comp] += 1;
+  PetscCall(VecRestoreArray(constrained, &c));
+  PetscFunctionReturn(0);
+}
+
+// constant_force += gravity * direction * M (lumped mass per dof).
+PetscErrorCode addGravity(PetscInt dim, Vec mass, BoundaryConditions *bc) {
+  PetscInt           n;
+  PetscScalar       *f;
+  const PetscScalar *m;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(mass, &n));
+  PetscCall(VecGetArray(bc->constant_force, &f));
+  PetscCall(VecGetArrayRead(mass, &m));
+  for (PetscInt i = 0; i < n; ++i) f[i] += bc->gravity * bc->gravity_direction[i % dim] * m[i];
+  PetscCall(VecRestoreArrayRead(mass, &m));
+  PetscCall(VecRestoreArray(bc->constant_force, &f));
+  PetscFunctionReturn(0);
+}
+
+// free_mask = 1 where nothing holds the dof.
+PetscErrorCode setFreeMask(Vec constrained, Vec free_mask) {
+  PetscInt           n;
+  PetscScalar       *mask;
+  const PetscScalar *c;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(constrained, &n));
+  PetscCall(VecGetArray(free_mask, &mask));
+  PetscCall(VecGetArrayRead(constrained, &c));
+  for (PetscInt i = 0; i < n; ++i) mask[i] = PetscRealPart(c[i]) > 0 ? 0.0 : 1.0;
+  PetscCall(VecRestoreArrayRead(constrained, &c));
+  PetscCall(VecRestoreArray(free_mask, &mask));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode createVectors(DM dm, PetscInt dim, BoundaryConditions *bc) {
+  PetscFunctionBeginUser;
+  PetscCall(NodeFieldCreateDM(dm, dim * dim, &bc->block_dm));
+  PetscCall(DMCreateGlobalVector(bc->block_dm, &bc->absorbing_blocks));
+  PetscCall(DMCreateGlobalVector(dm, &bc->constant_force));
+  PetscCall(DMCreateGlobalVector(dm, &bc->input_force));
+  PetscCall(DMCreateGlobalVector(dm, &bc->free_mask));
+  PetscCall(VecZeroEntries(bc->absorbing_blocks));
+  PetscCall(VecZeroEntries(bc->constant_force));
+  PetscCall(VecZeroEntries(bc->input_force));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+const char *boundaryTypeName(BoundaryType t) { return kTypeNames[(int)t]; }
+const char *inputWaveName(InputWave w) { return kWaveNames[(int)w]; }
+
+PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &boundaries, const std::vector<RegionMaterialInfo> &materials, Vec mass,
+                                        BoundaryConditions *bc) {
+  MPI_Comm              comm = PetscObjectComm((PetscObject)dm);
+  PetscInt              dim;
+  SideSums              sums;
+  std::vector<PetscInt> constrain_all;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(dm, &dim));
+  PetscCall(createVectors(dm, dim, bc));
+  PetscCall(DMGetLocalSection(dm, &sums.s));
+  PetscCall(DMGetLocalSection(bc->block_dm, &sums.sb));
+  PetscCall(VecDuplicate(bc->free_mask, &sums.constrained));
+  PetscCall(VecZeroEntries(sums.constrained));
+  PetscCall(DMGetLocalVector(dm, &sums.force_local));
+  PetscCall(DMGetLocalVector(dm, &sums.input_local));
+  PetscCall(DMGetLocalVector(bc->block_dm, &sums.block_local));
+  PetscCall(VecZeroEntries(sums.force_local));
+  PetscCall(VecZeroEntries(sums.input_local));
+  PetscCall(VecZeroEntries(sums.block_local));
+
+  PetscCall(readLoadOptions(comm, dim, bc, &constrain_all));
   for (const std::string &name : boundaries) {
     const std::string prefix = "bc_" + name + "_";
-    const std::string title  = "Boundary " + name;
-    PetscInt          type   = 0;
-    char              comps[16] = "";
-    PetscReal         traction[3] = {0, 0, 0};
-    PetscInt          ntraction = dim;
-    PetscBool         traction_set;
-    TimeFunction      history;
-    char              tie_with[256] = "";
-    {
-      // PetscOptionsEList stops an unknown value with PETSc's multi-line traceback: check it
-      // first so the user gets the one-line error.
-      char      value[64] = "";
-      PetscBool set, known = PETSC_FALSE;
-      PetscCall(PetscOptionsGetString(nullptr, prefix.c_str(), "-type", value, sizeof value, &set));
-      for (int i = 0; i < kTypeCount && set && !known; ++i) PetscCall(PetscStrcasecmp(value, kTypeNames[i], &known));
-      PetscCheck(!set || known, comm, PETSC_ERR_USER_INPUT, "-%stype = %s; allowed: free, fixed, absorbing, traction, velocity, freefield, tied", prefix.c_str(), value);
-    }
-    PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
-    PetscCall(PetscOptionsEList("-type", "boundary condition", "BoundaryConditionsCreate", kTypeNames, kTypeCount, kTypeNames[0], &type, nullptr));
-    if ((BoundaryType)type == BoundaryType::Tied)
-      PetscCall(PetscOptionsString("-tie_with", "the opposite side whose facing nodes move with this one's (type tied)", "BoundaryConditionsCreate", tie_with, tie_with,
-                                   sizeof tie_with, nullptr));
-    PetscCall(PetscOptionsString("-components", "components held (fixed, velocity): x,y[,z]; default all", "BoundaryConditionsCreate", comps, comps, sizeof comps,
-                                 nullptr));
-    PetscCall(PetscOptionsRealArray("-traction", "applied traction tx,ty[,tz] [Pa] (type traction)", "BoundaryConditionsCreate", traction, &ntraction, &traction_set));
-    if ((BoundaryType)type == BoundaryType::Velocity) PetscCall(history.Read(comm, prefix, HistoryRole::BoundaryVelocity, PetscOptionsObject));
-    PetscOptionsEnd();
-    const BoundaryType t = (BoundaryType)type;
+    SideOptions       o;
+    PetscCall(readSideOptions(comm, dim, prefix, name, &o));
     bc->names.push_back(name);
-    bc->types.push_back(t);
+    bc->types.push_back(o.type);
     std::vector<BoundaryFace> faces;
     PetscCall(BoundaryFacesGet(dm, name, &faces));
-    std::vector<PetscInt> components;
-    PetscCall(parseComponents(comm, ("-" + prefix + "components").c_str(), comps, dim, &components));
-    PetscCheck(!traction_set || t == BoundaryType::Traction, comm, PETSC_ERR_USER_INPUT, "-%straction is given but -%stype = %s; allowed: -%stype traction", prefix.c_str(),
-               prefix.c_str(), kTypeNames[type], prefix.c_str());
-    PetscCheck(!traction_set || ntraction == dim, comm, PETSC_ERR_USER_INPUT, "-%straction has %" PetscInt_FMT " values; allowed: %" PetscInt_FMT, prefix.c_str(),
-               ntraction, dim);
-    switch (t) {
+    switch (o.type) {
     case BoundaryType::Free: break;
-    case BoundaryType::Tied: {
-      const std::string other = tie_with;
-      PetscCheck(std::find(boundaries.begin(), boundaries.end(), other) != boundaries.end() && other != name, comm, PETSC_ERR_USER_INPUT,
-                 "-%stie_with = '%s'; allowed: another boundary of the mesh (the opposite side)", prefix.c_str(), tie_with);
-      bool seen = false;
-      for (const auto &p : bc->tied_pairs) seen = seen || (p.first == other && p.second == name);
-      if (!seen) bc->tied_pairs.emplace_back(name, other);
-      break;
-    }
-    case BoundaryType::Fixed:
-      PetscCall(markFaceDofs(dm, faces, components, constrained));
-      // A vertically incident plane wave moves every point of a horizontally layered site
-      // alike; a side held in that component reflects the wave back into the model instead
-      // of letting it pass (rollers under SV: the default scene lost 2/3 of its surface
-      // velocity that way).
-      if (bc->input_wave != "none" && name != bc->input_boundary &&
-          std::find(components.begin(), components.end(), bc->input_component) != components.end()) {
-        bc->warnings.push_back("boundary '" + name + "' is fixed in " + "xyz"[bc->input_component] + ", the component the incident " +
-                               (bc->input_wave == "sv" ? "SV" : "P") + " wave moves: it holds back the free-field motion; use -" + prefix +
-                               "type freefield (or tied with the opposite side)");
-      }
-      break;
-    case BoundaryType::Traction:
-      PetscCall(VecGetArray(force_local, &fa));
-      for (const BoundaryFace &f : faces) PetscCall(addFaceLoad(s, f, dim, traction, fa));
-      PetscCall(VecRestoreArray(force_local, &fa));
-      break;
-    case BoundaryType::Velocity: {
-      PetscCheck(history.active(), comm, PETSC_ERR_USER_INPUT, "-%stype velocity needs a history; allowed: -%sstf ricker, gabor or record", prefix.c_str(),
-                 prefix.c_str());
-      PrescribedVelocity pv;
-      pv.boundary = name;
-      PetscCall(VecDuplicate(constrained, &pv.dofs));
-      PetscCall(VecZeroEntries(pv.dofs));
-      PetscCall(markFaceDofs(dm, faces, components, pv.dofs));
-      PetscCall(VecAXPY(constrained, 1.0, pv.dofs));
-      pv.history = std::move(history);
-      bc->prescribed.push_back(std::move(pv));
-      break;
-    }
+    case BoundaryType::Tied: PetscCall(addTiedSide(comm, boundaries, name, prefix, o, bc)); break;
+    case BoundaryType::Fixed: PetscCall(addFixedSide(dm, faces, name, prefix, o, &sums, bc)); break;
+    case BoundaryType::Traction: PetscCall(addTractionSide(dim, faces, o, &sums)); break;
+    case BoundaryType::Velocity: PetscCall(addVelocitySide(dm, faces, name, prefix, &o, &sums, bc)); break;
     case BoundaryType::FreeField:
-    case BoundaryType::Absorbing: {
-      // A free-field side has the same Lysmer dashpot (on v - v_ff; the v_ff part is the
-      // external force of model/free_field.cpp), and never the incident wave.
-      bc->has_absorbing  = true;
-      bc->has_free_field = bc->has_free_field || t == BoundaryType::FreeField;
-      const bool is_input = t == BoundaryType::Absorbing && bc->input_wave != "none" && name == bc->input_boundary;
-      input_found         = input_found || is_input;
-      PetscCall(VecGetArray(block_local, &ba));
-      PetscCall(VecGetArray(input_local, &ia));
-      for (const BoundaryFace &f : faces) {
-        const physics::ElasticMaterial &m = materials[f.region].elastic;
-        for (PetscInt k = 0; k < f.nvert; ++k) {
-          double   C[9];
-          PetscInt off;
-          physics::lysmerDashpot((int)dim, f.normal, f.weights[k], m, C);
-          PetscCall(PetscSectionGetOffset(sb, f.vertices[k], &off));
-          for (PetscInt j = 0; j < dim * dim; ++j) ba[off + j] += C[j];
-          if (is_input) {
-            PetscCall(PetscSectionGetOffset(s, f.vertices[k], &off));
-            // Force per unit incident velocity: the traction for v_in = 1 along the motion.
-            const double c = bc->input_wave == "sv" ? m.vs : m.vp;
-            double       direction[3] = {0, 0, 0}, t[3];
-            direction[bc->input_component] = 1;
-            physics::incidentWaveTraction((int)dim, direction, m.rho, c, 1.0, t);
-            for (PetscInt d = 0; d < dim; ++d) ia[off + d] += t[d] * f.weights[k];
-          }
-        }
-      }
-      PetscCall(VecRestoreArray(input_local, &ia));
-      PetscCall(VecRestoreArray(block_local, &ba));
-      break;
-    }
+    case BoundaryType::Absorbing: PetscCall(addDashpotSide(dim, faces, materials, name, o.type, &sums, bc)); break;
     }
   }
-  PetscCheck(bc->input_wave == "none" || input_found, comm, PETSC_ERR_USER_INPUT,
-             "-input_boundary = %s is not an absorbing boundary; allowed: a boundary with -bc_<name>_type absorbing", input_boundary);
+  PetscCheck(bc->input_wave == InputWave::None || sums.input_found, comm, PETSC_ERR_USER_INPUT,
+             "-input_boundary = %s is not an absorbing boundary; allowed: a boundary with -bc_<name>_type absorbing", bc->input_boundary.c_str());
+  if (!constrain_all.empty()) PetscCall(constrainEveryNode(dim, constrain_all, sums.constrained));
 
-  if (constrain_all[0]) {
-    std::vector<PetscInt> components;
-    PetscCall(parseComponents(comm, "-constrain_components", constrain_all, dim, &components));
-    PetscInt     n;
-    PetscScalar *c;
-    PetscCall(VecGetLocalSize(constrained, &n));
-    PetscCall(VecGetArray(constrained, &c));
-    for (PetscInt i = 0; i < n; i += dim)
-      for (PetscInt comp : components) c[i + comp] += 1;
-    PetscCall(VecRestoreArray(constrained, &c));
-  }
-
-  PetscCall(DMLocalToGlobal(dm, force_local, ADD_VALUES, bc->constant_force));
-  PetscCall(DMLocalToGlobal(dm, input_local, ADD_VALUES, bc->input_force));
-  PetscCall(DMLocalToGlobal(bc->block_dm, block_local, ADD_VALUES, bc->absorbing_blocks));
-  PetscCall(DMRestoreLocalVector(dm, &force_local));
-  PetscCall(DMRestoreLocalVector(dm, &input_local));
-  PetscCall(DMRestoreLocalVector(bc->block_dm, &block_local));
-
-  if (bc->gravity > 0) {
-    PetscInt           n;
-    PetscScalar       *f;
-    const PetscScalar *m;
-    PetscCall(VecGetLocalSize(mass, &n));
-    PetscCall(VecGetArray(bc->constant_force, &f));
-    PetscCall(VecGetArrayRead(mass, &m));
-    for (PetscInt i = 0; i < n; ++i) f[i] += bc->gravity * bc->gravity_direction[i % dim] * m[i];
-    PetscCall(VecRestoreArrayRead(mass, &m));
-    PetscCall(VecRestoreArray(bc->constant_force, &f));
-  }
-
-  // free_mask = 1 where nothing holds the dof.
-  {
-    PetscInt           n;
-    PetscScalar       *mask;
-    const PetscScalar *c;
-    PetscCall(VecGetLocalSize(constrained, &n));
-    PetscCall(VecGetArray(bc->free_mask, &mask));
-    PetscCall(VecGetArrayRead(constrained, &c));
-    for (PetscInt i = 0; i < n; ++i) mask[i] = PetscRealPart(c[i]) > 0 ? 0.0 : 1.0;
-    PetscCall(VecRestoreArrayRead(constrained, &c));
-    PetscCall(VecRestoreArray(bc->free_mask, &mask));
-  }
-  PetscCall(VecDestroy(&constrained));
+  PetscCall(DMLocalToGlobal(dm, sums.force_local, ADD_VALUES, bc->constant_force));
+  PetscCall(DMLocalToGlobal(dm, sums.input_local, ADD_VALUES, bc->input_force));
+  PetscCall(DMLocalToGlobal(bc->block_dm, sums.block_local, ADD_VALUES, bc->absorbing_blocks));
+  PetscCall(DMRestoreLocalVector(dm, &sums.force_local));
+  PetscCall(DMRestoreLocalVector(dm, &sums.input_local));
+  PetscCall(DMRestoreLocalVector(bc->block_dm, &sums.block_local));
+  if (bc->gravity > 0) PetscCall(addGravity(dim, mass, bc));
+  PetscCall(setFreeMask(sums.constrained, bc->free_mask));
+  PetscCall(VecDestroy(&sums.constrained));
   PetscFunctionReturn(0);
 }
 

@@ -20,9 +20,9 @@ PetscErrorCode readDamping(Elastodynamics *m) {
   PetscBool set;
   PetscFunctionBeginUser;
   PetscOptionsBegin(m->comm, "damping_", "Rayleigh damping", "slipwave");
-  PetscCall(PetscOptionsReal("-ratio", "damping ratio xi [-] reached at both frequencies (0: undamped)", "ElastodynamicsCreate", m->damping_ratio, &m->damping_ratio,
+  PetscCall(PetscOptionsReal("-ratio", "damping ratio xi [-] reached at both frequencies, 0 <= xi < 1 (0: undamped)", "ElastodynamicsCreate", m->damping_ratio, &m->damping_ratio,
                              nullptr));
-  PetscCall(PetscOptionsRealArray("-frequencies", "the two frequencies f1,f2 [Hz] where the ratio is exact", "ElastodynamicsCreate", freqs, &n, &set));
+  PetscCall(PetscOptionsRealArray("-frequencies", "the two frequencies f1,f2 [Hz] where the ratio is exact, 0 < f1 < f2", "ElastodynamicsCreate", freqs, &n, &set));
   PetscOptionsEnd();
   PetscCheck(!set || n == 2, m->comm, PETSC_ERR_USER_INPUT, "-damping_frequencies has %" PetscInt_FMT " values; allowed: two frequencies f1,f2 [Hz]", n);
   m->damping_f1 = freqs[0];
@@ -99,13 +99,6 @@ PetscErrorCode assembleDampingBlocks(Elastodynamics *m) {
 }
 
 
-// Contact damping, fraction of each closed pair's critical normal damping. 0.1 removes the
-// contact stress ripple of the two-bar impact (48 % -> 0.02 %) and the energy the switching
-// created (2.3e-4 -> 0) while moving the exit velocities by 0.1 % and the step by 1.4 % in
-// the default scene; larger ratios cost more step and raised the block's peaks there
-// (README, interfaces).
-constexpr double kContactDampingDefault = 0.1;
-
 // The penalty `auto`: the interface as stiff as factor x one layer of the softer adjacent
 // material one cell thick, E = factor (lambda + 2 mu)/h, G = factor mu/h (h: the smallest
 // cell size). Factor 1 adds about as much to a surface node's Gershgorin row as its cells do.
@@ -114,19 +107,8 @@ PetscErrorCode createInterfaces(Elastodynamics *m) {
   for (const mesh::InterfaceSpec &spec : m->mesh.interfaces) {
     const std::string prefix = "interface_" + spec.name + "_";
     interface::InterfaceOptions opt;
-    PetscCall(interface::InterfaceOptionsRead(m->comm, prefix.c_str(), &opt));
-    PetscReal factor = 1.0, contact_damping = kContactDampingDefault;
-    const std::string title = "Interface " + spec.name + " (penalty)";
-    PetscOptionsBegin(m->comm, prefix.c_str(), title.c_str(), "slipwave");
-    PetscCall(PetscOptionsReal("-penalty_factor", "E, G given as auto: factor x (lambda+2mu)/h and factor x mu/h of the softer side [-]", "ElastodynamicsCreate", factor,
-                               &factor, nullptr));
-    PetscCall(PetscOptionsReal("-contact_damping",
-                               "normal dashpot of closed pairs, fraction of the critical damping of the pair's penalty spring between its two nodal masses [-], 0..1",
-                               "ElastodynamicsCreate", contact_damping, &contact_damping, nullptr));
-    PetscOptionsEnd();
-    PetscCheck(factor > 0, m->comm, PETSC_ERR_USER_INPUT, "-%spenalty_factor = %g; allowed: > 0", prefix.c_str(), (double)factor);
-    PetscCheck(contact_damping >= 0 && contact_damping <= 1, m->comm, PETSC_ERR_USER_INPUT, "-%scontact_damping = %g; allowed: 0 <= ratio <= 1 (fraction of critical)",
-               prefix.c_str(), (double)contact_damping);
+    PetscCall(interface::InterfaceOptionsRead(m->comm, prefix.c_str(), interface::InterfaceUse::Mesh, &opt));
+    const double factor = opt.penalty_factor;
     double m_soft = 1e300, mu_soft = 1e300;
     for (const auto &info : m->materials)
       if (info.region == spec.soil_region || info.region == spec.structure_region) {
@@ -144,7 +126,7 @@ PetscErrorCode createInterfaces(Elastodynamics *m) {
     mesh::InterfacePairs pairs;
     PetscCall(mesh::InterfacePairsBuild(m->dm, spec, &pairs));
     m->interfaces.emplace_back();
-    PetscCall(m->interfaces.back().Setup(m->comm, m->dim, spec, pairs, opt.params, opt.sigma_N0, contact_damping, m->mass));
+    PetscCall(m->interfaces.back().Setup(m->comm, m->dim, spec, pairs, opt.params, opt.sigma_N0, opt.contact_damping, m->mass));
     m->penalty_notes.push_back(note);
   }
   PetscFunctionReturn(0);
@@ -240,7 +222,7 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   }
 
   PetscCall(PetscLogEventBegin(core::event_boundary, 0, 0, 0, 0));
-  const double v_in = m->input_enabled && m->bc.input.active() && m->bc.input_wave != "none" ? m->bc.input.velocity(t) : 0.0;
+  const double v_in = m->input_enabled && m->bc.input.active() && m->bc.input_wave != InputWave::None ? m->bc.input.velocity(t) : 0.0;
   PetscCall(VecAXPBY(m->f_input, v_in, 0.0, m->bc.input_force));
   PetscCall(VecWAXPY(m->f_external, 1.0, m->bc.constant_force, m->f_input));
   if (m->free_field) {

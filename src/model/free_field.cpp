@@ -130,7 +130,7 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
     const std::string q_problem = side->column.setAttenuation(seg_models, seg_factor);
     PetscCheck(q_problem.empty(), comm, PETSC_ERR_PLIB, "-bc_%s_type freefield: %s", name.c_str(), q_problem.c_str());
   }
-  if (bc.input_wave != "none") side->column.setInput((int)bc.input_component, bc.input_wave == "p");
+  if (bc.input_wave != InputWave::None) side->column.setInput((int)bc.input_component, bc.input_wave == InputWave::P);
   PetscFunctionReturn(0);
 }
 

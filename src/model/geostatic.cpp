@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "slipwave/core/log_events.hpp"
+#include "slipwave/core/option_choice.hpp"
 #include "slipwave/model/boundary_faces.hpp"
 #include "slipwave/model/static_equilibrium.hpp"
 
@@ -91,23 +92,21 @@ PetscErrorCode relaxationForces(Elastodynamics *m, Vec u, Vec a) {
 } // namespace
 
 PetscErrorCode GeostaticOptionsRead(MPI_Comm comm, GeostaticOptions *o) {
-  char method[64] = "static";
+  const char *const methods[] = {"static", "relaxation"}; // GeostaticMethod order
+  PetscInt          method    = (PetscInt)GeostaticMethod::Static;
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, "geostatic_", "Geostatic stage (gravity equilibrium before shaking)", "slipwave");
   PetscCall(PetscOptionsBool("-stage", "bring the model to rest under gravity and loads first", "GeostaticStage", o->enabled, &o->enabled, nullptr));
-  PetscCall(PetscOptionsString("-method",
-                               "static: linear solve with the interfaces in stick (KSP options -geostatic_ksp_*, -geostatic_pc_*), relaxation where a pair would slip "
-                               "or open; relaxation: dynamic relaxation only",
-                               "GeostaticStage", method, method, sizeof method, nullptr));
+  PetscCall(core::OptionsChoice(PetscOptionsObject, "-method",
+                                "static: linear solve with the interfaces in stick (KSP options -geostatic_ksp_*, -geostatic_pc_*), relaxation where a pair would "
+                                "slip or open; relaxation: dynamic relaxation only",
+                                methods, 2, &method, nullptr));
   PetscCall(PetscOptionsReal("-tolerance", "relaxation: unbalanced-force ratio max|M a| / max|f| that ends it [-], 0 < tol < 1", "GeostaticStage", o->tolerance,
                              &o->tolerance, nullptr));
   PetscCall(PetscOptionsInt("-max_steps", "relaxation: steps allowed before the stage is declared not converged, > 0", "GeostaticStage", o->max_steps, &o->max_steps,
                             nullptr));
   PetscOptionsEnd();
-  // A string, not an EList: an unknown value then stops with one line, not PETSc's traceback.
-  PetscCheck(!std::strcmp(method, "static") || !std::strcmp(method, "relaxation"), comm, PETSC_ERR_USER_INPUT, "-geostatic_method = %s; allowed: static, relaxation",
-             method);
-  o->method = std::strcmp(method, "static") ? GeostaticMethod::Relaxation : GeostaticMethod::Static;
+  o->method = (GeostaticMethod)method;
   PetscCheck(o->tolerance > 0 && o->tolerance < 1, comm, PETSC_ERR_USER_INPUT, "-geostatic_tolerance = %g; allowed: 0 < tolerance < 1", (double)o->tolerance);
   PetscCheck(o->max_steps > 0, comm, PETSC_ERR_USER_INPUT, "-geostatic_max_steps = %" PetscInt_FMT "; allowed: > 0", o->max_steps);
   if (o->enabled && o->method == GeostaticMethod::Static) PetscCall(StaticSolverCreate(comm, &o->ksp));

@@ -51,11 +51,11 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
     PetscReal         rho = 0, vp = 0, vs = 0, young = 0, nu = 0, damping_ratio = 0, reference_frequency = 0;
     PetscBool         has_rho, has_vp, has_vs, has_e, has_nu, has_reference;
     PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
-    PetscCall(PetscOptionsReal("-rho", "mass density [kg/m^3]", "MaterialsRead", rho, &rho, &has_rho));
-    PetscCall(PetscOptionsReal("-vp", "P-wave speed [m/s] (with -vs)", "MaterialsRead", vp, &vp, &has_vp));
-    PetscCall(PetscOptionsReal("-vs", "S-wave speed [m/s] (with -vp)", "MaterialsRead", vs, &vs, &has_vs));
-    PetscCall(PetscOptionsReal("-E", "Young's modulus [Pa] (with -nu, instead of -vp/-vs)", "MaterialsRead", young, &young, &has_e));
-    PetscCall(PetscOptionsReal("-nu", "Poisson's ratio [-] (with -E)", "MaterialsRead", nu, &nu, &has_nu));
+    PetscCall(PetscOptionsReal("-rho", "mass density [kg/m^3], > 0", "MaterialsRead", rho, &rho, &has_rho));
+    PetscCall(PetscOptionsReal("-vp", "P-wave speed [m/s], >= sqrt(2) vs (with -vs)", "MaterialsRead", vp, &vp, &has_vp));
+    PetscCall(PetscOptionsReal("-vs", "S-wave speed [m/s], > 0 (with -vp)", "MaterialsRead", vs, &vs, &has_vs));
+    PetscCall(PetscOptionsReal("-E", "Young's modulus [Pa], > 0 (with -nu, instead of -vp/-vs)", "MaterialsRead", young, &young, &has_e));
+    PetscCall(PetscOptionsReal("-nu", "Poisson's ratio [-], 0 <= nu < 0.5 (with -E)", "MaterialsRead", nu, &nu, &has_nu));
     PetscCall(PetscOptionsReal("-damping_ratio", "constant-Q damping ratio xi [-] of P and S waves, Q = 1/(2 xi) (0 <= xi < 0.5; 0: elastic)", "MaterialsRead",
                                damping_ratio, &damping_ratio, nullptr));
 

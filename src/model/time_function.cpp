@@ -7,37 +7,12 @@
 #include <cstring>
 #include <variant>
 
+#include "slipwave/core/option_choice.hpp"
 #include "slipwave/model/ground_motion_record.hpp"
 #include "slipwave/physics/source_time_function.hpp"
 
 namespace slipwave::model {
 namespace {
-
-const char *const kKinds[] = {"none", "ricker", "gabor", "record"};
-constexpr int     kNumKinds = 4;
-
-bool equalsNoCase(const std::string &a, const char *b) {
-  if (a.size() != std::strlen(b)) return false;
-  for (size_t i = 0; i < a.size(); ++i)
-    if (std::tolower((unsigned char)a[i]) != std::tolower((unsigned char)b[i])) return false;
-  return true;
-}
-
-// PetscOptionsEList stops an unknown value with PETSC_ERR_USER and PETSc's multi-line
-// traceback; checking the value first gives the one-line user-input error instead.
-PetscErrorCode checkChoice(MPI_Comm comm, const std::string &option, const char *const *choices, int n) {
-  char      value[256] = "";
-  PetscBool set;
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, option.c_str(), value, sizeof value, &set));
-  if (!set) PetscFunctionReturn(0);
-  std::string allowed;
-  for (int i = 0; i < n; ++i) {
-    if (equalsNoCase(value, choices[i])) PetscFunctionReturn(0);
-    allowed += (i ? ", " : "") + std::string(choices[i]);
-  }
-  SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s = %s; allowed: %s", option.c_str(), value, allowed.c_str());
-}
 
 // Linear interpolation of samples (t_k, y_k); zero outside [t_0, t_last].
 double interpolateInside(const std::vector<double> &t, const std::vector<double> &y, double x) {
@@ -151,13 +126,12 @@ TimeFunction::TimeFunction(TimeFunction &&) noexcept = default;
 TimeFunction &TimeFunction::operator=(TimeFunction &&) noexcept = default;
 
 PetscErrorCode TimeFunction::Read(MPI_Comm comm, const std::string &prefix, HistoryRole role, PetscOptionItems *PetscOptionsObject) {
-  const char *const kinds[] = {"none", "ricker", "gabor", "record", "TimeFunctionKind", "", nullptr};
+  const char *const kinds[] = {"none", "ricker", "gabor", "record"};
   PetscInt          kind = 0;
   PetscReal         amplitude = 0.1, f0 = 2.0, t0 = -1, gamma = 4.0, phase = 0;
   const std::string p = "-" + prefix, q = relativeName(prefix, PetscOptionsObject);
   PetscFunctionBeginUser;
-  PetscCall(checkChoice(comm, p + "stf", kKinds, kNumKinds));
-  PetscCall(PetscOptionsEList((q + "stf").c_str(), "velocity history: none, ricker, gabor, record", "TimeFunction::Read", kinds, 4, kinds[0], &kind, nullptr));
+  PetscCall(core::OptionsChoice(PetscOptionsObject, (q + "stf").c_str(), "velocity history: none, ricker, gabor, record", kinds, 4, &kind, nullptr));
   if (kind == 0) PetscFunctionReturn(0);
   char buf[1024];
   if (kind == 3) {
@@ -191,12 +165,12 @@ PetscErrorCode TimeFunction::Read(MPI_Comm comm, const std::string &prefix, Hist
 // with the trapezoid rule into the velocity history.
 PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix, HistoryRole role, PetscOptionItems *PetscOptionsObject) {
   const std::string p = "-" + prefix, q = relativeName(prefix, PetscOptionsObject);
-  char              file[PETSC_MAX_PATH_LEN] = "", format[16] = "", units[16] = "auto";
+  char              file[PETSC_MAX_PATH_LEN] = "";
   PetscReal         scale = 1.0, pga_g = 0;
-  PetscInt          motion = 0; // index in motions[]: outcrop, incident
+  PetscInt          motion = 0, format = 0, units = 0; // indices in motions[], formats[], unit_choices[]
   PetscBool         baseline = PETSC_TRUE, has_file, has_format, has_amplitude, has_scale, has_pga;
   const char *const formats[] = {"csv", "at2"}, *const unit_choices[] = {"auto", "g", "m/s^2"};
-  const char *const motions[] = {"outcrop", "incident", "RecordMotion", "", nullptr};
+  const char *const motions[] = {"outcrop", "incident"};
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasName(nullptr, nullptr, (p + "amplitude").c_str(), &has_amplitude));
   PetscCheck(!has_amplitude, comm, PETSC_ERR_USER_INPUT,
@@ -204,22 +178,19 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
              p.c_str(), p.c_str(), p.c_str(), p.c_str());
   PetscCall(PetscOptionsString((q + "record").c_str(), "acceleration record: CSV time,acceleration [s; m/s^2 or g] or PEER NGA .AT2 [g]", "TimeFunction::Read", file,
                                file, sizeof file, &has_file));
-  PetscCall(checkChoice(comm, p + "record_format", formats, 2));
-  PetscCall(PetscOptionsString((q + "record_format").c_str(), "format of the record: csv or at2 (default: from the file extension)", "TimeFunction::Read", format,
-                               format, sizeof format, &has_format));
-  PetscCall(checkChoice(comm, p + "record_units", unit_choices, 3));
-  PetscCall(PetscOptionsString((q + "record_units").c_str(),
-                               "unit of a CSV record's acceleration: auto (from the header's acceleration column: g if it says g, else m/s^2), g, m/s^2",
-                               "TimeFunction::Read", units, units, sizeof units, nullptr));
+  PetscCall(core::OptionsChoice(PetscOptionsObject, (q + "record_format").c_str(), "format of the record: csv or at2 (default: from the file extension)", formats, 2,
+                                &format, &has_format));
+  PetscCall(core::OptionsChoice(PetscOptionsObject, (q + "record_units").c_str(),
+                                "unit of a CSV record's acceleration: auto (from the header's acceleration column: g if it says g, else m/s^2), g, m/s^2", unit_choices, 3,
+                                &units, nullptr));
   PetscCall(PetscOptionsReal((q + "record_scale").c_str(), "factor on the record's acceleration [-] (not with -record_pga)", "TimeFunction::Read", scale, &scale,
                              &has_scale));
   PetscCall(PetscOptionsReal((q + "record_pga").c_str(), "scale the record to this peak ground acceleration [g] (> 0; not with -record_scale)", "TimeFunction::Read",
                              pga_g, &pga_g, &has_pga));
   if (role == HistoryRole::IncidentWave) {
-    PetscCall(checkChoice(comm, p + "record_motion", motions, 2));
-    PetscCall(PetscOptionsEList((q + "record_motion").c_str(),
-                                "what the record is: outcrop (motion of a rock outcrop = 2 x the incident wave) or incident (the upgoing wave itself)",
-                                "TimeFunction::Read", motions, 2, motions[0], &motion, nullptr));
+    PetscCall(core::OptionsChoice(PetscOptionsObject, (q + "record_motion").c_str(),
+                                  "what the record is: outcrop (motion of a rock outcrop = 2 x the incident wave) or incident (the upgoing wave itself)", motions, 2, &motion,
+                                  nullptr));
   }
   PetscCall(PetscOptionsBool((q + "baseline_correction").c_str(),
                              "subtract c0 + c1 t from the acceleration so that the integrated velocity and displacement end at zero", "TimeFunction::Read",
@@ -234,7 +205,7 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
              p.c_str(), scale_text);
   bool at2;
   if (has_format) {
-    at2 = equalsNoCase(format, "at2");
+    at2 = format == 1;
   } else {
     const std::string ext = lowerExtension(file);
     PetscCheck(ext == "csv" || ext == "at2", comm, PETSC_ERR_USER_INPUT,
@@ -242,11 +213,11 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
                p.c_str());
     at2 = ext == "at2";
   }
-  const AccelerationUnit unit = equalsNoCase(units, "g") ? AccelerationUnit::G
-                                    : equalsNoCase(units, "auto") ? AccelerationUnit::FromHeader
-                                                                  : AccelerationUnit::MetresPerSecondSquared;
+  const AccelerationUnit unit = units == 1   ? AccelerationUnit::G
+                                    : units == 0 ? AccelerationUnit::FromHeader
+                                                 : AccelerationUnit::MetresPerSecondSquared;
   PetscCheck(!at2 || unit != AccelerationUnit::MetresPerSecondSquared, comm, PETSC_ERR_USER_INPUT,
-             "%srecord_units = %s does not apply to a PEER .AT2 record (its values are in g); allowed: auto or g", p.c_str(), units);
+             "%srecord_units = %s does not apply to a PEER .AT2 record (its values are in g); allowed: auto or g", p.c_str(), unit_choices[units]);
   GroundMotionRecord record;
   ReadStatus         status;
   PetscCall(readRecordCollective(comm, file, at2, unit, &record, &status));

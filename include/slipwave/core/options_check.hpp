@@ -6,6 +6,10 @@
 
 namespace slipwave::core {
 
+// Moves each renamed option given under its old name to its new name and says so once on
+// stdout; call before any option is read. Both names given stop the run.
+PetscErrorCode OptionsApplyRenames(MPI_Comm comm);
+
 // Stops with PETSC_ERR_USER_INPUT naming every option given but never read.
 PetscErrorCode OptionsErrorIfUnused(MPI_Comm comm);
 

@@ -1,5 +1,5 @@
 // Stations: points given by coordinates (-station_coordinates x1,y1,x2,y2,... with
-// -station_names, or -stations_file with rows name,x,y[,z]) where u, v, a are interpolated
+// -station_names, or -station_file with rows name,x,y[,z]) where u, v, a are interpolated
 // with the cell's shape functions every step. At the end rank 0 writes
 // DIR/stations/<name>.csv and DIR/stations.h5.
 // Which cell: any cell holding the point gives the same value (the field is continuous inside

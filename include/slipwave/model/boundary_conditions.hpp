@@ -22,6 +22,7 @@
 namespace slipwave::model {
 
 enum class BoundaryType { Free, Fixed, Absorbing, Traction, Velocity, FreeField, Tied };
+enum class InputWave { None, SV, P }; // -input_wave none|sv|p
 
 struct PrescribedVelocity {
   std::string  boundary;
@@ -39,7 +40,8 @@ struct BoundaryConditions {
   Vec                       free_mask = nullptr;        // 1 free dof, 0 prescribed
   std::vector<PrescribedVelocity> prescribed;
   TimeFunction              input;
-  std::string               input_wave = "none", input_boundary;
+  InputWave                 input_wave = InputWave::None;
+  std::string               input_boundary;
   PetscInt                  input_component = 0;
   PetscReal                 gravity = 0;
   double                    gravity_direction[3] = {0, 0, 0}; // unit vector
@@ -54,5 +56,6 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
 PetscErrorCode BoundaryConditionsDestroy(BoundaryConditions *bc);
 
 const char *boundaryTypeName(BoundaryType t);
+const char *inputWaveName(InputWave w);
 
 } // namespace slipwave::model

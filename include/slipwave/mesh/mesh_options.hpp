@@ -1,0 +1,38 @@
+// The options that describe the mesh, read in one place before the mesh is built (see
+// mesh_builder.hpp for what is built from them):
+//   -mesh_file <Gmsh .msh>, -mesh_dim 2|3, -regions a,b,... (1 to kMaxRegions names);
+//   box meshes only: -mesh_box_faces/_lower/_upper, -region_<r>_box, -void_regions;
+//   -interfaces n,... with -interface_<n>_regions soil,structure and -interface_<n>_faces.
+// The law of each interface is the interface layer's (interface/interface_options.hpp).
+#pragma once
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+#include "slipwave/mesh/interface_split.hpp"
+
+namespace slipwave::mesh {
+
+inline constexpr PetscInt kMaxRegions = 64;
+
+struct BoxSpec {
+  PetscInt  faces[3] = {40, 20, 10};
+  PetscReal lower[3] = {0, 0, 0};
+  PetscReal upper[3] = {100, 50, 25};
+};
+
+struct MeshOptions {
+  std::string                         file; // Gmsh file; empty: the built-in box
+  BoxSpec                             box;
+  std::vector<std::string>            regions{"soil"};
+  std::vector<std::vector<PetscReal>> region_boxes; // per region; empty: it takes the cells no box claims
+  std::vector<std::string>            voids;
+  std::vector<InterfaceSpec>          interfaces;
+};
+
+// Reads and checks the options above; *dim holds the default dimension on entry and the one
+// of -mesh_dim on return (a Gmsh file has its own).
+PetscErrorCode MeshOptionsRead(MPI_Comm comm, PetscInt *dim, MeshOptions *o);
+
+} // namespace slipwave::mesh
