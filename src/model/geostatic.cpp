@@ -127,7 +127,7 @@ std::string GeostaticReportLine(const GeostaticOptions &o, const GeostaticReport
     line += buf;
   }
   if (g.solved_static && g.fallback.empty()) {
-    line += "every interface pair in stick";
+    line += g.interfaces ? "every interface pair in stick" : "at rest";
   } else {
     if (!g.fallback.empty()) line += g.fallback + ", so relaxation follows: ";
     std::snprintf(buf, sizeof buf, "at rest after %" PetscInt_FMT " relaxation steps (unbalanced-force ratio %.2e < %.1e)", g.steps, g.ratio, (double)o.tolerance);
@@ -168,6 +168,7 @@ PetscErrorCode GeostaticStage(Elastodynamics *m, const GeostaticOptions &o, doub
     StaticSolveReport s;
     PetscCall(StaticEquilibriumSolve(m, o.ksp, mask, u, &s));
     report->solved_static  = true;
+    report->interfaces     = !m->interfaces.empty();
     report->solver         = s.method;
     report->ksp_iterations = s.iterations;
     if (s.reason < 0) {

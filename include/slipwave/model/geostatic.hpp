@@ -41,6 +41,7 @@ struct GeostaticOptions {
 
 struct GeostaticReport {
   bool        solved_static = false; // the static solve ran
+  bool        interfaces = false;    // the model has interface pairs (for the report's wording)
   PetscInt    ksp_iterations = 0;
   double      static_ratio = 0;      // unbalanced-force ratio right after the static solve
   PetscInt    pairs_off_stick = 0;   // pairs the law does not keep in linear stick there
