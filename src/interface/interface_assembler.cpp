@@ -160,22 +160,30 @@ PetscErrorCode InterfaceAssembler::Setup(MPI_Comm comm, PetscInt dim, const mesh
 
 PetscErrorCode InterfaceAssembler::AddForces(Vec u, Vec f) {
   PetscFunctionBeginUser;
-  PetscCall(VecScatterBegin(scatter_, u, pair_u_, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(scatter_, u, pair_u_, INSERT_VALUES, SCATTER_FORWARD));
-  const PetscScalar *pu;
-  PetscScalar       *pf;
-  PetscCall(VecGetArrayRead(pair_u_, &pu));
-  PetscCall(VecGetArray(pair_f_, &pf));
   const physics::InterfaceLaw law(params_);
   trial_states2_ = states2_;
   trial_states3_ = states3_;
   trial_jump_    = jump_prev_;
-  const double drift = dim_ == 2 ? updatePairs<2>(law, pairs_, tangent_.data(), trial_states2_, trial_jump_, pu, pf)
-                                 : updatePairs<3>(law, pairs_, tangent_.data(), trial_states3_, trial_jump_, pu, pf);
-  trial_max_drift_ = std::max(max_drift_, drift);
-  has_trial_       = true;
+  PetscCall(applyToPairs(u, f, [&](const PetscScalar *pu, PetscScalar *pf) {
+    const double drift = dim_ == 2 ? updatePairs<2>(law, pairs_, tangent_.data(), trial_states2_, trial_jump_, pu, pf)
+                                   : updatePairs<3>(law, pairs_, tangent_.data(), trial_states3_, trial_jump_, pu, pf);
+    trial_max_drift_   = std::max(max_drift_, drift);
+  }));
+  has_trial_ = true;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceAssembler::applyToPairs(Vec x, Vec f, const std::function<void(const PetscScalar *, PetscScalar *)> &kernel) {
+  const PetscScalar *px;
+  PetscScalar       *pf;
+  PetscFunctionBeginUser;
+  PetscCall(VecScatterBegin(scatter_, x, pair_u_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(scatter_, x, pair_u_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGetArrayRead(pair_u_, &px));
+  PetscCall(VecGetArray(pair_f_, &pf));
+  kernel(px, pf);
   PetscCall(VecRestoreArray(pair_f_, &pf));
-  PetscCall(VecRestoreArrayRead(pair_u_, &pu));
+  PetscCall(VecRestoreArrayRead(pair_u_, &px));
   PetscCall(VecScatterBegin(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecScatterEnd(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));
   PetscFunctionReturn(0);
@@ -216,18 +224,10 @@ void dampPairs(const mesh::InterfacePairs &pairs, const std::vector<double> &das
 PetscErrorCode InterfaceAssembler::AddDampingForces(Vec v, Vec f) {
   PetscFunctionBeginUser;
   if (contact_damping_ == 0) PetscFunctionReturn(0);
-  PetscCall(VecScatterBegin(scatter_, v, pair_u_, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(scatter_, v, pair_u_, INSERT_VALUES, SCATTER_FORWARD));
-  const PetscScalar *pv;
-  PetscScalar       *pf;
-  PetscCall(VecGetArrayRead(pair_u_, &pv));
-  PetscCall(VecGetArray(pair_f_, &pf));
-  if (dim_ == 2) dampPairs<2>(pairs_, dashpot_, trial_states2_, pv, pf);
-  else dampPairs<3>(pairs_, dashpot_, trial_states3_, pv, pf);
-  PetscCall(VecRestoreArray(pair_f_, &pf));
-  PetscCall(VecRestoreArrayRead(pair_u_, &pv));
-  PetscCall(VecScatterBegin(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecScatterEnd(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(applyToPairs(v, f, [&](const PetscScalar *pv, PetscScalar *pf) {
+    if (dim_ == 2) dampPairs<2>(pairs_, dashpot_, trial_states2_, pv, pf);
+    else dampPairs<3>(pairs_, dashpot_, trial_states3_, pv, pf);
+  }));
   PetscFunctionReturn(0);
 }
 

@@ -78,6 +78,9 @@ public:
   const physics::InterfaceParams &params() const { return params_; }
 
 private:
+  // Gathers x at this rank's pairs (dim values per node, soil node then structure node), lets
+  // kernel fill the pair forces, and adds them to f wherever the nodes are owned.
+  PetscErrorCode applyToPairs(Vec x, Vec f, const std::function<void(const PetscScalar *, PetscScalar *)> &kernel);
   // Adds 2 sum_j |k(p, n, i, j)| to both nodes' rows of every pair (a +k/-k coupling of the
   // pair's nodes; n is the pair's normal).
   PetscErrorCode addPairRowAbsSums(Vec rowabs, const std::function<double(size_t, const double *, PetscInt, PetscInt)> &k);
