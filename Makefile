@@ -38,7 +38,7 @@ run: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) build-only && $(MAKE) --no-print-directory run-only
 
 run-only: build-only
-	mpiexec $(MPIEXEC_FLAGS) -n $(NP) $(BUILD)/slipwave -options_file config/scenes/default.yaml -output_dir $(BUILD)/run/default
+	mpiexec $(MPIEXEC_FLAGS) -n $(NP) $(BUILD)/slipwave -options_file config/scenes/default.yaml -output_dir $(BUILD)/run/default -output_overwrite
 	/usr/bin/python3 scripts/plot_results.py $(BUILD)/run/default
 	@echo "Open $(BUILD)/run/default/volume.xmf and interface_base.xmf in ParaView (default reader); plots in $(BUILD)/run/default/plots/"
 

@@ -8,6 +8,7 @@
 #include "slipwave/app/divergence_guard.hpp"
 #include "slipwave/app/energy_csv.hpp"
 #include "slipwave/app/initial_conditions.hpp"
+#include "slipwave/app/output_dir.hpp"
 #include "slipwave/app/output_frames.hpp"
 #include "slipwave/app/run_report.hpp"
 #include "slipwave/core/log_events.hpp"
@@ -30,6 +31,7 @@ struct RunOptions {
   PetscReal energy_growth_limit            = 2.0;
   PetscBool dry_run                        = PETSC_FALSE;
   PetscBool fields                         = PETSC_TRUE;
+  PetscBool overwrite                      = PETSC_FALSE;
   PetscReal initial_velocity[3]            = {0, 0, 0};
   PetscInt  checkpoint_interval            = 0;
   char      restart[PETSC_MAX_PATH_LEN]    = "";
@@ -64,6 +66,8 @@ PetscErrorCode readRunOptions(MPI_Comm comm, RunOptions *o) {
                                nullptr));
   PetscCall(PetscOptionsReal("-output_interval", "time between field outputs [s], > 0 (default: 50 frames over -ts_max_time)", "SimulationRun", o->output_interval,
                              &o->output_interval, nullptr));
+  PetscCall(PetscOptionsBool("-output_overwrite", "delete an earlier run's files in -output_dir first (without it such a folder is refused)", "SimulationRun",
+                             o->overwrite, &o->overwrite, nullptr));
   PetscCall(PetscOptionsBool("-output_fields", "write volume fields (HDF5 + XDMF)", "SimulationRun", o->fields, &o->fields, nullptr));
   PetscCall(PetscOptionsReal("-progress_interval", "wall-clock time between progress lines [s], >= 0 (0: every step)", "SimulationRun", o->progress_interval,
                              &o->progress_interval, nullptr));
@@ -159,6 +163,9 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
 PetscErrorCode setUp(MPI_Comm comm, Run *r) {
   PetscFunctionBeginUser;
   PetscCall(readRunOptions(comm, &r->opt));
+  PetscBool help;
+  PetscCall(PetscOptionsHasHelp(nullptr, &help));
+  if (!help) PetscCall(OutputDirPrepare(comm, {r->opt.output_dir, (bool)r->opt.overwrite, !r->opt.dry_run, r->opt.restart}));
   PetscCall(model::TimeStepOptionsRead(comm, &r->time_step));
   PetscCall(model::ElastodynamicsCreate(comm, &r->model));
   PetscCall(model::StableStepCompute(&r->model, &r->step));
@@ -221,7 +228,6 @@ PetscErrorCode openOutputs(Run *r, TS ts) {
   if (r->rank == 0) {
     PetscReal dt;
     PetscCall(TSGetTimeStep(ts, &dt));
-    std::filesystem::create_directories(r->opt.output_dir);
     PetscCall(r->energy_csv.Open(r->opt.output_dir, restarted, r->restart_step));
     WriteRunInfo(r->model, r->opt.output_dir, dt);
   }
