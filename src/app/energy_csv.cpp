@@ -1,6 +1,7 @@
 #include "slipwave/app/energy_csv.hpp"
 
 #include <array>
+#include <cstdio>
 
 namespace slipwave::app {
 namespace {
@@ -19,12 +20,12 @@ std::string header() {
 
 } // namespace
 
-PetscErrorCode EnergyCsv::Open(const std::string &dir, bool restarted, PetscInt restart_step) {
+PetscErrorCode EnergyCsv::Open(const std::string &dir, const std::string &previous, PetscInt restart_step) {
   const std::string path = dir + "/energy.csv";
   PetscFunctionBeginUser;
   std::string kept = header();
-  if (restarted) {
-    if (FILE *in = std::fopen(path.c_str(), "r")) {
+  if (!previous.empty()) {
+    if (FILE *in = std::fopen(previous.c_str(), "r")) {
       char line[4096];
       kept.clear();
       while (std::fgets(line, sizeof line, in)) {
@@ -36,7 +37,8 @@ PetscErrorCode EnergyCsv::Open(const std::string &dir, bool restarted, PetscInt 
   }
   file_ = std::fopen(path.c_str(), "w");
   PetscCheck(file_, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output_dir = %s: cannot write energy.csv there", dir.c_str());
-  std::fputs(kept.c_str(), file_);
+  pending_ = kept;
+  Flush();
   PetscFunctionReturn(0);
 }
 
@@ -58,17 +60,27 @@ void EnergyCsv::Append(PetscInt step, PetscReal t, const model::EnergyLedger &e,
                                                            e.shadow - e.shadow_start,
                                                            e.balance_error,
                                                            e.relativeError()};
-  std::fprintf(file_, "%" PetscInt_FMT, step);
+  char cell[32];
+  std::snprintf(cell, sizeof cell, "%" PetscInt_FMT, step);
+  pending_ += cell;
   // The relative error is a ratio read at a glance: 4 digits; the energies keep 10.
-  for (size_t k = 0; k + 1 < values.size(); ++k) std::fprintf(file_, ",%.10g", values[k]);
-  std::fprintf(file_, ",%.3e\n", values.back());
+  for (size_t k = 0; k + 1 < values.size(); ++k) {
+    std::snprintf(cell, sizeof cell, ",%.10g", values[k]);
+    pending_ += cell;
+  }
+  std::snprintf(cell, sizeof cell, ",%.3e\n", values.back());
+  pending_ += cell;
 }
 
 void EnergyCsv::Flush() {
-  if (file_) std::fflush(file_);
+  if (!file_) return;
+  std::fwrite(pending_.data(), 1, pending_.size(), file_);
+  std::fflush(file_);
+  pending_.clear();
 }
 
 void EnergyCsv::Close() {
+  Flush();
   if (file_) std::fclose(file_);
   file_ = nullptr;
 }

@@ -11,6 +11,7 @@
 #include "slipwave/app/output_dir.hpp"
 #include "slipwave/app/output_frames.hpp"
 #include "slipwave/app/run_report.hpp"
+#include "slipwave/app/stop_request.hpp"
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/core/options_check.hpp"
 #include "slipwave/io/stations.hpp"
@@ -109,6 +110,25 @@ PetscErrorCode appendEnergyRow(Run *r, PetscInt step, PetscReal t) {
   PetscFunctionReturn(0);
 }
 
+// At every output time, a SIGTERM and the end: the rows sampled so far go to disk.
+PetscErrorCode flushSeries(Run *r) {
+  PetscFunctionBeginUser;
+  r->energy_csv.Flush();
+  PetscCall(r->stations.Flush(r->model.comm, r->opt.output_dir));
+  PetscFunctionReturn(0);
+}
+
+// A SIGTERM stops the run here, between steps, with everything sampled so far on disk.
+PetscErrorCode stopIfRequested(Run *r, PetscInt step, PetscReal t) {
+  bool requested;
+  PetscFunctionBeginUser;
+  PetscCall(StopRequested(r->model.comm, &requested));
+  if (!requested) PetscFunctionReturn(0);
+  PetscCall(flushSeries(r));
+  SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT, "stopped by SIGTERM after step %" PetscInt_FMT ", t = %g s; stations and energy.csv hold every step up to it, the fields every output time before it (%s)",
+          step - 1, (double)t, r->opt.output_dir);
+}
+
 PetscErrorCode checkpointIfDue(Run *r, TS ts, PetscInt step) {
   PetscFunctionBeginUser;
   if (r->opt.checkpoint_interval > 0 && step > 0 && step % r->opt.checkpoint_interval == 0) {
@@ -142,6 +162,7 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
     r->resumed = false;
     PetscFunctionReturn(0);
   }
+  PetscCall(stopIfRequested(r, step, t));
   PetscCall(TS2GetSolution(ts, &u, &v));
   PetscCall(time::CentralDifferenceGetAcceleration(ts, &a));
   PetscCall(TSGetTimeStep(ts, &h));
@@ -150,7 +171,9 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   PetscCall(DivergenceGuard(r->model.comm, r->model.dim, r->ledger, r->opt.energy_growth_limit, r->step, h, step, t, u, v));
   PetscCall(r->stations.Sample(r->model.dm, t, u, v, a));
   PetscCall(appendEnergyRow(r, step, t));
-  if (r->opt.fields) PetscCall(r->frames.WriteIfDue(r->model, step, t, last, u, v, a));
+  bool due;
+  PetscCall(r->frames.WriteIfDue(r->model, step, t, last, u, v, a, &due));
+  if (due) PetscCall(flushSeries(r));
   PetscCall(checkpointIfDue(r, ts, step));
   PetscCall(printProgressIfDue(r, step, t, h, last));
   PetscFunctionReturn(0);
@@ -221,6 +244,12 @@ PetscErrorCode setInitialState(Run *r, TS ts, Vec u, Vec v) {
   PetscFunctionReturn(0);
 }
 
+// The folder of the -restart file: its energy.csv and frame files carry the series on.
+std::string checkpointDir(const Run *r) {
+  const std::filesystem::path parent = std::filesystem::path(r->opt.restart).parent_path();
+  return parent.empty() ? "." : parent.string();
+}
+
 // OUTPUT_DIR with energy.csv and run_info.json (rank 0), and the output frames.
 PetscErrorCode openOutputs(Run *r, TS ts) {
   const bool restarted = r->opt.restart[0];
@@ -228,20 +257,20 @@ PetscErrorCode openOutputs(Run *r, TS ts) {
   if (r->rank == 0) {
     PetscReal dt;
     PetscCall(TSGetTimeStep(ts, &dt));
-    PetscCall(r->energy_csv.Open(r->opt.output_dir, restarted, r->restart_step));
+    PetscCall(r->energy_csv.Open(r->opt.output_dir, restarted ? checkpointDir(r) + "/energy.csv" : "", r->restart_step));
     WriteRunInfo(r->model, r->opt.output_dir, dt);
   }
   // Default: 50 frames over the run.
   const PetscReal interval = r->opt.output_interval > 0 ? r->opt.output_interval : r->max_time / 50;
-  if (r->opt.fields) PetscCall(r->frames.Open(r->model, r->opt.output_dir, interval, restarted));
+  PetscCall(r->frames.Open(r->model, r->opt.output_dir, interval, r->opt.fields, restarted ? checkpointDir(r) : ""));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode closeOutputs(Run *r) {
   PetscFunctionBeginUser;
   r->energy_csv.Close();
-  PetscCall(r->stations.Write(r->model.comm, r->opt.output_dir));
-  if (r->opt.fields) PetscCall(r->frames.Close());
+  PetscCall(r->stations.Flush(r->model.comm, r->opt.output_dir));
+  PetscCall(r->frames.Close());
   PetscFunctionReturn(0);
 }
 
@@ -283,6 +312,7 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
   PetscCallMPI(MPI_Comm_rank(comm, &r->rank));
   PetscCall(LogEventsRegister());
   PetscCall(time::CentralDifferenceRegister());
+  PetscCall(StopRequestInstall());
   PetscCall(PetscLogStagePush(stage_setup));
   PetscCall(setUp(comm, r));
   PetscCall(createTimeStepper(r, &ts));

@@ -2,6 +2,8 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
+#include <climits>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -182,68 +184,120 @@ PetscErrorCode Stations::Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Stations::Write(MPI_Comm comm, const std::string &dir) const {
+namespace {
+
+// The four datasets of a station's group and their widths (time: one column).
+const char *const kDatasets[4] = {"time", "displacement", "velocity", "acceleration"};
+
+// Rows per HDF5 chunk: a few KiB, so a short run's file stays small and a long one's appends
+// touch few chunks.
+constexpr hsize_t kChunkRows = 256;
+
+// A new, empty, extendible dataset: [0] or [0, width], growing along the first dimension.
+hid_t createExtendible(hid_t group, const char *name, int width) {
+  const int     rank     = width == 0 ? 1 : 2;
+  const hsize_t dims[2]  = {0, (hsize_t)width}, maxdims[2] = {H5S_UNLIMITED, (hsize_t)width};
+  const hsize_t chunk[2] = {kChunkRows, (hsize_t)std::max(width, 1)};
+  hid_t         space    = H5Screate_simple(rank, dims, maxdims);
+  hid_t         plist    = H5Pcreate(H5P_DATASET_CREATE);
+  H5Pset_chunk(plist, rank, chunk);
+  hid_t dset = H5Dcreate2(group, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, plist, H5P_DEFAULT);
+  H5Pclose(plist);
+  H5Sclose(space);
+  return dset;
+}
+
+// Appends rows (row-major, width columns; width 0: a 1D dataset) to an extendible dataset.
+herr_t appendRows(hid_t dset, const std::vector<double> &rows, int width) {
+  const int cols = std::max(width, 1);
+  const int rank = width == 0 ? 1 : 2;
+  hsize_t   dims[2], add[2] = {rows.size() / cols, (hsize_t)cols}, start[2] = {0, 0};
+  hid_t     space = H5Dget_space(dset);
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  H5Sclose(space);
+  start[0]           = dims[0];
+  const hsize_t grown[2] = {dims[0] + add[0], (hsize_t)cols};
+  herr_t        status   = H5Dset_extent(dset, grown);
+  space                  = H5Dget_space(dset);
+  hid_t memory           = H5Screate_simple(rank, add, nullptr);
+  if (status >= 0) status = H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, add, nullptr);
+  if (status >= 0) status = H5Dwrite(dset, H5T_NATIVE_DOUBLE, memory, space, H5P_DEFAULT, rows.data());
+  H5Sclose(memory);
+  H5Sclose(space);
+  return status;
+}
+
+} // namespace
+
+// Gathers the rows sampled since the last flush on rank 0, station by station, in station
+// order, and appends them to the CSV files and to stations.h5 (created at the first flush).
+PetscErrorCode Stations::Flush(MPI_Comm comm, const std::string &dir) {
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   if (names_.empty()) PetscFunctionReturn(0);
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  const int row = 1 + 3 * (int)dim_;
-  // Every record goes to rank 0, station by station, in station order.
-  std::vector<std::vector<double>> records(names_.size());
+  const int                        row = rowWidth();
+  const size_t                     from = flushed_rows_ * row;
+  std::vector<std::vector<double>> fresh(names_.size());
   for (size_t s = 0; s < names_.size(); ++s) {
-    int                 mine = 0, count = 0;
-    const Local        *l    = nullptr;
+    const Local *l = nullptr;
     for (const Local &x : local_)
       if (x.station == (PetscInt)s) l = &x;
-    mine = l ? (int)l->record.size() : -1;
     PetscMPIInt owner_claim = l ? rank : INT32_MAX, owner;
     PetscCallMPI(MPI_Allreduce(&owner_claim, &owner, 1, MPI_INT, MPI_MIN, comm));
-    if (rank == owner) count = mine;
+    int count = rank == owner ? (int)(l->record.size() - from) : 0;
     PetscCallMPI(MPI_Bcast(&count, 1, MPI_INT, owner, comm));
-    records[s].resize(count);
-    if (rank == owner && owner == 0) records[s] = l->record;
-    else if (rank == owner) PetscCallMPI(MPI_Send(l->record.data(), count, MPI_DOUBLE, 0, (int)s, comm));
-    else if (rank == 0) PetscCallMPI(MPI_Recv(records[s].data(), count, MPI_DOUBLE, owner, (int)s, comm, MPI_STATUS_IGNORE));
+    fresh[s].resize(count);
+    if (rank == owner && owner == 0) fresh[s].assign(l->record.begin() + from, l->record.end());
+    else if (rank == owner) PetscCallMPI(MPI_Send(l->record.data() + from, count, MPI_DOUBLE, 0, (int)s, comm));
+    else if (rank == 0) PetscCallMPI(MPI_Recv(fresh[s].data(), count, MPI_DOUBLE, owner, (int)s, comm, MPI_STATUS_IGNORE));
   }
+  const bool first = flushed_rows_ == 0;
+  flushed_rows_ += fresh[0].size() / row; // every station samples every step: the same count
   if (rank != 0) PetscFunctionReturn(0);
-  std::filesystem::create_directories(dir + "/stations");
+  if (first) {
+    std::error_code error;
+    std::filesystem::create_directories(dir + "/stations", error);
+    PetscCheck(!error, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot create %s/stations: %s", dir.c_str(), error.message().c_str());
+  }
   const char *axes = "xyz";
   for (size_t s = 0; s < names_.size(); ++s) {
     const std::string path = dir + "/stations/" + names_[s] + ".csv";
-    FILE             *fp   = std::fopen(path.c_str(), "w");
+    FILE             *fp   = std::fopen(path.c_str(), first ? "w" : "a");
     PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", path.c_str());
-    std::fprintf(fp, "t");
-    for (const char *q : {"u", "v", "a"})
-      for (PetscInt d = 0; d < dim_; ++d) std::fprintf(fp, ",%s_%c", q, axes[d]);
-    std::fprintf(fp, "\n");
-    for (size_t r = 0; r + row <= records[s].size(); r += row) {
-      for (int k = 0; k < row; ++k) std::fprintf(fp, k ? ",%.17g" : "%.17g", records[s][r + k]);
+    if (first) {
+      std::fprintf(fp, "t");
+      for (const char *q : {"u", "v", "a"})
+        for (PetscInt d = 0; d < dim_; ++d) std::fprintf(fp, ",%s_%c", q, axes[d]);
       std::fprintf(fp, "\n");
     }
-    std::fclose(fp);
+    for (size_t r = 0; r + row <= fresh[s].size(); r += row) {
+      for (int k = 0; k < row; ++k) std::fprintf(fp, k ? ",%.17g" : "%.17g", fresh[s][r + k]);
+      std::fprintf(fp, "\n");
+    }
+    PetscCheck(std::fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", path.c_str());
   }
+  // Opened and closed at every flush: a closed file is complete on disk, whatever happens next.
   const std::string h5path = dir + "/stations.h5";
-  hid_t             file   = H5Fcreate(h5path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot create %s", h5path.c_str());
-  for (size_t s = 0; s < names_.size(); ++s) {
-    const hsize_t nt    = records[s].size() / row;
-    hid_t         group = H5Gcreate2(file, names_[s].c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    const char   *dsets[4] = {"time", "displacement", "velocity", "acceleration"};
-    for (int q = 0; q < 4; ++q) {
-      const int           width = q == 0 ? 1 : (int)dim_;
-      std::vector<double> buf(nt * width);
-      for (hsize_t r = 0; r < nt; ++r)
-        for (int k = 0; k < width; ++k) buf[r * width + k] = records[s][r * row + (q == 0 ? 0 : 1 + (q - 1) * dim_ + k)];
-      hsize_t dims[2] = {nt, (hsize_t)width};
-      hid_t   space   = H5Screate_simple(q == 0 ? 1 : 2, dims, nullptr);
-      hid_t   dset    = H5Dcreate2(group, dsets[q], H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-      H5Dwrite(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data());
-      H5Dclose(dset);
-      H5Sclose(space);
+  hid_t file = first ? H5Fcreate(h5path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT) : H5Fopen(h5path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", h5path.c_str());
+  herr_t status = 0;
+  for (size_t s = 0; s < names_.size() && status >= 0; ++s) {
+    hid_t group = first ? H5Gcreate2(file, names_[s].c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : H5Gopen2(file, names_[s].c_str(), H5P_DEFAULT);
+    const size_t nt = fresh[s].size() / row;
+    for (int q = 0; q < 4 && status >= 0; ++q) {
+      const int           width = q == 0 ? 0 : (int)dim_;
+      std::vector<double> buf(nt * std::max(width, 1));
+      for (size_t r = 0; r < nt; ++r)
+        for (int k = 0; k < std::max(width, 1); ++k) buf[r * std::max(width, 1) + k] = fresh[s][r * row + (q == 0 ? 0 : 1 + (q - 1) * dim_ + k)];
+      hid_t dset = first ? createExtendible(group, kDatasets[q], width) : H5Dopen2(group, kDatasets[q], H5P_DEFAULT);
+      status     = dset < 0 ? (herr_t)-1 : appendRows(dset, buf, width);
+      if (dset >= 0) H5Dclose(dset);
     }
     H5Gclose(group);
   }
-  H5Fclose(file);
+  const herr_t closed = H5Fclose(file);
+  PetscCheck(status >= 0 && closed >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot append to %s", h5path.c_str());
   PetscFunctionReturn(0);
 }
 
@@ -255,6 +309,7 @@ void Stations::saveRecords(std::vector<double> *out) const {
 void Stations::loadRecords(const double *in, size_t n) {
   const size_t each = local_.empty() ? 0 : n / local_.size();
   for (size_t k = 0; k < local_.size(); ++k) local_[k].record.assign(in + k * each, in + (k + 1) * each);
+  flushed_rows_ = 0; // the next flush writes the files anew with every row so far
 }
 
 PetscErrorCode Stations::Destroy() {

@@ -1,4 +1,7 @@
 // OUTPUT_DIR/energy.csv: one row per step with the energy ledger and the interfaces' totals.
+// Rows are kept in memory and written, whole, by Flush (at every output time, before a
+// checkpoint, at the end): a killed run leaves a file of complete rows up to its last output
+// time, never a torn row (the stdio buffer alone would write out whatever 4 KiB it held).
 // The column names and the values of a row are listed side by side in energy_csv.cpp, so the
 // header and the rows cannot drift apart. Written by rank 0 only; on the other ranks the file
 // is never opened and Append does nothing.
@@ -15,16 +18,18 @@ namespace slipwave::app {
 
 class EnergyCsv {
 public:
-  // A new file with its header; after a restart (restarted), the header and the rows up to
-  // restart_step of the file already there are kept and the run appends to them.
-  PetscErrorCode Open(const std::string &dir, bool restarted, PetscInt restart_step);
+  // A new file with its header; after a restart, previous names the energy.csv beside the
+  // checkpoint: its rows up to restart_step are copied (the new folder is complete on its own)
+  // and the run appends to them.
+  PetscErrorCode Open(const std::string &dir, const std::string &previous, PetscInt restart_step);
   void           Append(PetscInt step, PetscReal t, const model::EnergyLedger &ledger, const interface::InterfaceTotals &interfaces);
-  // Before a checkpoint: the file on disk holds every row up to the checkpointed step.
+  // Writes the rows kept since the last flush: the file on disk then holds every row so far.
   void Flush();
   void Close();
 
 private:
-  FILE *file_ = nullptr;
+  FILE       *file_ = nullptr;
+  std::string pending_; // rows not yet written
 };
 
 } // namespace slipwave::app

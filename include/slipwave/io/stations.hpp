@@ -1,7 +1,10 @@
 // Stations: points given by coordinates (-station_coordinates x1,y1,x2,y2,... with
 // -station_names, or -station_file with rows name,x,y[,z]) where u, v, a are interpolated
-// with the cell's shape functions every step. At the end rank 0 writes
-// DIR/stations/<name>.csv and DIR/stations.h5.
+// with the cell's shape functions every step. At every output time (Flush) rank 0 appends the
+// rows sampled since the last flush to DIR/stations/<name>.csv and to DIR/stations.h5
+// (extendible datasets, file closed after each append), so a killed run keeps every row up to
+// its last output time. The records stay in memory too: a checkpoint holds them all, and the
+// first flush after a restart writes the files anew (a restart into a new folder is complete).
 // Which cell: any cell holding the point gives the same value (the field is continuous inside
 // a body) except on an interface, where the soil and the structure cells hold different
 // nodes of each split pair. There the station records the side -station_side chooses
@@ -28,7 +31,8 @@ public:
   bool           empty() const { return names_.empty(); }
   // Samples the global u, v, a at time t.
   PetscErrorCode Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a);
-  PetscErrorCode Write(MPI_Comm comm, const std::string &dir) const;
+  // Collective: appends the rows sampled since the last flush to the station files.
+  PetscErrorCode Flush(MPI_Comm comm, const std::string &dir);
   PetscErrorCode Destroy();
   const std::vector<std::string> &names() const { return names_; }
   // Checkpoints: this rank's records, station after station (each the same length).
@@ -50,6 +54,7 @@ private:
   std::vector<Local>       local_;
   std::vector<std::string> ambiguities_;
   Vec                      work_[3] = {nullptr, nullptr, nullptr};
+  size_t                   flushed_rows_ = 0; // rows per station already in the files
 };
 
 } // namespace slipwave::io
