@@ -125,8 +125,8 @@ PetscErrorCode stopIfRequested(Run *r, PetscInt step, PetscReal t) {
   PetscCall(StopRequested(r->model.comm, &requested));
   if (!requested) PetscFunctionReturn(0);
   PetscCall(flushSeries(r));
-  SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT, "stopped by SIGTERM after step %" PetscInt_FMT ", t = %g s; stations and energy.csv hold every step up to it, the fields every output time before it (%s)",
-          step - 1, (double)t, r->opt.output_dir);
+  SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT, "stopped by SIGTERM after step %" PetscInt_FMT ", t = %g s; stations and energy.csv hold every step up to it, the fields every output time up to it (%s)",
+          step, (double)t, r->opt.output_dir);
 }
 
 PetscErrorCode checkpointIfDue(Run *r, TS ts, PetscInt step) {
@@ -162,7 +162,6 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
     r->resumed = false;
     PetscFunctionReturn(0);
   }
-  PetscCall(stopIfRequested(r, step, t));
   PetscCall(TS2GetSolution(ts, &u, &v));
   PetscCall(time::CentralDifferenceGetAcceleration(ts, &a));
   PetscCall(TSGetTimeStep(ts, &h));
@@ -176,6 +175,7 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   if (due) PetscCall(flushSeries(r));
   PetscCall(checkpointIfDue(r, ts, step));
   PetscCall(printProgressIfDue(r, step, t, h, last));
+  PetscCall(stopIfRequested(r, step, t));
   PetscFunctionReturn(0);
 }
 
