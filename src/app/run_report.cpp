@@ -136,7 +136,7 @@ PetscErrorCode ReportSetup(const model::Elastodynamics &model, const model::Stab
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ReportEnd(const model::Elastodynamics &model, const model::EnergyLedger &ledger, bool with_stations, PetscInt steps, double wall,
+PetscErrorCode ReportEnd(const model::Elastodynamics &model, const model::EnergyLedger &ledger, const std::vector<std::string> &files, PetscInt steps, double wall,
                          const std::string &output_dir) {
   MPI_Comm comm = model.comm;
   PetscFunctionBeginUser;
@@ -149,8 +149,10 @@ PetscErrorCode ReportEnd(const model::Elastodynamics &model, const model::Energy
   if (!model.interfaces.empty()) PetscCall(PetscPrintf(comm, "contact dashpots (all interfaces): took %.4g J\n", ledger.contact_damped));
   PetscCall(PetscPrintf(comm, "done: %" PetscInt_FMT " steps in %.2f s wall (%.3g s per step); energy balance error %.2e of the largest energy\n", steps, wall,
                         wall / std::max<PetscInt>(steps, 1), ledger.relativeError()));
-  PetscCall(PetscPrintf(comm, "output in %s/: volume.xmf%s (open in ParaView), energy.csv%s\n", output_dir.c_str(), model.interfaces.empty() ? "" : ", interface_<name>.xmf",
-                        with_stations ? ", stations/*.csv, stations.h5" : ""));
+  std::string listed;
+  for (const std::string &name : files) listed += (listed.empty() ? "" : ", ") + (name == "stations" ? std::string("stations/*.csv") : name);
+  PetscCall(PetscPrintf(comm, "output in %s/: %s%s\n", output_dir.c_str(), listed.empty() ? "nothing" : listed.c_str(),
+                        listed.find(".xmf") != std::string::npos ? " (open the .xmf files in ParaView)" : ""));
   PetscFunctionReturn(0);
 }
 

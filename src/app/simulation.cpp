@@ -295,7 +295,8 @@ PetscErrorCode solve(Run *r, TS ts) {
   PetscCall(PetscTime(&wall_end));
   PetscCall(TSGetStepNumber(ts, &steps));
   PetscCall(closeOutputs(r));
-  PetscCall(ReportEnd(r->model, r->ledger, !r->stations.empty(), steps, wall_end - r->wall_start, r->opt.output_dir));
+  // Listed from the folder itself: it held none of these files before the run (output_dir.hpp).
+  PetscCall(ReportEnd(r->model, r->ledger, OutputDirRunFiles(r->opt.output_dir), steps, wall_end - r->wall_start, r->opt.output_dir));
   PetscCall(VecDestroy(&u));
   PetscCall(VecDestroy(&v));
   PetscFunctionReturn(0);

@@ -22,8 +22,8 @@ PetscErrorCode ReportSetup(const model::Elastodynamics &model, const model::Stab
 void WriteRunInfo(const model::Elastodynamics &model, const std::string &output_dir, double dt);
 
 // The interfaces' final states, the contact dashpots' work, steps and wall time, the energy
-// balance error and where the output is.
-PetscErrorCode ReportEnd(const model::Elastodynamics &model, const model::EnergyLedger &ledger, bool with_stations, PetscInt steps, double wall,
+// balance error and where the output is: files, the names of the run's files in it.
+PetscErrorCode ReportEnd(const model::Elastodynamics &model, const model::EnergyLedger &ledger, const std::vector<std::string> &files, PetscInt steps, double wall,
                          const std::string &output_dir);
 
 } // namespace slipwave::app
