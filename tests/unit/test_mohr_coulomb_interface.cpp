@@ -308,6 +308,10 @@ void testTensionCutoffAndCohesion() {
   step2(law, s, 0.0, -2e-5); // back to the zero-stress opening: the plateau is reversible
   unit::near(s.sigma_N, 0.0, 0.0, 1e-9, "tension cut-off: closing back to u = 0 gives sigma_N = 0");
   unit::check(yield2(law, s) <= 1e-12 * p.c, "tension: f <= 0 after closing");
+  // Pulled beyond e_ini = 1 mm to u = 2 mm: open and traction-free, so it holds no energy (the
+  // plateau's sigma_t u_t / 2 + sigma_t (u - u_t) = 2.0 J/m^2 belongs to a pair still bonded).
+  step2(law, s, 0.0, 2e-3);
+  unit::check(s.status == InterfaceStatus::Open && detail::storedEnergy<2>(law, s) == 0.0, "tension: an open pair stores no energy");
 
   // phi = 0: Tresca, strength c whatever the normal traction.
   InterfaceParams q = baseParams();

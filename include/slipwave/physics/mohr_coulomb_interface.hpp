@@ -89,9 +89,12 @@ inline double yieldValue(const InterfaceLaw &law, double norm_T, double sigma_N)
   return norm_T + sigma_N * law.tan_phi - law.c;
 }
 
-// Elastic energy a pair holds; lost when it opens (the energy of a broken bond).
+// Elastic energy a pair holds; lost when it opens (the energy of a broken bond). An open pair
+// is traction-free and holds nothing, however wide it opens: its `opening` is a gap, not the
+// stretch of a spring.
 template <int Dim>
 double storedEnergy(const InterfaceLaw &law, const InterfaceState<Dim> &s) {
+  if (s.status == InterfaceStatus::Open) return 0.0;
   double tt = 0.0;
   for (int i = 0; i < Dim - 1; ++i) tt += s.sigma_T[i] * s.sigma_T[i];
   const double u = s.opening, u_t = law.sigma_t / law.E;
