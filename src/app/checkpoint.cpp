@@ -1,7 +1,11 @@
 #include "slipwave/app/checkpoint.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 
+#include "slipwave/app/checkpoint_seal.hpp"
+#include "slipwave/app/scene_options.hpp"
 #include "slipwave/model/attenuation.hpp"
 #include "slipwave/model/free_field.hpp"
 #include "slipwave/time/central_difference.hpp"
@@ -10,8 +14,9 @@ namespace slipwave::app {
 namespace {
 
 constexpr PetscInt kMagic   = 0x53574350; // "SWCP"
-constexpr PetscInt kVersion = 4; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
-                                 // 4: state only (no RHS force parts, no attenuation trial)
+constexpr PetscInt kVersion = 5; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
+                                 // 4: state only (no RHS force parts, no attenuation trial);
+                                 // 5: the scene options after the header, a seal at the end
 constexpr PetscInt kHeader  = 9;
 
 // The ledger as a flat array, in a fixed order.
@@ -85,6 +90,11 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
   const PetscInt header[kHeader] = {kMagic, kVersion, size, s.model->dim, step, (PetscInt)s.model->interfaces.size(), (PetscInt)s.frame_times->size(),
                                     (PetscInt)!s.model->initial_stress.empty(), s.model->free_field ? (PetscInt)s.model->free_field->sides.size() : 0};
   PetscCall(PetscViewerBinaryWrite(viewer, header, kHeader, PETSC_INT));
+  std::string scene;
+  PetscCall(SceneOptionsText(&scene));
+  const PetscInt scene_length = (PetscInt)scene.size();
+  PetscCall(PetscViewerBinaryWrite(viewer, &scene_length, 1, PETSC_INT));
+  PetscCall(PetscViewerBinaryWrite(viewer, scene.data(), scene_length, PETSC_CHAR));
   std::vector<double> scalars = {time, dt, *s.next_output};
   for (double x : ledgerArray(*s.ledger)) scalars.push_back(x);
   for (PetscReal t : *s.frame_times) scalars.push_back(t);
@@ -107,6 +117,7 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
     PetscCall(PetscViewerBinaryWrite(viewer, column.data(), n, PETSC_DOUBLE));
   }
   PetscCall(PetscViewerDestroy(&viewer));
+  if (rank == 0) PetscCheck(CheckpointSeal(tmp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot seal %s: %s", tmp.c_str(), std::strerror(errno));
   if (rank == 0) PetscCheck(std::rename(tmp.c_str(), path.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s", tmp.c_str(), path.c_str());
   PetscCallMPI(MPI_Barrier(comm));
   PetscFunctionReturn(0);
@@ -119,18 +130,25 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
   PetscInt    header[kHeader];
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
-  int readable = 0;
-  if (FILE *fp = std::fopen(path.c_str(), "rb")) {
-    readable = 1;
-    std::fclose(fp);
-  }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &readable, 1, MPI_INT, MPI_MIN, comm));
-  PetscCheck(readable, comm, PETSC_ERR_FILE_OPEN, "-restart = %s: cannot open the file; allowed: a checkpoint written by -checkpoint_interval", path.c_str());
+  PetscMPIInt rank;
+  char        problem[256] = "";
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) std::snprintf(problem, sizeof problem, "%s", CheckpointSealProblem(path).c_str());
+  PetscCallMPI(MPI_Bcast(problem, sizeof problem, MPI_CHAR, 0, comm));
+  PetscCheck(!problem[0], comm, PETSC_ERR_FILE_OPEN, "-restart = %s: %s; allowed: a complete checkpoint written by -checkpoint_interval", path.c_str(), problem);
   PetscCall(PetscViewerBinaryOpen(comm, path.c_str(), FILE_MODE_READ, &viewer));
   PetscCall(PetscViewerBinarySetSkipInfo(viewer, PETSC_TRUE));
   PetscCall(PetscViewerBinaryRead(viewer, header, kHeader, nullptr, PETSC_INT));
   PetscCheck(header[0] == kMagic && header[1] == kVersion, comm, PETSC_ERR_USER_INPUT, "-restart = %s is not a slipwave checkpoint (version %" PetscInt_FMT ")",
              path.c_str(), kVersion);
+  PetscInt scene_length;
+  PetscCall(PetscViewerBinaryRead(viewer, &scene_length, 1, nullptr, PETSC_INT));
+  std::string there(scene_length, '\0'), here;
+  PetscCall(PetscViewerBinaryRead(viewer, there.data(), scene_length, nullptr, PETSC_CHAR));
+  PetscCall(SceneOptionsText(&here));
+  const std::string differ = SceneOptionsDifference(there, here);
+  PetscCheck(differ.empty(), comm, PETSC_ERR_USER_INPUT, "-restart = %s was written with another scene: %s; allowed: the scene options of the run that wrote it (output, duration and progress options may change)",
+             path.c_str(), differ.c_str());
   PetscCheck(header[2] == size, comm, PETSC_ERR_USER_INPUT, "-restart = %s was written on %" PetscInt_FMT " ranks; allowed: restart on the same number of ranks (this run: %d)",
              path.c_str(), header[2], size);
   PetscCheck(header[3] == s.model->dim && header[5] == (PetscInt)s.model->interfaces.size(), comm, PETSC_ERR_USER_INPUT,
