@@ -167,7 +167,7 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   PetscCall(TSGetTimeStep(ts, &h));
   const bool last = t >= r->max_time * (1 - 1e-12);
   PetscCall(model::EnergyLedgerUpdate(&r->model, ts, h, &r->ledger));
-  PetscCall(DivergenceGuard(r->model.comm, r->model.dim, r->ledger, r->opt.energy_growth_limit, r->step, h, step, t, u, v));
+  PetscCall(DivergenceGuard(r->model, r->ledger, r->opt.energy_growth_limit, r->step, h, step, t, u, v, a));
   PetscCall(r->stations.Sample(r->model.dm, t, u, v, a));
   PetscCall(appendEnergyRow(r, step, t));
   bool due;

@@ -27,9 +27,7 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
   PetscCall(DMCreateGlobalVector(dm, &geometry_));
   PetscScalar *x;
   PetscCall(VecGetArray(u_local_, &x));
-  for (PetscInt c = 0; c < ncell; ++c)
-    for (PetscInt a = 0; a < nen; ++a)
-      for (PetscInt d = 0; d < dim; ++d) x[bulk.cellNodeOffset(c, a) + d] = bulk.cellCoordinates(c)[a * dim + d];
+  bulk.nodeCoordinates(x);
   PetscCall(VecRestoreArray(u_local_, &x));
   PetscCall(DMLocalToGlobal(dm, u_local_, INSERT_VALUES, geometry_));
   PetscCall(VecSetBlockSize(geometry_, dim));

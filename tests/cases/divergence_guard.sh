@@ -1,7 +1,9 @@
 # Divergence guard: an incident-wave record of 1e308 m/s^2 overflows the input force on the
-# first step. The run must stop with one line giving the step, the time, the node, the
-# field and the component, exit non-zero, and leave only finite values in its output files
-# (the guard runs before any output of the step).
+# first step. The run must stop with one line giving the step, the time, the node with its
+# coordinates, the field and the component, and the input that caused it (the incident wave,
+# with its record file), exit non-zero, and leave only finite values in its output files
+# (the guard runs before any output of the step). The input force acts on the bottom
+# boundary only, so after one step the first non-finite node lies at y = 0.
 set -eu
 . tests/tools/lib.sh
 printf 't,a\n0,0\n0.01,1e308\n0.02,1e308\n1,1e308\n' > "$WORK/huge.csv"
@@ -11,6 +13,6 @@ if $SW -mesh_box_faces 1,20 -mesh_box_upper 1,100 -regions soil -material_soil_r
   echo "the run did not stop"; exit 1
 fi
 cat "$WORK/err.txt"
-grep -Eq "^slipwave: error: diverged at step [0-9]+, t = [0-9.e+-]+ s: (displacement|velocity) is not finite at node [0-9]+ .*component [xy]" "$WORK/err.txt"
+grep -Eq "^slipwave: error: diverged at step 1, t = [0-9.e+-]+ s: (displacement|velocity|acceleration) is not finite at node [0-9]+ \([0-9.e+-]+, 0\), component [xy] .*; caused by the incident wave \(-input_stf: record .*/huge\.csv .*input force not finite" "$WORK/err.txt"
 [ "$(wc -l < "$WORK/err.txt")" -eq 1 ]
 $PY scripts/check_output.py "$WORK/out"

@@ -1,6 +1,7 @@
 // The divergence guard, run after every step: stops the run when the energy grows beyond a
-// multiple of the energy put in, or when it is not finite, and then says where the first
-// non-finite value is (node, component) and what limits the stable step.
+// multiple of the energy put in, or when it is not finite, and then says in one line where the
+// first non-finite value is (field, node with its coordinates, component), which input caused
+// it if one did (a material, gravity or tractions, the incident wave), and the stable step.
 #pragma once
 #include <petscvec.h>
 
@@ -10,9 +11,10 @@
 
 namespace slipwave::app {
 
-// ledger: updated for this step (its global sums cover every dof of u and v); growth_limit:
-// -energy_growth_limit; limit: the stable step, named in the messages; h: this step's size.
-PetscErrorCode DivergenceGuard(MPI_Comm comm, PetscInt dim, const model::EnergyLedger &ledger, PetscReal growth_limit, const model::StableStep &limit, PetscReal h,
-                               PetscInt step, PetscReal t, Vec u, Vec v);
+// ledger: updated for this step (its global sums cover every dof of u, v and the force parts);
+// growth_limit: -energy_growth_limit; limit: the stable step, named in the messages; h: this
+// step's size; u, v, a: the state after the step.
+PetscErrorCode DivergenceGuard(const model::Elastodynamics &model, const model::EnergyLedger &ledger, PetscReal growth_limit, const model::StableStep &limit, PetscReal h,
+                               PetscInt step, PetscReal t, Vec u, Vec v, Vec a);
 
 } // namespace slipwave::app

@@ -50,6 +50,13 @@ public:
   PetscInt  cellVertex(PetscInt c, PetscInt a) const { return cell_vertices_[c * nen_ + a]; }
   PetscInt  cellRegion(PetscInt c) const { return cell_region_[c]; }
   const double *cellCoordinates(PetscInt c) const { return &cell_coords_[c * nen_ * dim_]; }
+  // Writes every node's coordinates into a local vector's array of the displacement layout
+  // (node at offset o: entries o .. o+dim-1), so a node's place can be read like its u.
+  void nodeCoordinates(PetscScalar *local) const {
+    for (PetscInt c = 0; c < cellCount(); ++c)
+      for (PetscInt a = 0; a < nen_; ++a)
+        for (PetscInt d = 0; d < dim_; ++d) local[cellNodeOffset(c, a) + d] = cellCoordinates(c)[a * dim_ + d];
+  }
   double    minCellSize() const { return h_min_; }
 
 private:
