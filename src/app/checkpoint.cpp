@@ -123,6 +123,17 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CheckpointVerify(MPI_Comm comm, const std::string &path) {
+  PetscMPIInt rank;
+  char        problem[256] = "";
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) std::snprintf(problem, sizeof problem, "%s", CheckpointSealProblem(path).c_str());
+  PetscCallMPI(MPI_Bcast(problem, sizeof problem, MPI_CHAR, 0, comm));
+  PetscCheck(!problem[0], comm, PETSC_ERR_FILE_OPEN, "-restart = %s: %s; allowed: a complete checkpoint written by -checkpoint_interval", path.c_str(), problem);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s) {
   MPI_Comm    comm = s.model->comm;
   PetscMPIInt size;
@@ -130,12 +141,6 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
   PetscInt    header[kHeader];
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
-  PetscMPIInt rank;
-  char        problem[256] = "";
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) std::snprintf(problem, sizeof problem, "%s", CheckpointSealProblem(path).c_str());
-  PetscCallMPI(MPI_Bcast(problem, sizeof problem, MPI_CHAR, 0, comm));
-  PetscCheck(!problem[0], comm, PETSC_ERR_FILE_OPEN, "-restart = %s: %s; allowed: a complete checkpoint written by -checkpoint_interval", path.c_str(), problem);
   PetscCall(PetscViewerBinaryOpen(comm, path.c_str(), FILE_MODE_READ, &viewer));
   PetscCall(PetscViewerBinarySetSkipInfo(viewer, PETSC_TRUE));
   PetscCall(PetscViewerBinaryRead(viewer, header, kHeader, nullptr, PETSC_INT));

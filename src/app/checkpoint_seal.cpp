@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <system_error>
 
 namespace slipwave::app {
 namespace {
@@ -41,6 +43,8 @@ bool CheckpointSeal(const std::string &path) {
 }
 
 std::string CheckpointSealProblem(const std::string &path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) return "it is a folder";
   FILE *fp = std::fopen(path.c_str(), "rb");
   if (!fp) return std::string("cannot open the file (") + std::strerror(errno) + ")";
   Seal        seal{};

@@ -189,6 +189,7 @@ PetscErrorCode setUp(MPI_Comm comm, Run *r) {
   PetscBool help;
   PetscCall(PetscOptionsHasHelp(nullptr, &help));
   if (!help) PetscCall(OutputDirPrepare(comm, {r->opt.output_dir, (bool)r->opt.overwrite, !r->opt.dry_run, r->opt.restart}));
+  if (r->opt.restart[0]) PetscCall(CheckpointVerify(comm, r->opt.restart));
   PetscCall(model::TimeStepOptionsRead(comm, &r->time_step));
   PetscCall(model::ElastodynamicsCreate(comm, &r->model));
   PetscCall(model::StableStepCompute(&r->model, &r->step));

@@ -28,7 +28,11 @@ struct CheckpointState {
 };
 
 PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &state);
-// Restores everything into an already set-up run (TS solution vectors given).
+// Collective, before the heavy work: the file is there, whole and undamaged (its seal), or one
+// line says what is wrong with it.
+PetscErrorCode CheckpointVerify(MPI_Comm comm, const std::string &path);
+// Restores everything into an already set-up run (TS solution vectors given), after
+// CheckpointVerify; a checkpoint of another scene is refused, naming the options that differ.
 PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &state);
 
 } // namespace slipwave::app
