@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 
 #include "slipwave/app/checkpoint_seal.hpp"
 #include "slipwave/app/scene_options.hpp"
@@ -121,6 +122,11 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
   if (rank == 0) PetscCheck(std::rename(tmp.c_str(), path.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s", tmp.c_str(), path.c_str());
   PetscCallMPI(MPI_Barrier(comm));
   PetscFunctionReturn(0);
+}
+
+std::string CheckpointFolder(const std::string &path) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  return parent.empty() ? "." : parent.string();
 }
 
 PetscErrorCode CheckpointVerify(MPI_Comm comm, const std::string &path) {

@@ -1,5 +1,7 @@
 #include "slipwave/app/output_dir.hpp"
 
+#include "slipwave/app/checkpoint.hpp"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -74,7 +76,7 @@ std::string check(const OutputDirRequest &q) {
   const std::vector<std::string> old = OutputDirRunFiles(dir);
   if (old.empty()) return "";
   // A restart continues the series of the folder that holds its checkpoint.
-  if (!q.restart.empty() && sameFolder(fs::path(q.restart).parent_path().empty() ? fs::path(".") : fs::path(q.restart).parent_path(), dir)) return "";
+  if (!q.restart.empty() && sameFolder(CheckpointFolder(q.restart), dir)) return "";
   if (!q.overwrite) {
     std::string listed;
     for (size_t k = 0; k < old.size() && k < 4; ++k) listed += (k ? ", " : "") + old[k];

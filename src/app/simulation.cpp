@@ -1,7 +1,6 @@
 #include "slipwave/app/simulation.hpp"
 
 #include <cmath>
-#include <filesystem>
 #include <string>
 
 #include "slipwave/app/checkpoint.hpp"
@@ -245,12 +244,6 @@ PetscErrorCode setInitialState(Run *r, TS ts, Vec u, Vec v) {
   PetscFunctionReturn(0);
 }
 
-// The folder of the -restart file: its energy.csv and frame files carry the series on.
-std::string checkpointDir(const Run *r) {
-  const std::filesystem::path parent = std::filesystem::path(r->opt.restart).parent_path();
-  return parent.empty() ? "." : parent.string();
-}
-
 // OUTPUT_DIR with energy.csv and run_info.json (rank 0), and the output frames.
 PetscErrorCode openOutputs(Run *r, TS ts) {
   const bool restarted = r->opt.restart[0];
@@ -258,12 +251,12 @@ PetscErrorCode openOutputs(Run *r, TS ts) {
   if (r->rank == 0) {
     PetscReal dt;
     PetscCall(TSGetTimeStep(ts, &dt));
-    PetscCall(r->energy_csv.Open(r->opt.output_dir, restarted ? checkpointDir(r) + "/energy.csv" : "", r->restart_step));
+    PetscCall(r->energy_csv.Open(r->opt.output_dir, restarted ? CheckpointFolder(r->opt.restart) + "/energy.csv" : "", r->restart_step));
     WriteRunInfo(r->model, r->opt.output_dir, dt);
   }
   // Default: 50 frames over the run.
   const PetscReal interval = r->opt.output_interval > 0 ? r->opt.output_interval : r->max_time / 50;
-  PetscCall(r->frames.Open(r->model, r->opt.output_dir, interval, r->opt.fields, restarted ? checkpointDir(r) : ""));
+  PetscCall(r->frames.Open(r->model, r->opt.output_dir, interval, r->opt.fields, restarted ? CheckpointFolder(r->opt.restart) : ""));
   PetscFunctionReturn(0);
 }
 

@@ -28,6 +28,9 @@ struct CheckpointState {
 };
 
 PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &state);
+// The folder holding the checkpoint file path ("." for a bare file name): the series a
+// restart continues (energy.csv, the frame files) are there.
+std::string CheckpointFolder(const std::string &path);
 // Collective, before the heavy work: the file is there, whole and undamaged (its seal), or one
 // line says what is wrong with it.
 PetscErrorCode CheckpointVerify(MPI_Comm comm, const std::string &path);
