@@ -8,7 +8,8 @@
 #   scripts/check_output.py (every reference resolves to a dataset of its shape there, no NaN)
 #   with all 9 frames (t = 0, 0.1, ..., 0.8), and energy.csv and the station files equal C's
 #   byte for byte (the continued state is bit-identical, restart.sh).
-# - A changed material is refused in one line naming the option and both values.
+# - A changed material, or an added scene option, is refused in one line naming the option and
+#   both values.
 # - A checkpoint cut short, or with one byte changed, is refused in one line (its seal).
 set -eu
 . tests/tools/lib.sh
@@ -40,6 +41,8 @@ refused() {  # name, expected message regex, arguments...
 }
 refused scene "-restart = .*/A/checkpoint.bin was written with another scene: -material_soil_vs [0-9.]+ there, 180 here; allowed: the scene options" \
   $O -material_soil_vs 180 -restart "$WORK/A/checkpoint.bin" -output_dir "$WORK/S"
+refused added "-restart = .*/A/checkpoint.bin was written with another scene: -station_side not given there, soil here; allowed: the scene options" \
+  $O -station_side soil -restart "$WORK/A/checkpoint.bin" -output_dir "$WORK/S2"
 size=$(stat -c %s "$WORK/A/checkpoint.bin")
 head -c $((size / 2)) "$WORK/A/checkpoint.bin" > "$WORK/cut.bin"
 refused truncated "-restart = .*/cut.bin: no checkpoint seal at its end \(cut short, or not a slipwave checkpoint\); allowed: a complete checkpoint" \
