@@ -17,7 +17,8 @@ bool steersOnly(const std::string &name) {
   static const char *const prefixes[] = {"log", "malloc", "options_", "on_error", "memory_", "fp_trap", "check"};
   for (const char *p : prefixes)
     if (name.rfind(p, 0) == 0) return true;
-  return false;
+  // Monitors and viewers (-ts_monitor, -geostatic_ksp_monitor, -ts_view, ...) only print.
+  return name.find("monitor") != std::string::npos || name.find("_view") != std::string::npos;
 }
 
 std::map<std::string, std::string> parse(const std::string &text) {
