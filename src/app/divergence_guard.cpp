@@ -60,6 +60,20 @@ PetscErrorCode nodeCoordinates(const model::Elastodynamics &model, PetscInt dof,
   PetscFunctionReturn(0);
 }
 
+// "node N (x, y[, z]), component c" for a global dof (collective).
+PetscErrorCode dofPlace(const model::Elastodynamics &model, PetscInt dof, std::string *place) {
+  double x[3];
+  char   text[160];
+  PetscFunctionBeginUser;
+  PetscCall(nodeCoordinates(model, dof, x));
+  const PetscInt node = dof / model.dim;
+  const char     component = "xyz"[dof % model.dim];
+  if (model.dim == 3) std::snprintf(text, sizeof text, "node %" PetscInt_FMT " (%g, %g, %g), component %c", node, x[0], x[1], x[2], component);
+  else std::snprintf(text, sizeof text, "node %" PetscInt_FMT " (%g, %g), component %c", node, x[0], x[1], component);
+  *place = text;
+  PetscFunctionReturn(0);
+}
+
 // The input that made the value non-finite, if one did: a material, the constant loads
 // (gravity, tractions) or the incident wave. "" when every input is finite.
 PetscErrorCode inputCause(const model::Elastodynamics &model, PetscReal t, std::string *cause) {
@@ -76,7 +90,9 @@ PetscErrorCode inputCause(const model::Elastodynamics &model, PetscReal t, std::
   if (!text[0] && !finite(model.bc.gravity)) std::snprintf(text, sizeof text, "-gravity = %g", model.bc.gravity);
   if (!text[0]) {
     PetscCall(firstNonFinite(model.comm, model.bc.constant_force, &bad));
-    if (bad != PETSC_MAX_INT) std::snprintf(text, sizeof text, "the constant loads (-gravity, -bc_<name>_traction) at dof %" PetscInt_FMT, bad);
+    std::string place;
+    if (bad != PETSC_MAX_INT) PetscCall(dofPlace(model, bad, &place));
+    if (bad != PETSC_MAX_INT) std::snprintf(text, sizeof text, "the constant loads (-gravity = %g, -bc_<name>_traction) at %s", model.bc.gravity, place.c_str());
   }
   if (!text[0] && model.bc.input.active()) {
     const double v_in = model.bc.input.velocity(t);
@@ -124,12 +140,9 @@ PetscErrorCode DivergenceGuard(const model::Elastodynamics &model, const model::
     PetscInt first = PETSC_MAX_INT;
     if (f.values) PetscCall(firstNonFinite(comm, f.values, &first));
     if (first == PETSC_MAX_INT) continue;
-    double x[3];
-    PetscCall(nodeCoordinates(model, first, x));
-    char text[256];
-    if (model.dim == 3) std::snprintf(text, sizeof text, "%s is not finite at node %" PetscInt_FMT " (%g, %g, %g), component %c", f.name, first / model.dim, x[0], x[1], x[2], "xyz"[first % model.dim]);
-    else std::snprintf(text, sizeof text, "%s is not finite at node %" PetscInt_FMT " (%g, %g), component %c", f.name, first / model.dim, x[0], x[1], "xyz"[first % model.dim]);
-    where = text;
+    std::string place;
+    PetscCall(dofPlace(model, first, &place));
+    where = std::string(f.name) + " is not finite at " + place;
     break;
   }
   std::string cause;

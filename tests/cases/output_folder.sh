@@ -8,7 +8,8 @@
 # - A second run into the same folder is refused in one line naming -output_dir, before the
 #   set-up (no "geostatic stage" line); -output_overwrite deletes the earlier run's files and
 #   only those (a user's notes.txt stays).
-# - A folder path that is too long, or under a file, stops in one line, exit non-zero, no abort.
+# - A folder path that is too long, under a file, in a place that cannot hold folders, or
+#   empty, stops in one line, exit non-zero (1, not an abort's 134), before the set-up.
 set -eu
 . tests/tools/lib.sh
 O="-options_file config/scenes/default.yaml -mesh_box_faces 60,30 -ts_max_time 0.1 -output_interval 0.05 -progress_interval 100"
@@ -33,8 +34,11 @@ $PY scripts/check_output.py "$WORK/a" --expect-steps 3
 echo "ok: a reused folder is refused before the set-up; -output_overwrite deletes only the earlier run's files"
 
 long="$WORK/$(printf 'd%.0s' $(seq 3900))"
-for dir in "$long" "$WORK/a/notes.txt/out"; do
-  rc=0; $SW $O -output_dir "$dir" > /dev/null 2> "$WORK/d.err" || rc=$?
+# /proc/1 refuses new folders even to root (the tests may run as root, for whom permissions
+# alone do not make a folder unwritable).
+for dir in "$long" "$WORK/a/notes.txt/out" /proc/1/slipwave_out ""; do
+  rc=0; $SW $O -output_dir "$dir" > "$WORK/d.out" 2> "$WORK/d.err" || rc=$?
   [ $rc -eq 1 ] && [ "$(grep -c '' "$WORK/d.err")" -eq 1 ] || { echo "FAIL: -output_dir = ${dir:0:60}...: exit $rc, stderr:"; cat "$WORK/d.err"; exit 1; }
   grep -E "^slipwave: error: -output_dir = .*: .*; allowed: " "$WORK/d.err"
+  ! grep -q "mesh:" "$WORK/d.out" || { echo "FAIL: -output_dir = ${dir:0:60}... refused only after the set-up"; exit 1; }
 done
