@@ -5,8 +5,9 @@ usage: /usr/bin/python3 scripts/check_output.py DIR [--grid volume] [--expect-st
 
 Parses DIR/<grid>.xmf and checks that every HDF DataItem names an existing dataset whose shape
 equals the declared Dimensions and whose type matches NumberType/Precision, that all values
-are finite, that topology indices address existing nodes, that attribute rows match the node
-or cell count, and that times increase. Prints one summary line; exits 0 if all holds, else
+are finite (in every dataset of the HDF5 files it names, listed or not), that topology indices
+address existing nodes, that attribute rows match the node or cell count, and that times
+increase. Prints one summary line; exits 0 if all holds, else
 prints each problem and exits 1.
 """
 import argparse
@@ -190,6 +191,20 @@ class Checker:
                 self.fail(self.xmf_path, f"step {i} lacks field(s) {', '.join(missing)} (has {', '.join(fields) or 'none'})")
         return steps
 
+    def unlisted_non_finite(self):
+        """Every float dataset of the HDF5 files the index names, also those it does not list."""
+        for file_path, h5 in self.files.items():
+            if h5 is None:
+                continue
+            def visit(name, obj):
+                key = (file_path, "/" + name)
+                if isinstance(obj, h5py.Dataset) and key not in self.checked and obj.dtype.kind == "f":
+                    data = obj[()]
+                    bad = int(np.size(data) - np.count_nonzero(np.isfinite(data)))
+                    if bad:
+                        self.fail(os.path.basename(file_path), f"/{name}: {bad} non-finite values (a dataset the index does not list)")
+            h5.visititems(visit)
+
     def close(self):
         for h5 in self.files.values():
             if h5 is not None:
@@ -211,6 +226,7 @@ def main():
     checker = Checker(xmf)
     try:
         steps = checker.run(args.expect_steps, expect_fields)
+        checker.unlisted_non_finite()
     finally:
         checker.close()
     if checker.problems:
