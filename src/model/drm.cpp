@@ -359,8 +359,10 @@ PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
     PetscCall(DMRestoreLocalVector(m.dm, &local));
   }
   char buf[400];
-  std::snprintf(buf, sizeof buf, "  input: Domain Reduction Method, %s wave at %g deg from the vertical%s, p = %.4g s/m; %s", kWaves[o.wave], d->angle,
-                dim == 3 ? (", azimuth " + std::to_string(d->azimuth) + " deg").c_str() : (d->azimuth == 0 ? ", toward +x" : ", toward -x"),
+  char direction[64];
+  if (dim == 3) std::snprintf(direction, sizeof direction, ", azimuth %g deg", d->azimuth);
+  else std::snprintf(direction, sizeof direction, ", toward %sx", d->azimuth == 0 ? "+" : "-");
+  std::snprintf(buf, sizeof buf, "  input: Domain Reduction Method, %s wave at %g deg from the vertical%s, p = %.4g s/m; %s", kWaves[o.wave], d->angle, direction,
                 d->field.horizontalSlowness(), d->incident.describe().c_str());
   d->report.push_back(buf);
   std::snprintf(buf, sizeof buf, "    DRM layer: %" PetscInt_FMT " cells, %" PetscInt_FMT " boundary (b) and %" PetscInt_FMT " exterior (e) nodes; the wave's reference point: depth %g m, %s = %g m",
