@@ -6,6 +6,7 @@
 
 #include "slipwave/core/option_choice.hpp"
 #include "slipwave/model/attenuation.hpp"
+#include "slipwave/model/drm_field_file.hpp"
 #include "slipwave/model/elastodynamics.hpp"
 #include "slipwave/physics/plane_wave_layered.hpp"
 
@@ -24,11 +25,14 @@ struct Drm {
   std::vector<PetscInt>       node_offset;
   std::vector<size_t>         node_depth;
   std::vector<double>         node_delay;
+  std::vector<double>         node_coords;                // dim per DRM node
   // This rank's layer cells; per cell node: index into the DRM nodes and whether it is a b node.
   std::vector<PetscInt>       cells;
   std::vector<size_t>         cell_node;
   std::vector<char>           cell_node_is_b;
   physics::PlaneWaveHistories histories;
+  std::string                 file;                       // -drm_free_field_file, or "" for the plane wave
+  FieldFileHistories          file_histories;
   bool                        synthesized = false;
   std::vector<double>         u0;                         // dim per DRM node, at the current time
   Vec                         f_local = nullptr, f_global = nullptr;
@@ -46,13 +50,14 @@ struct DrmOptions {
   PetscInt              offset = 2;
   std::vector<PetscReal> box;
   std::vector<std::string> regions;
+  std::string            file;
 };
 
 PetscErrorCode readOptions(MPI_Comm comm, PetscInt dim, Drm *d, DrmOptions *o, bool *use_drm) {
   PetscInt  method = 0, nbox = 5;
   PetscReal box[5];
-  char      regions[PETSC_MAX_PATH_LEN] = "";
-  PetscBool box_set = PETSC_FALSE, regions_set = PETSC_FALSE, azimuth_set = PETSC_FALSE;
+  char      regions[PETSC_MAX_PATH_LEN] = "", file[PETSC_MAX_PATH_LEN] = "";
+  PetscBool box_set = PETSC_FALSE, regions_set = PETSC_FALSE, azimuth_set = PETSC_FALSE, wave_set = PETSC_FALSE, angle_set = PETSC_FALSE, file_set = PETSC_FALSE;
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, "", "Seismic input method", "slipwave");
   PetscCall(core::OptionsChoice(PetscOptionsObject, "-input_method",
@@ -60,9 +65,9 @@ PetscErrorCode readOptions(MPI_Comm comm, PetscInt dim, Drm *d, DrmOptions *o, b
                                 kMethods, 2, &method, nullptr));
   *use_drm = method == 1;
   if (*use_drm) {
-    PetscCall(core::OptionsChoice(PetscOptionsObject, "-drm_wave", "incident plane wave: p, sv, sh (sh: 3D only)", kWaves, 3, &o->wave, nullptr));
+    PetscCall(core::OptionsChoice(PetscOptionsObject, "-drm_wave", "incident plane wave: p, sv, sh (sh: 3D only)", kWaves, 3, &o->wave, &wave_set));
     PetscCall(PetscOptionsReal("-drm_incidence_angle", "angle of the incident wave from the vertical in the half-space [deg]: 0 <= angle < 90 (2D: -90 < angle < 90, negative travels toward -x)",
-                               "DrmCreate", o->angle, &o->angle, nullptr));
+                               "DrmCreate", o->angle, &o->angle, &angle_set));
     PetscCall(PetscOptionsReal("-drm_azimuth", "3D: horizontal direction of travel [deg] from +x toward +y, any value", "DrmCreate", o->azimuth, &o->azimuth, &azimuth_set));
     PetscCall(PetscOptionsRealArray("-drm_box", "interior Omega: cells with the centroid in xmin,xmax,ymin (2D) or xmin,xmax,ymin,ymax,zmin (3D) [m], open upward",
                                     "DrmCreate", box, &nbox, &box_set));
@@ -70,6 +75,8 @@ PetscErrorCode readOptions(MPI_Comm comm, PetscInt dim, Drm *d, DrmOptions *o, b
                               o->offset, &o->offset, nullptr));
     PetscCall(PetscOptionsString("-drm_regions", "interior Omega: these regions a,b (instead of -drm_box)", "DrmCreate", regions, regions, sizeof regions, &regions_set));
     PetscCall(d->incident.Read(comm, "drm_", HistoryRole::IncidentWave, PetscOptionsObject));
+    PetscCall(PetscOptionsString("-drm_free_field_file", "HDF5 file with the free field (/coordinates, /time, /displacement; docs/drm.md) instead of the plane wave",
+                                 "DrmCreate", file, file, sizeof file, &file_set));
   }
   PetscOptionsEnd();
   if (!*use_drm) PetscFunctionReturn(0);
@@ -82,7 +89,13 @@ PetscErrorCode readOptions(MPI_Comm comm, PetscInt dim, Drm *d, DrmOptions *o, b
   PetscCheck(dim == 3 || !azimuth_set, comm, PETSC_ERR_USER_INPUT, "-drm_azimuth in 2D; allowed: only in 3D (a negative -drm_incidence_angle travels toward -x)");
   const bool angle_ok = dim == 2 ? (o->angle > -90 && o->angle < 90) : (o->angle >= 0 && o->angle < 90);
   PetscCheck(angle_ok, comm, PETSC_ERR_USER_INPUT, "-drm_incidence_angle = %g; allowed: %s [deg]", (double)o->angle, dim == 2 ? "-90 < angle < 90" : "0 <= angle < 90");
-  PetscCheck(d->incident.active(), comm, PETSC_ERR_USER_INPUT, "-input_method drm needs the incident wave's velocity history; allowed: -drm_stf ricker, gabor or record");
+  if (file_set && file[0]) {
+    PetscCheck(!(wave_set || angle_set || azimuth_set || d->incident.active()), comm, PETSC_ERR_USER_INPUT,
+               "-drm_free_field_file = %s with a plane-wave option (-drm_wave, -drm_incidence_angle, -drm_azimuth, -drm_stf); allowed: one of the two free fields", file);
+    o->file = file;
+  } else
+    PetscCheck(d->incident.active(), comm, PETSC_ERR_USER_INPUT,
+               "-input_method drm needs the incident wave's velocity history; allowed: -drm_stf ricker, gabor or record (or -drm_free_field_file)");
   if (box_set) o->box.assign(box, box + nbox);
   for (const char *s = regions; regions_set && *s;) {
     const char *e = s;
@@ -239,6 +252,44 @@ PetscErrorCode classify(const Elastodynamics &m, const DrmOptions &o, const doub
   PetscFunctionReturn(0);
 }
 
+// The run report's lines: the wave (or the file), the layer, the site.
+PetscErrorCode report(const Elastodynamics &m, Drm *d, const DrmOptions &o, const PetscInt counts[3], const physics::LayeredSite &site,
+                      const std::vector<PetscInt> &site_regions) {
+  const PetscInt dim = m.dim;
+  char           buf[400];
+  PetscFunctionBeginUser;
+  if (!d->file.empty()) {
+    std::snprintf(buf, sizeof buf, "  input: Domain Reduction Method, free field from %s: %zu samples every %g s from %g s", d->file.c_str(), d->file_histories.samples,
+                  d->file_histories.dt, d->file_histories.t0);
+    d->report.push_back(buf);
+    std::snprintf(buf, sizeof buf, "    DRM layer: %" PetscInt_FMT " cells, %" PetscInt_FMT " boundary (b) and %" PetscInt_FMT " exterior (e) nodes", counts[0], counts[1],
+                  counts[2]);
+    d->report.push_back(buf);
+    PetscFunctionReturn(0);
+  }
+  char direction[64];
+  if (dim == 3) std::snprintf(direction, sizeof direction, ", azimuth %g deg", d->azimuth);
+  else std::snprintf(direction, sizeof direction, ", toward %sx", d->azimuth == 0 ? "+" : "-");
+  std::snprintf(buf, sizeof buf, "  input: Domain Reduction Method, %s wave at %g deg from the vertical%s, p = %.4g s/m; %s", kWaves[o.wave], d->angle, direction,
+                d->field.horizontalSlowness(), d->incident.describe().c_str());
+  d->report.push_back(buf);
+  std::snprintf(buf, sizeof buf, "    DRM layer: %" PetscInt_FMT " cells, %" PetscInt_FMT " boundary (b) and %" PetscInt_FMT " exterior (e) nodes; the wave's reference point: depth %g m, %s = %g m",
+                counts[0], counts[1], counts[2], d->reference_depth, dim == 2 ? "x" : "radial coordinate", d->radial_min);
+  d->report.push_back(buf);
+  std::string layers;
+  for (size_t j = 0; j < site.materials.size(); ++j) {
+    char one[160];
+    const auto &mat = site.materials[j];
+    if (j < site.thickness.size())
+      std::snprintf(one, sizeof one, "%s%g m of '%s' (vs %g)", j ? ", " : "", site.thickness[j], m.mesh.regions[site_regions[j]].c_str(), mat.vs);
+    else
+      std::snprintf(one, sizeof one, "%shalf-space '%s' (vp %g, vs %g)", j ? " on " : "", m.mesh.regions[site_regions[j]].c_str(), mat.vp, mat.vs);
+    layers += one;
+  }
+  d->report.push_back("    DRM free-field site (the mesh's first column): " + layers);
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
@@ -270,11 +321,15 @@ PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
   PetscCall(boundingBox(comm, m.bulk, lo, hi));
   d->surface     = hi[vert];
   const double h = m.bulk.minCellSize();
+  d->file       = o.file;
+  const bool plane = d->file.empty();
   physics::LayeredSite  site;
   std::vector<PetscInt> site_regions;
-  PetscCall(siteFromMesh(comm, m, d->surface, lo, h, &site, &site_regions));
-  const std::string problem = d->field.setup(site, d->wave, d->angle);
-  PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "-input_method drm: %s", problem.c_str());
+  if (plane) {
+    PetscCall(siteFromMesh(comm, m, d->surface, lo, h, &site, &site_regions));
+    const std::string problem = d->field.setup(site, d->wave, d->angle);
+    PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "-input_method drm: %s", problem.c_str());
+  }
 
   std::vector<char>   interior;
   std::vector<double> b_flag;
@@ -292,8 +347,10 @@ PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
     double clo[3], chi[3];
     cellBounds(m.bulk, c, clo, chi);
     const double                   zc   = d->surface - 0.5 * (clo[vert] + chi[vert]);
-    const physics::ElasticMaterial want = site.materials[mediumAt(site, zc)], have = m.materials[m.bulk.cellRegion(c)].elastic;
-    if (!(want.rho == have.rho && want.vp == have.vp && want.vs == have.vs)) foreign_depth = std::max(foreign_depth, zc);
+    if (plane) {
+      const physics::ElasticMaterial want = site.materials[mediumAt(site, zc)], have = m.materials[m.bulk.cellRegion(c)].elastic;
+      if (!(want.rho == have.rho && want.vp == have.vp && want.vs == have.vs)) foreign_depth = std::max(foreign_depth, zc);
+    }
     d->cells.push_back(c);
     ++counts[0];
     for (PetscInt a = 0; a < nen; ++a) {
@@ -302,6 +359,7 @@ PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
         node_of_offset[off] = (PetscInt)d->node_offset.size();
         d->node_offset.push_back(off);
         const double *x = &m.bulk.cellCoordinates(c)[a * dim];
+        d->node_coords.insert(d->node_coords.end(), x, x + dim);
         double        xi = 0;
         for (PetscInt i = 0; i < vert; ++i) xi += x[i] * d->radial[i];
         d->node_delay.push_back(xi); // the radial coordinate for now
@@ -323,7 +381,7 @@ PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
              foreign_depth);
   PetscCheck(counts[0] > 0, comm, PETSC_ERR_USER_INPUT, "-input_method drm: the DRM layer is empty (no cell outside the interior touches it); check -drm_box / -drm_regions");
   d->radial_min      = radial_min;
-  d->reference_depth = std::max(deepest, d->field.halfspaceDepth());
+  d->reference_depth = plane ? std::max(deepest, d->field.halfspaceDepth()) : 0;
   // Distinct depths; each node keeps the index of its own.
   std::vector<double> node_z = d->depths;
   std::sort(d->depths.begin(), d->depths.end());
@@ -333,6 +391,8 @@ PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
     d->node_delay[k] = d->field.horizontalSlowness() * (d->node_delay[k] - radial_min);
   }
   d->u0.assign(dim * d->node_offset.size(), 0.0);
+  // Coordinates written by another code carry its rounding: 1e-3 of a cell matches them.
+  if (!plane) PetscCall(FieldFileRead(comm, "-drm_free_field_file", d->file, (int)dim, d->node_coords, 1e-3 * h, &d->file_histories));
   PetscCall(DMCreateLocalVector(m.dm, &d->f_local));
   PetscCall(DMCreateGlobalVector(m.dm, &d->f_global));
 
@@ -358,27 +418,7 @@ PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
     PetscCall(DMRestoreGlobalVector(m.dm, &global));
     PetscCall(DMRestoreLocalVector(m.dm, &local));
   }
-  char buf[400];
-  char direction[64];
-  if (dim == 3) std::snprintf(direction, sizeof direction, ", azimuth %g deg", d->azimuth);
-  else std::snprintf(direction, sizeof direction, ", toward %sx", d->azimuth == 0 ? "+" : "-");
-  std::snprintf(buf, sizeof buf, "  input: Domain Reduction Method, %s wave at %g deg from the vertical%s, p = %.4g s/m; %s", kWaves[o.wave], d->angle, direction,
-                d->field.horizontalSlowness(), d->incident.describe().c_str());
-  d->report.push_back(buf);
-  std::snprintf(buf, sizeof buf, "    DRM layer: %" PetscInt_FMT " cells, %" PetscInt_FMT " boundary (b) and %" PetscInt_FMT " exterior (e) nodes; the wave's reference point: depth %g m, %s = %g m",
-                counts[0], counts[1], counts[2], d->reference_depth, dim == 2 ? "x" : "radial coordinate", radial_min);
-  d->report.push_back(buf);
-  std::string layers;
-  for (size_t j = 0; j < site.materials.size(); ++j) {
-    char one[160];
-    const auto &mat = site.materials[j];
-    if (j < site.thickness.size())
-      std::snprintf(one, sizeof one, "%s%g m of '%s' (vs %g)", j ? ", " : "", site.thickness[j], m.mesh.regions[site_regions[j]].c_str(), mat.vs);
-    else
-      std::snprintf(one, sizeof one, "%shalf-space '%s' (vp %g, vs %g)", j ? " on " : "", m.mesh.regions[site_regions[j]].c_str(), mat.vp, mat.vs);
-    layers += one;
-  }
-  d->report.push_back("    DRM free-field site (the mesh's first column): " + layers);
+  PetscCall(report(m, d, o, counts, site, site_regions));
   *out = d;
   PetscFunctionReturn(0);
 }
@@ -411,17 +451,27 @@ PetscErrorCode synthesize(Drm *d, TS ts) {
   PetscFunctionReturn(0);
 }
 
-} // namespace
-
-PetscErrorCode DrmAddForce(Drm *d, const Elastodynamics &m, TS ts, PetscReal t, Vec f) {
-  const PetscInt dim = m.dim, nen = m.bulk.nodesPerCell(), nd = nen * dim;
-  PetscFunctionBeginUser;
-  if (!d->synthesized) PetscCall(synthesize(d, ts));
+// u0 of the plane wave at every DRM node: its depth's history at t - p (xi - xi_ref), in mesh axes.
+void planeWaveDisplacements(Drm *d, PetscInt dim, double t) {
   for (size_t k = 0; k < d->node_offset.size(); ++k) {
     double u[3];
     for (size_t c = 0; c < 3; ++c) u[c] = physics::planeWaveDisplacementAt(d->histories, d->node_depth[k], c, t - d->node_delay[k]);
     for (PetscInt i = 0; i < dim; ++i) d->u0[dim * k + i] = u[0] * d->radial[i] + u[1] * d->transverse[i];
     d->u0[dim * k + dim - 1] += u[2];
+  }
+}
+
+} // namespace
+
+PetscErrorCode DrmAddForce(Drm *d, const Elastodynamics &m, TS ts, PetscReal t, Vec f) {
+  const PetscInt dim = m.dim, nen = m.bulk.nodesPerCell(), nd = nen * dim;
+  PetscFunctionBeginUser;
+  if (!d->file.empty()) {
+    for (size_t k = 0; k < d->node_offset.size(); ++k)
+      for (PetscInt i = 0; i < dim; ++i) d->u0[dim * k + i] = FieldFileDisplacement(d->file_histories, k, (int)i, t);
+  } else {
+    if (!d->synthesized) PetscCall(synthesize(d, ts));
+    planeWaveDisplacements(d, dim, t);
   }
   PetscScalar *fl;
   PetscCall(VecZeroEntries(d->f_local));

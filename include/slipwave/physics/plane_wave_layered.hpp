@@ -81,9 +81,9 @@ private:
 // x = 0 is v_in: v_in[k] = v(k dt), k = 0 .. m-1, zero before. They are synthesised by FFT
 // over a period of at least 4m samples (zero padded, so the reverberations of m samples have
 // decayed before they wrap around). Returned per depth d and component c (radial, transverse,
-// up), sample k: index (d*3 + c)*m + k, velocity and its time integral (displacement, by
-// the trapezoid rule, zero at t = 0). The field at horizontal position x is the history at
-// t - p x.
+// up), sample k: index (d*3 + c)*m + k, velocity and its time integral (displacement, zero at
+// t = 0; the trapezoid rule with its end correction from the spectral acceleration, fourth
+// order). The field at horizontal position x is the history at t - p x.
 struct PlaneWaveHistories {
   size_t              samples = 0;
   double              dt      = 0;
