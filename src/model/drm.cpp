@@ -252,6 +252,101 @@ PetscErrorCode classify(const Elastodynamics &m, const DrmOptions &o, const doub
   PetscFunctionReturn(0);
 }
 
+// The layer: this rank's exterior cells with a b node, their nodes (coordinates, radial
+// coordinate in node_delay for now, depth), and the global counts and extremes. With a site
+// (the plane wave) every layer cell must hold the site's material at its depth.
+PetscErrorCode collectLayer(const Elastodynamics &m, Drm *d, const std::vector<char> &interior, const std::vector<double> &b_flag, const physics::LayeredSite *site,
+                            PetscInt counts[3], double *deepest_out) {
+  const MPI_Comm comm = m.comm;
+  const PetscInt dim = m.dim, vert = dim - 1, nen = m.bulk.nodesPerCell();
+  PetscFunctionBeginUser;
+  std::vector<PetscInt> node_of_offset(b_flag.size(), -1);
+  double                deepest = 0, radial_min = 1e300;
+  double                foreign_depth = -1;      // deepest layer cell whose material is not the site's there
+  for (PetscInt c = 0; c < m.bulk.cellCount(); ++c) {
+    if (interior[c]) continue;
+    bool touches = false;
+    for (PetscInt a = 0; a < nen; ++a) touches = touches || b_flag[m.bulk.cellNodeOffset(c, a)] > 0;
+    if (!touches) continue;
+    double clo[3], chi[3];
+    cellBounds(m.bulk, c, clo, chi);
+    const double                   zc   = d->surface - 0.5 * (clo[vert] + chi[vert]);
+    if (site) {
+      const physics::ElasticMaterial want = site->materials[mediumAt(*site, zc)], have = m.materials[m.bulk.cellRegion(c)].elastic;
+      if (!(want.rho == have.rho && want.vp == have.vp && want.vs == have.vs)) foreign_depth = std::max(foreign_depth, zc);
+    }
+    d->cells.push_back(c);
+    ++counts[0];
+    for (PetscInt a = 0; a < nen; ++a) {
+      const PetscInt off = m.bulk.cellNodeOffset(c, a);
+      if (node_of_offset[off] < 0) {
+        node_of_offset[off] = (PetscInt)d->node_offset.size();
+        d->node_offset.push_back(off);
+        const double *x = &m.bulk.cellCoordinates(c)[a * dim];
+        d->node_coords.insert(d->node_coords.end(), x, x + dim);
+        double        xi = 0;
+        for (PetscInt i = 0; i < vert; ++i) xi += x[i] * d->radial[i];
+        d->node_delay.push_back(xi); // the radial coordinate for now
+        radial_min = std::min(radial_min, xi);
+        deepest    = std::max(deepest, d->surface - x[vert]);
+        d->depths.push_back(d->surface - x[vert]);
+      }
+      d->cell_node.push_back((size_t)node_of_offset[off]);
+      d->cell_node_is_b.push_back(b_flag[off] > 0);
+    }
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &radial_min, 1, MPI_DOUBLE, MPI_MIN, comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &deepest, 1, MPI_DOUBLE, MPI_MAX, comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, counts, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &foreign_depth, 1, MPI_DOUBLE, MPI_MAX, comm));
+  PetscCheck(foreign_depth < 0, comm, PETSC_ERR_USER_INPUT,
+             "-input_method drm: a DRM layer cell at depth %g m has a material other than the free-field site's there (the mesh's first column); allowed: a layer "
+             "in the horizontally layered soil, away from the structure",
+             foreign_depth);
+  PetscCheck(counts[0] > 0, comm, PETSC_ERR_USER_INPUT, "-input_method drm: the DRM layer is empty (no cell outside the interior touches it); check -drm_box / -drm_regions");
+  d->radial_min = radial_min;
+  *deepest_out  = deepest;
+  PetscFunctionReturn(0);
+}
+
+// Distinct depths of the DRM nodes (one history each); each node keeps the index of its own
+// and turns its radial coordinate into its delay p (xi - xi_ref).
+void indexDepths(Drm *d, double h) {
+  std::vector<double> node_z = d->depths;
+  std::sort(d->depths.begin(), d->depths.end());
+  d->depths.erase(std::unique(d->depths.begin(), d->depths.end(), [h](double a, double b) { return std::fabs(a - b) <= 1e-9 * h; }), d->depths.end());
+  for (size_t k = 0; k < node_z.size(); ++k) {
+    d->node_depth.push_back((size_t)(std::lower_bound(d->depths.begin(), d->depths.end(), node_z[k] - 1e-9 * h) - d->depths.begin()));
+    d->node_delay[k] = d->field.horizontalSlowness() * (d->node_delay[k] - d->radial_min);
+  }
+}
+
+// The numbers of b and e nodes, each counted once (owned nodes only) through a global vector.
+PetscErrorCode countNodes(const Elastodynamics &m, const Drm *d, const std::vector<double> &b_flag, PetscInt counts[2]) {
+  const PetscInt dim = m.dim;
+  PetscFunctionBeginUser;
+  Vec          local, global;
+  PetscScalar *a;
+  PetscCall(DMGetLocalVector(m.dm, &local));
+  PetscCall(DMGetGlobalVector(m.dm, &global));
+  PetscCall(VecZeroEntries(local));
+  PetscCall(VecGetArray(local, &a));
+  for (size_t k = 0; k < d->node_offset.size(); ++k) a[d->node_offset[k] + (b_flag[d->node_offset[k]] > 0 ? 0 : 1)] = 1;
+  PetscCall(VecRestoreArray(local, &a));
+  PetscCall(VecZeroEntries(global));
+  PetscCall(DMLocalToGlobal(m.dm, local, ADD_VALUES, global));
+  PetscInt           n;
+  const PetscScalar *g;
+  PetscCall(VecGetLocalSize(global, &n));
+  PetscCall(VecGetArrayRead(global, &g));
+  for (PetscInt i = 0; i < n; i += dim) counts[0] += PetscRealPart(g[i]) > 0, counts[1] += PetscRealPart(g[i + 1]) > 0;
+  PetscCall(VecRestoreArrayRead(global, &g));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, counts, 2, MPIU_INT, MPI_SUM, m.comm));
+  PetscCall(DMRestoreGlobalVector(m.dm, &global));
+  PetscCall(DMRestoreLocalVector(m.dm, &local));
+  PetscFunctionReturn(0);
+}
+
 // The run report's lines: the wave (or the file), the layer, the site.
 PetscErrorCode report(const Elastodynamics &m, Drm *d, const DrmOptions &o, const PetscInt counts[3], const physics::LayeredSite &site,
                       const std::vector<PetscInt> &site_regions) {
@@ -294,7 +389,7 @@ PetscErrorCode report(const Elastodynamics &m, Drm *d, const DrmOptions &o, cons
 
 PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
   const MPI_Comm comm = m.comm;
-  const PetscInt dim = m.dim, vert = dim - 1, nen = m.bulk.nodesPerCell();
+  const PetscInt dim = m.dim, vert = dim - 1;
   auto          *d = new Drm;
   DrmOptions     o;
   bool           use = false;
@@ -334,90 +429,18 @@ PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
   std::vector<char>   interior;
   std::vector<double> b_flag;
   PetscCall(classify(m, o, lo, hi, h, &interior, &b_flag));
-  // The layer: exterior cells with a b node; they must hold the site's material at their depth.
-  std::vector<PetscInt> node_of_offset(b_flag.size(), -1);
-  double                deepest = 0, radial_min = 1e300;
-  PetscInt              counts[3] = {0, 0, 0}; // layer cells, b nodes, e nodes (owned counts are summed below)
-  double                foreign_depth = -1;      // deepest layer cell whose material is not the site's there
-  for (PetscInt c = 0; c < m.bulk.cellCount(); ++c) {
-    if (interior[c]) continue;
-    bool touches = false;
-    for (PetscInt a = 0; a < nen; ++a) touches = touches || b_flag[m.bulk.cellNodeOffset(c, a)] > 0;
-    if (!touches) continue;
-    double clo[3], chi[3];
-    cellBounds(m.bulk, c, clo, chi);
-    const double                   zc   = d->surface - 0.5 * (clo[vert] + chi[vert]);
-    if (plane) {
-      const physics::ElasticMaterial want = site.materials[mediumAt(site, zc)], have = m.materials[m.bulk.cellRegion(c)].elastic;
-      if (!(want.rho == have.rho && want.vp == have.vp && want.vs == have.vs)) foreign_depth = std::max(foreign_depth, zc);
-    }
-    d->cells.push_back(c);
-    ++counts[0];
-    for (PetscInt a = 0; a < nen; ++a) {
-      const PetscInt off = m.bulk.cellNodeOffset(c, a);
-      if (node_of_offset[off] < 0) {
-        node_of_offset[off] = (PetscInt)d->node_offset.size();
-        d->node_offset.push_back(off);
-        const double *x = &m.bulk.cellCoordinates(c)[a * dim];
-        d->node_coords.insert(d->node_coords.end(), x, x + dim);
-        double        xi = 0;
-        for (PetscInt i = 0; i < vert; ++i) xi += x[i] * d->radial[i];
-        d->node_delay.push_back(xi); // the radial coordinate for now
-        radial_min = std::min(radial_min, xi);
-        deepest    = std::max(deepest, d->surface - x[vert]);
-        d->depths.push_back(d->surface - x[vert]);
-      }
-      d->cell_node.push_back((size_t)node_of_offset[off]);
-      d->cell_node_is_b.push_back(b_flag[off] > 0);
-    }
-  }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &radial_min, 1, MPI_DOUBLE, MPI_MIN, comm));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &deepest, 1, MPI_DOUBLE, MPI_MAX, comm));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, counts, 1, MPIU_INT, MPI_SUM, comm));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &foreign_depth, 1, MPI_DOUBLE, MPI_MAX, comm));
-  PetscCheck(foreign_depth < 0, comm, PETSC_ERR_USER_INPUT,
-             "-input_method drm: a DRM layer cell at depth %g m has a material other than the free-field site's there (the mesh's first column); allowed: a layer "
-             "in the horizontally layered soil, away from the structure",
-             foreign_depth);
-  PetscCheck(counts[0] > 0, comm, PETSC_ERR_USER_INPUT, "-input_method drm: the DRM layer is empty (no cell outside the interior touches it); check -drm_box / -drm_regions");
-  d->radial_min      = radial_min;
+  PetscInt counts[3] = {0, 0, 0}; // layer cells, b nodes, e nodes
+  double   deepest;
+  PetscCall(collectLayer(m, d, interior, b_flag, plane ? &site : nullptr, counts, &deepest));
   d->reference_depth = plane ? std::max(deepest, d->field.halfspaceDepth()) : 0;
-  // Distinct depths; each node keeps the index of its own.
-  std::vector<double> node_z = d->depths;
-  std::sort(d->depths.begin(), d->depths.end());
-  d->depths.erase(std::unique(d->depths.begin(), d->depths.end(), [h](double a, double b) { return std::fabs(a - b) <= 1e-9 * h; }), d->depths.end());
-  for (size_t k = 0; k < node_z.size(); ++k) {
-    d->node_depth.push_back((size_t)(std::lower_bound(d->depths.begin(), d->depths.end(), node_z[k] - 1e-9 * h) - d->depths.begin()));
-    d->node_delay[k] = d->field.horizontalSlowness() * (d->node_delay[k] - radial_min);
-  }
+  indexDepths(d, h);
   d->u0.assign(dim * d->node_offset.size(), 0.0);
   // Coordinates written by another code carry its rounding: 1e-3 of a cell matches them.
   if (!plane) PetscCall(FieldFileRead(comm, "-drm_free_field_file", d->file, (int)dim, d->node_coords, 1e-3 * h, &d->file_histories));
   PetscCall(DMCreateLocalVector(m.dm, &d->f_local));
   PetscCall(DMCreateGlobalVector(m.dm, &d->f_global));
 
-  // b and e nodes, counted once each (owned nodes only) through a global vector.
-  {
-    Vec          local, global;
-    PetscScalar *a;
-    PetscCall(DMGetLocalVector(m.dm, &local));
-    PetscCall(DMGetGlobalVector(m.dm, &global));
-    PetscCall(VecZeroEntries(local));
-    PetscCall(VecGetArray(local, &a));
-    for (size_t k = 0; k < d->node_offset.size(); ++k) a[d->node_offset[k] + (b_flag[d->node_offset[k]] > 0 ? 0 : 1)] = 1;
-    PetscCall(VecRestoreArray(local, &a));
-    PetscCall(VecZeroEntries(global));
-    PetscCall(DMLocalToGlobal(m.dm, local, ADD_VALUES, global));
-    PetscInt           n;
-    const PetscScalar *g;
-    PetscCall(VecGetLocalSize(global, &n));
-    PetscCall(VecGetArrayRead(global, &g));
-    for (PetscInt i = 0; i < n; i += dim) counts[1] += PetscRealPart(g[i]) > 0, counts[2] += PetscRealPart(g[i + 1]) > 0;
-    PetscCall(VecRestoreArrayRead(global, &g));
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &counts[1], 2, MPIU_INT, MPI_SUM, comm));
-    PetscCall(DMRestoreGlobalVector(m.dm, &global));
-    PetscCall(DMRestoreLocalVector(m.dm, &local));
-  }
+  PetscCall(countNodes(m, d, b_flag, &counts[1]));
   PetscCall(report(m, d, o, counts, site, site_regions));
   *out = d;
   PetscFunctionReturn(0);
