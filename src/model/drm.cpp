@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "slipwave/core/option_choice.hpp"
 #include "slipwave/model/attenuation.hpp"
@@ -193,6 +194,19 @@ size_t mediumAt(const physics::LayeredSite &site, double z) {
   return j;
 }
 
+// global = the sum over the ranks of what fill writes into the zeroed local (ghosted) array.
+PetscErrorCode sumOverRanks(DM dm, Vec local, Vec global, const std::function<void(PetscScalar *)> &fill) {
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(VecZeroEntries(local));
+  PetscCall(VecGetArray(local, &a));
+  fill(a);
+  PetscCall(VecRestoreArray(local, &a));
+  PetscCall(VecZeroEntries(global));
+  PetscCall(DMLocalToGlobal(dm, local, ADD_VALUES, global));
+  PetscFunctionReturn(0);
+}
+
 // Omega (interior) flags per local cell; the b nodes (in Omega and in an exterior cell, on
 // any rank) as a ghosted local array with 1 on them.
 PetscErrorCode classify(const Elastodynamics &m, const DrmOptions &o, const double lo[3], const double hi[3], double h, std::vector<char> *interior,
@@ -233,13 +247,10 @@ PetscErrorCode classify(const Elastodynamics &m, const DrmOptions &o, const doub
   PetscScalar *a;
   PetscCall(DMGetLocalVector(m.dm, &local));
   PetscCall(DMGetGlobalVector(m.dm, &global));
-  PetscCall(VecZeroEntries(local));
-  PetscCall(VecGetArray(local, &a));
-  for (PetscInt c = 0; c < bulk.cellCount(); ++c)
-    for (PetscInt k = 0; k < nen; ++k) a[bulk.cellNodeOffset(c, k) + ((*interior)[c] ? 0 : 1)] += 1;
-  PetscCall(VecRestoreArray(local, &a));
-  PetscCall(VecZeroEntries(global));
-  PetscCall(DMLocalToGlobal(m.dm, local, ADD_VALUES, global));
+  PetscCall(sumOverRanks(m.dm, local, global, [&](PetscScalar *v) {
+    for (PetscInt c = 0; c < bulk.cellCount(); ++c)
+      for (PetscInt k = 0; k < nen; ++k) v[bulk.cellNodeOffset(c, k) + ((*interior)[c] ? 0 : 1)] += 1;
+  }));
   PetscCall(DMGlobalToLocal(m.dm, global, INSERT_VALUES, local));
   PetscInt n;
   PetscCall(VecGetLocalSize(local, &n));
@@ -325,16 +336,12 @@ void indexDepths(Drm *d, double h) {
 PetscErrorCode countNodes(const Elastodynamics &m, const Drm *d, const std::vector<double> &b_flag, PetscInt counts[2]) {
   const PetscInt dim = m.dim;
   PetscFunctionBeginUser;
-  Vec          local, global;
-  PetscScalar *a;
+  Vec local, global;
   PetscCall(DMGetLocalVector(m.dm, &local));
   PetscCall(DMGetGlobalVector(m.dm, &global));
-  PetscCall(VecZeroEntries(local));
-  PetscCall(VecGetArray(local, &a));
-  for (size_t k = 0; k < d->node_offset.size(); ++k) a[d->node_offset[k] + (b_flag[d->node_offset[k]] > 0 ? 0 : 1)] = 1;
-  PetscCall(VecRestoreArray(local, &a));
-  PetscCall(VecZeroEntries(global));
-  PetscCall(DMLocalToGlobal(m.dm, local, ADD_VALUES, global));
+  PetscCall(sumOverRanks(m.dm, local, global, [&](PetscScalar *v) {
+    for (size_t k = 0; k < d->node_offset.size(); ++k) v[d->node_offset[k] + (b_flag[d->node_offset[k]] > 0 ? 0 : 1)] = 1;
+  }));
   PetscInt           n;
   const PetscScalar *g;
   PetscCall(VecGetLocalSize(global, &n));
