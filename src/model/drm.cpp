@@ -466,13 +466,16 @@ PetscErrorCode DrmDestroy(Drm **d) {
 namespace {
 
 // Samples the incident velocity to the TS's final time at 40 per period of its top frequency
-// (the Hermite interpolation in time is then accurate to ~1e-5) and synthesises the histories.
+// (the Hermite interpolation in time is then accurate to ~1e-7), but no finer than the time
+// step: a record's top frequency is its Nyquist frequency, far above what the mesh carries, and
+// its 40 samples per period would cost memory for nothing.
 PetscErrorCode synthesize(Drm *d, TS ts) {
-  PetscReal t_end;
+  PetscReal t_end, step;
   PetscFunctionBeginUser;
   PetscCall(TSGetMaxTime(ts, &t_end));
+  PetscCall(TSGetTimeStep(ts, &step));
   const double f_top = d->incident.topFrequency();
-  const double dt    = std::min(t_end / 64, f_top > 0 ? 1 / (40 * f_top) : t_end / 64);
+  const double dt    = std::min(t_end / 64, std::max(f_top > 0 ? 1 / (40 * f_top) : t_end / 64, (double)step));
   const size_t m     = (size_t)std::ceil(t_end / dt) + 2;
   std::vector<double> v_in(m);
   for (size_t k = 0; k < m; ++k) v_in[k] = d->incident.velocity(k * dt);
