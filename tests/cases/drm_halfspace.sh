@@ -14,7 +14,9 @@
 # 4. The same interior given as a region (-drm_regions, the Gmsh way) gives the same records
 #    to round-off inside Omega (1e-10 of each quantity's peak: two regions change the order of
 #    the element loop's sums; outside, the motion is a small difference of large forces).
-# 5. 2 ranks give the 1-rank records to round-off inside Omega (1e-10 of each quantity's peak, the bound of
+# 5. A negative angle travels toward -x: the mirror image of the +20 deg run (the model is
+#    symmetric about x = 0): v_x(60, 0) = -v_x(-60, 0) and v_y equal, to round-off (1e-10 of the peak).
+# 6. 2 ranks give the 1-rank records to round-off inside Omega (1e-10 of each quantity's peak, the bound of
 #    tests/cases/mpi_ranks.sh): the layer's forces are per-cell sums scattered like K u.
 set -eu
 . tests/tools/lib.sh
@@ -26,6 +28,7 @@ model="-regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soi
 $SW $model -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/sv"
 $SW $model -drm_wave p -drm_incidence_angle 30 -output_dir "$WORK/p"
 $MPIEXEC -n 2 $SW $model -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/sv2"
+$SW $model -drm_wave sv -drm_incidence_angle -20 -output_dir "$WORK/sv_mirror"
 $CHECK energy "$WORK/sv/energy.csv" --max-error 1e-9
 $CHECK energy "$WORK/p/energy.csv" --max-error 1e-9
 model_regions=$(sed 's/-regions soil /-regions soil,inner /' <<<"$model")
@@ -59,5 +62,10 @@ for wave, angle in (("sv", 20), ("p", 30)):
         peak = max(np.abs(d["v_x"]).max(), np.abs(d["v_y"]).max()) / 0.1
         print(f"{wave} {angle} deg: {n}: peak {peak:.2e} of the incident peak (bound 1e-2)")
         ok &= peak <= 1e-2
+a = np.genfromtxt(f"{w}/sv/stations/s3.csv", delimiter=",", names=True)
+b = np.genfromtxt(f"{w}/sv_mirror/stations/s1.csv", delimiter=",", names=True)
+mirror = max(np.abs(a["v_x"] + b["v_x"]).max(), np.abs(a["v_y"] - b["v_y"]).max()) / np.abs(a["v_x"]).max()
+print(f"sv -20 deg at (-60, 0) mirrors +20 deg at (60, 0): {mirror:.2e} of the peak (bound 1e-10)")
+ok &= mirror <= 1e-10
 sys.exit(0 if ok else 1)
 PY
