@@ -6,7 +6,6 @@
 #include <functional>
 
 #include "slipwave/core/option_choice.hpp"
-#include "slipwave/model/attenuation.hpp"
 #include "slipwave/model/drm_field_file.hpp"
 #include "slipwave/model/elastodynamics.hpp"
 #include "slipwave/physics/plane_wave_layered.hpp"
@@ -107,22 +106,6 @@ PetscErrorCode readOptions(MPI_Comm comm, PetscInt dim, Drm *d, DrmOptions *o, b
   PetscFunctionReturn(0);
 }
 
-// Global bounding box of the mesh's nodes, through the cells' coordinates.
-PetscErrorCode boundingBox(MPI_Comm comm, const fem::BulkOperator &bulk, double lo[3], double hi[3]) {
-  const PetscInt dim = bulk.dimension(), nen = bulk.nodesPerCell();
-  PetscFunctionBeginUser;
-  for (int i = 0; i < 3; ++i) lo[i] = 1e300, hi[i] = -1e300;
-  for (PetscInt c = 0; c < bulk.cellCount(); ++c)
-    for (PetscInt a = 0; a < nen; ++a)
-      for (PetscInt i = 0; i < dim; ++i) {
-        lo[i] = std::min(lo[i], bulk.cellCoordinates(c)[a * dim + i]);
-        hi[i] = std::max(hi[i], bulk.cellCoordinates(c)[a * dim + i]);
-      }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, lo, 3, MPI_DOUBLE, MPI_MIN, comm));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, hi, 3, MPI_DOUBLE, MPI_MAX, comm));
-  PetscFunctionReturn(0);
-}
-
 void cellBounds(const fem::BulkOperator &bulk, PetscInt c, double lo[3], double hi[3]) {
   const PetscInt dim = bulk.dimension();
   for (int i = 0; i < 3; ++i) lo[i] = 1e300, hi[i] = -1e300;
@@ -131,6 +114,20 @@ void cellBounds(const fem::BulkOperator &bulk, PetscInt c, double lo[3], double 
       lo[i] = std::min(lo[i], bulk.cellCoordinates(c)[a * dim + i]);
       hi[i] = std::max(hi[i], bulk.cellCoordinates(c)[a * dim + i]);
     }
+}
+
+// Global bounding box of the mesh's nodes, through the cells' coordinates.
+PetscErrorCode boundingBox(MPI_Comm comm, const fem::BulkOperator &bulk, double lo[3], double hi[3]) {
+  PetscFunctionBeginUser;
+  for (int i = 0; i < 3; ++i) lo[i] = 1e300, hi[i] = -1e300;
+  for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
+    double clo[3], chi[3];
+    cellBounds(bulk, c, clo, chi);
+    for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], clo[i]), hi[i] = std::max(hi[i], chi[i]);
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, lo, 3, MPI_DOUBLE, MPI_MIN, comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, hi, 3, MPI_DOUBLE, MPI_MAX, comm));
+  PetscFunctionReturn(0);
 }
 
 // The layered site the mesh holds: the cells of the column through the horizontal point
