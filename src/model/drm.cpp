@@ -130,21 +130,50 @@ PetscErrorCode boundingBox(MPI_Comm comm, const fem::BulkOperator &bulk, double 
   PetscFunctionReturn(0);
 }
 
-// The layered site the mesh holds: the cells of the column through the horizontal point
-// (lo + h/100), gathered from every rank, sorted by depth, equal neighbours merged. Returns
-// the materials by region index.
+// Where the vertical line through the horizontal point x0 crosses cell c: the extremes of its
+// crossings with the cell's edges (2D) or faces (3D, triangles; a hexahedron's faces split in
+// two), exact for convex cells. False when the line misses the cell or only touches it.
+bool verticalCrossing(const fem::BulkOperator &bulk, PetscInt c, const double *x0, double *lo, double *hi) {
+  const PetscInt dim = bulk.dimension(), nen = bulk.nodesPerCell();
+  const double  *X   = bulk.cellCoordinates(c);
+  *lo = 1e300, *hi = -1e300;
+  auto take = [&](double v) { *lo = std::min(*lo, v), *hi = std::max(*hi, v); };
+  if (dim == 2) {
+    for (PetscInt a = 0; a < nen; ++a) {
+      const double *p = &X[a * 2], *q = &X[((a + 1) % nen) * 2];
+      if (p[0] == q[0] || (x0[0] - p[0]) * (x0[0] - q[0]) > 0) continue;
+      take(p[1] + (q[1] - p[1]) * (x0[0] - p[0]) / (q[0] - p[0]));
+    }
+  } else {
+    static const int kTet[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
+    static const int kHex[12][3] = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+    const int (*tri)[3] = nen == 4 ? kTet : kHex;
+    for (int f = 0; f < (nen == 4 ? 4 : 12); ++f) {
+      const double *A = &X[tri[f][0] * 3], *B = &X[tri[f][1] * 3], *C = &X[tri[f][2] * 3];
+      // Barycentric coordinates of x0 in the triangle's horizontal projection.
+      const double det = (B[0] - A[0]) * (C[1] - A[1]) - (C[0] - A[0]) * (B[1] - A[1]);
+      if (std::fabs(det) < 1e-300) continue;
+      const double l1 = ((x0[0] - A[0]) * (C[1] - A[1]) - (C[0] - A[0]) * (x0[1] - A[1])) / det;
+      const double l2 = ((B[0] - A[0]) * (x0[1] - A[1]) - (x0[0] - A[0]) * (B[1] - A[1])) / det;
+      if (l1 < 0 || l2 < 0 || l1 + l2 > 1) continue;
+      take(A[2] + l1 * (B[2] - A[2]) + l2 * (C[2] - A[2]));
+    }
+  }
+  return *hi > *lo;
+}
+
+// The layered site the mesh holds: the cells crossed by the vertical line through the
+// horizontal point lo + h/100 (the mesh's first column), gathered from every rank, sorted by
+// depth, equal neighbours merged. Returns the materials by region index.
 PetscErrorCode siteFromMesh(MPI_Comm comm, const Elastodynamics &m, double surface, const double lo[3], double h, physics::LayeredSite *site,
                             std::vector<PetscInt> *site_regions) {
   const fem::BulkOperator &bulk = m.bulk;
-  const PetscInt           dim  = m.dim, vert = dim - 1;
+  const double             x0[2] = {lo[0] + h / 100, lo[1] + h / 100};
   std::vector<double>      mine; // top depth, bottom depth, region
   PetscFunctionBeginUser;
   for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
-    double clo[3], chi[3];
-    cellBounds(bulk, c, clo, chi);
-    bool in = true;
-    for (PetscInt i = 0; i < vert; ++i) in = in && clo[i] <= lo[i] + h / 100 && lo[i] + h / 100 <= chi[i];
-    if (in) mine.insert(mine.end(), {surface - chi[vert], surface - clo[vert], (double)bulk.cellRegion(c)});
+    double zlo, zhi;
+    if (verticalCrossing(bulk, c, x0, &zlo, &zhi)) mine.insert(mine.end(), {surface - zhi, surface - zlo, (double)bulk.cellRegion(c)});
   }
   PetscMPIInt size, n = (PetscMPIInt)mine.size();
   PetscCallMPI(MPI_Comm_size(comm, &size));
