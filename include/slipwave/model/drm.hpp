@@ -16,9 +16,11 @@
 //
 // Free field: a plane P, SV or SH wave (-drm_wave, -drm_incidence_angle from the vertical,
 // -drm_azimuth of the horizontal direction of travel in 3D; in 2D a negative angle travels
-// toward -x) in the horizontally layered site that the mesh itself holds: the materials
-// met going down the mesh's first column (lowest x, y), the deepest one taken as the
-// half-space (physics/plane_wave_layered.hpp). Its velocity history -drm_stf ... (the
+// toward -x) in the horizontally layered site that the mesh itself holds: the materials of
+// the cells that the vertical line through the mesh's lowest x (and y) corner, moved in by
+// h/100, crosses (its "first column"), the deepest one taken as the half-space
+// (physics/plane_wave_layered.hpp). Or a free field read from HDF5 (-drm_free_field_file,
+// model/drm_field_file.hpp). Its velocity history -drm_stf ... (the
 // TimeFunction options: wavelet or record) is that of the incident up-going wave at the
 // reference point: the upstream edge of the DRM nodes, at the deepest DRM node or the top of
 // the half-space if that is deeper; so no DRM node moves before t = 0 (causal).
