@@ -59,3 +59,30 @@ class HalfspacePlaneWave:
             arg = t - self.p * (x - xr) + (q_in * (z - zr) if k == 0 else -s[1] * z - q_in * zr)
             out += amp * np.outer([d[0], -d[1]], v(arg))
         return out
+
+
+def beyond_critical_velocity(rho, vp, vs, angle_deg, v_in, dt, x, y, xr, zr):
+    """(v_x, v_y) of an SV wave beyond the critical angle (sin i > vs/vp), where the reflected P
+    is evanescent: q_P = -i sqrt(p^2 - 1/vp^2) for w > 0 (decaying with depth), the free-surface
+    coefficients complex (the same 2 x 2 zero-traction solve as above, in complex numbers). The
+    incident velocity samples v_in (every dt from t = 0, zero padded 8x) are synthesised with
+    numpy's FFT; time dependence e^{i w t}."""
+    p = np.sin(np.radians(angle_deg)) / vs
+    qp, qs = -1j * np.sqrt(p**2 - 1 / vp**2), np.sqrt(1 / vs**2 - p**2)
+    mu, lam = rho * vs**2, rho * vp**2 - 2 * rho * vs**2
+
+    def traction(d, s):
+        return np.array([mu * (d[0] * s[1] + d[1] * s[0]), lam * (d[0] * s[0] + d[1] * s[1]) + 2 * mu * d[1] * s[1]])
+
+    inc = (np.array([vs * qs, vs * p]), np.array([p, -qs]))
+    rp = (np.array([vp * p, vp * qp]), np.array([p, qp]))
+    rs = (np.array([-vs * qs, vs * p]), np.array([p, qs]))
+    R = np.linalg.solve(np.column_stack([traction(*rp), traction(*rs)]), -traction(*inc))
+    z, n = -y, 8 * len(v_in)
+    om = 2 * np.pi * np.fft.rfftfreq(n, dt)
+    V = np.fft.rfft(v_in, n)
+    out = np.zeros((2, len(om)), complex)
+    for k, (amp, (d, s)) in enumerate(((1.0, inc), (R[0], rp), (R[1], rs))):
+        delay = p * (x - xr) + (-qs * (z - zr) if k == 0 else s[1] * z + qs * zr)
+        out += amp * np.outer([d[0], -d[1]], np.exp(-1j * om * delay))
+    return np.array([np.fft.irfft(V * out[c], n)[: len(v_in)] for c in (0, 1)])
