@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "slipwave/model/attenuation.hpp"
+#include "slipwave/model/drm.hpp"
 
 namespace slipwave::app {
 namespace {
@@ -117,6 +118,7 @@ PetscErrorCode ReportSetup(const model::Elastodynamics &model, const model::Stab
   for (const std::string &w : model.bc.warnings) PetscCall(PetscPrintf(comm, "  warning: %s\n", w.c_str()));
   if (model.bc.input_wave != model::InputWave::None)
     PetscCall(PetscPrintf(comm, "  input: %s wave through '%s', %s\n", model::inputWaveName(model.bc.input_wave), model.bc.input_boundary.c_str(), model.bc.input.describe().c_str()));
+  for (const std::string &line : model::DrmReport(model.drm)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   if (model.damping_ratio > 0)
     PetscCall(PetscPrintf(comm, "  Rayleigh damping %.3g %% at %g and %g Hz: alpha %.4g 1/s, beta %.4g s\n", 100 * model.damping_ratio, model.damping_f1, model.damping_f2,
                           model.rayleigh.alpha, model.rayleigh.beta));

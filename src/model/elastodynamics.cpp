@@ -6,6 +6,7 @@
 
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/model/attenuation.hpp"
+#include "slipwave/model/drm.hpp"
 #include "slipwave/model/free_field.hpp"
 #include "slipwave/model/lateral_tie.hpp"
 #include "slipwave/model/node_fields.hpp"
@@ -161,6 +162,7 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(assembleDampingBlocks(m));
   PetscCall(LateralTieCreate(m->dm, m->bc, m->mass, &m->tie));
   if (m->bc.has_free_field) PetscCall(FreeFieldCreate(m->dm, m->bc, m->materials, m->rayleigh, m->attenuation, m->bulk.minCellSize(), &m->free_field));
+  PetscCall(DrmCreate(*m, &m->drm));
   PetscCall(VecDuplicate(m->mass, &m->f_internal));
   PetscCall(VecDuplicate(m->mass, &m->f_external));
   PetscCall(VecDuplicate(m->mass, &m->f_input));
@@ -180,6 +182,7 @@ PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
   PetscFunctionBeginUser;
   PetscCall(BoundaryConditionsDestroy(&m->bc));
   PetscCall(FreeFieldDestroy(&m->free_field));
+  PetscCall(DrmDestroy(&m->drm));
   PetscCall(LateralTieDestroy(&m->tie));
   PetscCall(AttenuationDestroy(&m->attenuation));
   for (auto &iface : m->interfaces) PetscCall(iface.Destroy());
@@ -224,6 +227,7 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscCall(PetscLogEventBegin(core::event_boundary, 0, 0, 0, 0));
   const double v_in = m->input_enabled && m->bc.input.active() && m->bc.input_wave != InputWave::None ? m->bc.input.velocity(t) : 0.0;
   PetscCall(VecAXPBY(m->f_input, v_in, 0.0, m->bc.input_force));
+  if (m->drm && m->input_enabled) PetscCall(DrmAddForce(m->drm, *m, ts, t, m->f_input));
   PetscCall(VecWAXPY(m->f_external, 1.0, m->bc.constant_force, m->f_input));
   if (m->free_field) {
     // The columns' trial reaches t here; their force C v_ff + A t_ff at t is external.

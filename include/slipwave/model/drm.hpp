@@ -1,0 +1,52 @@
+// Seismic input by the Domain Reduction Method (Bielak, Loukakis, Hisada & Yoshimura 2003,
+// BSSA 93(2)): the free field u0(x, t) of the site without the scatterers is imposed as
+// effective nodal forces on a layer one element thick, so that the interior Omega carries the
+// total motion and the exterior only the scattered one, which the absorbing sides and base
+// take away.
+//
+// Geometry. Omega is a set of cells: those whose centroid lies in -drm_box (2D
+// xmin,xmax,ymin; 3D xmin,xmax,ymin,ymax,zmin; open upward), by default the mesh's bounding
+// box shrunk by -drm_offset cells (default 2) on the sides and the base, or the cells of the
+// regions -drm_regions a,b (Gmsh meshes). The boundary nodes b are the nodes shared by Omega
+// and the other cells; the layer is the exterior cells touching a b node; the exterior
+// nodes e are the layer's other nodes. With the layer's element matrices only (Bielak et al.
+// eq. 21):
+//   P_b = -M_be u0''_e - K_be u0_e,   P_e = +M_eb u0''_b + K_eb u0_b.
+// The mass is lumped (diagonal), so M_be = M_eb = 0 and only the stiffness terms remain.
+//
+// Free field: a plane P, SV or SH wave (-drm_wave, -drm_incidence_angle from the vertical,
+// -drm_azimuth of the horizontal direction of travel in 3D; in 2D a negative angle travels
+// toward -x) in the horizontally layered site that the mesh itself holds: the materials of
+// the cells that the vertical line through the mesh's lowest x (and y) corner, moved in by
+// h/100, crosses (its "first column"), the deepest one taken as the half-space
+// (physics/plane_wave_layered.hpp). Or a free field read from HDF5 (-drm_free_field_file,
+// model/drm_field_file.hpp). Its velocity history -drm_stf ... (the
+// TimeFunction options: wavelet or record) is that of the incident up-going wave at the
+// reference point: the upstream edge of the DRM nodes, at the deepest DRM node or the top of
+// the half-space if that is deeper; so no DRM node moves before t = 0 (causal).
+// The free field is elastic: Rayleigh or constant-Q damping and the base input (-input_wave)
+// are refused with -input_method drm.
+//
+// The forces are external work booked as input (they go into Elastodynamics::f_input).
+#pragma once
+#include <petscts.h>
+
+#include <string>
+#include <vector>
+
+namespace slipwave::model {
+
+struct Elastodynamics;
+struct Drm;
+
+// Reads -input_method base|drm; for drm its options, the layer and the site. *drm stays null
+// with base (the vertically incident base input of model/boundary_conditions.hpp).
+PetscErrorCode DrmCreate(const Elastodynamics &model, Drm **drm);
+PetscErrorCode DrmDestroy(Drm **drm);
+// f += the effective forces at time t (global vector). The free-field histories are
+// synthesised at the first call, up to the TS's final time.
+PetscErrorCode DrmAddForce(Drm *drm, const Elastodynamics &model, TS ts, PetscReal t, Vec f);
+// Lines for the run report (empty without DRM).
+std::vector<std::string> DrmReport(const Drm *drm);
+
+} // namespace slipwave::model

@@ -1,0 +1,237 @@
+#include "slipwave/physics/plane_wave_layered.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "slipwave/physics/fft.hpp"
+
+namespace slipwave::physics {
+namespace {
+
+// Solves A x = b in place (A n x n row-major) by Gaussian elimination with partial pivoting.
+void solveDense(std::vector<Complex> &A, std::vector<Complex> &b) {
+  const size_t n = b.size();
+  for (size_t k = 0; k < n; ++k) {
+    size_t piv = k;
+    for (size_t i = k + 1; i < n; ++i)
+      if (std::abs(A[i * n + k]) > std::abs(A[piv * n + k])) piv = i;
+    if (piv != k) {
+      for (size_t j = 0; j < n; ++j) std::swap(A[k * n + j], A[piv * n + j]);
+      std::swap(b[k], b[piv]);
+    }
+    for (size_t i = k + 1; i < n; ++i) {
+      const Complex f = A[i * n + k] / A[k * n + k];
+      if (f == 0.0) continue;
+      for (size_t j = k; j < n; ++j) A[i * n + j] -= f * A[k * n + j];
+      b[i] -= f * b[k];
+    }
+  }
+  for (size_t k = n; k-- > 0;) {
+    Complex s = b[k];
+    for (size_t j = k + 1; j < n; ++j) s -= A[k * n + j] * b[j];
+    b[k] = s / A[k * n + k];
+  }
+}
+
+} // namespace
+
+std::string PlaneWaveLayered::setup(const LayeredSite &site, PlaneWaveType wave, double angle_deg) {
+  char buf[200];
+  if (site.materials.size() != site.thickness.size() + 1) return "a layered site needs one material per layer plus the half-space";
+  for (const ElasticMaterial &m : site.materials) {
+    const std::string problem = elasticMaterialProblem(m);
+    if (!problem.empty()) return problem;
+  }
+  for (double h : site.thickness)
+    if (!(h > 0)) {
+      std::snprintf(buf, sizeof buf, "layer thickness %g m; allowed: > 0", h);
+      return buf;
+    }
+  if (!(angle_deg >= 0 && angle_deg < 90)) {
+    std::snprintf(buf, sizeof buf, "incidence angle %g deg; allowed: 0 <= angle < 90", angle_deg);
+    return buf;
+  }
+  const ElasticMaterial &hs = site.materials.back();
+  const double           p  = std::sin(angle_deg * M_PI / 180) / (wave == PlaneWaveType::P ? hs.vp : hs.vs);
+  for (const ElasticMaterial &m : site.materials)
+    for (double c : {m.vp, m.vs})
+      if (p > 0 && std::fabs(p * c - 1) < 1e-9) {
+        std::snprintf(buf, sizeof buf, "incidence angle %g deg makes a wave of speed %g m/s graze (p c = 1); choose another angle", angle_deg, c);
+        return buf;
+      }
+  site_ = site;
+  wave_ = wave;
+  p_    = p;
+  top_.assign(1, 0.0);
+  for (double h : site.thickness) top_.push_back(top_.back() + h);
+  return "";
+}
+
+Complex PlaneWaveLayered::verticalSlowness(size_t j, bool s_wave) const {
+  const double c = s_wave ? site_.materials[j].vs : site_.materials[j].vp;
+  const double r = 1 / (c * c) - p_ * p_;
+  // Evanescent: q = -i sqrt(p^2 - 1/c^2), so e^{-i w q z} decays downward for w > 0.
+  return r >= 0 ? Complex(std::sqrt(r), 0) : Complex(0, -std::sqrt(-r));
+}
+
+PlaneWaveLayered::Wave PlaneWaveLayered::wave(size_t j, bool s_wave, bool down) const {
+  const ElasticMaterial &m   = site_.materials[j];
+  const LameParameters   lm  = lame(m);
+  const Complex          sz  = down ? verticalSlowness(j, s_wave) : -verticalSlowness(j, s_wave);
+  const double           sx  = p_;
+  Wave                   w{};
+  if (wave_ == PlaneWaveType::SH) {
+    w.d   = {0, 1, 0};
+    w.tau = {0, lm.mu * sz, 0};
+    return w;
+  }
+  w.d          = s_wave ? std::array<Complex, 3>{-m.vs * sz, 0, m.vs * sx} : std::array<Complex, 3>{m.vp * sx, 0, m.vp * sz};
+  const Complex div = w.d[0] * sx + w.d[2] * sz; // d . s
+  w.tau        = {lm.mu * (w.d[0] * sz + w.d[2] * sx), 0, lm.lambda * div + 2 * lm.mu * w.d[2] * sz};
+  return w;
+}
+
+std::vector<Complex> PlaneWaveLayered::amplitudes(double w) const {
+  const size_t N = site_.thickness.size(), nw = wavesPerMedium(), n = nw * N + nw / 2;
+  const bool   sh = wave_ == PlaneWaveType::SH;
+  // Per medium, the waves in unknown order and the rows of the state they enter:
+  // P-SV (u_x, u_z, tau_x, tau_z); SH (u_y, tau_y).
+  auto stateRow = [&](const Wave &wv, size_t r) -> Complex {
+    if (sh) return r == 0 ? wv.d[1] : wv.tau[1];
+    return std::array<Complex, 4>{wv.d[0], wv.d[2], wv.tau[0], wv.tau[2]}[r];
+  };
+  auto waveOf = [&](size_t medium, size_t k) { // k-th wave of a medium: down waves first
+    const bool down = k < nw / 2;
+    const bool s    = sh || (k % 2 == 1);
+    return wave(medium, s, down);
+  };
+  // Phase of wave k of layer j at depth z: e^{-i w s_z (z - z_ref)}, z_ref its top (down) or bottom (up).
+  auto phase = [&](size_t j, size_t k, double z) {
+    const bool    down = k < nw / 2;
+    const bool    s    = sh || (k % 2 == 1);
+    const Complex sz   = down ? verticalSlowness(j, s) : -verticalSlowness(j, s);
+    const double  zref = down ? top_[j] : top_[j + 1];
+    return std::exp(Complex(0, -w) * sz * (z - zref));
+  };
+  std::vector<Complex> A(n * n, 0.0), b(n, 0.0);
+  const size_t         ns = nw / 2; // state rows at the free surface: the tractions
+  // Free surface: the tractions of the top medium vanish.
+  for (size_t r = 0; r < ns; ++r) {
+    if (N == 0) {
+      for (size_t k = 0; k < nw / 2; ++k) A[r * n + k] = stateRow(waveOf(0, k), ns + r);
+      b[r] -= stateRow(wave(0, wave_ != PlaneWaveType::P, false), ns + r);
+    } else
+      for (size_t k = 0; k < nw; ++k) A[r * n + k] = stateRow(waveOf(0, k), ns + r) * phase(0, k, 0.0);
+  }
+  // Interfaces: the state of layer j at its bottom equals that of medium j+1 at its top.
+  for (size_t j = 0; j < N; ++j)
+    for (size_t r = 0; r < nw; ++r) {
+      const size_t row = ns + j * nw + r;
+      for (size_t k = 0; k < nw; ++k) A[row * n + j * nw + k] = stateRow(waveOf(j, k), r) * phase(j, k, top_[j + 1]);
+      const bool   halfspace = j + 1 == N;
+      const size_t below     = halfspace ? nw / 2 : nw;
+      for (size_t k = 0; k < below; ++k)
+        A[row * n + (j + 1) * nw + k] = -stateRow(waveOf(j + 1, k), r) * (halfspace ? Complex(1) : phase(j + 1, k, top_[j + 1]));
+      if (halfspace) b[row] += stateRow(wave(N, wave_ != PlaneWaveType::P, false), r);
+    }
+  solveDense(A, b);
+  return b;
+}
+
+PlaneWaveLayered::State PlaneWaveLayered::stateAt(const std::vector<Complex> &amp, double w, double z) const {
+  const size_t N = site_.thickness.size(), nw = wavesPerMedium();
+  const bool   sh = wave_ == PlaneWaveType::SH;
+  size_t       j  = 0;
+  while (j < N && z > top_[j + 1]) ++j;
+  State st{};
+  auto  add = [&](const Wave &wv, Complex a) {
+    for (int c = 0; c < 3; ++c) {
+      st.u[c] += a * wv.d[c];
+      st.traction[c] += a * wv.tau[c];
+    }
+  };
+  const Complex iw(0, -w);
+  if (j < N) {
+    for (size_t k = 0; k < nw; ++k) {
+      const bool    down = k < nw / 2, s = sh || (k % 2 == 1);
+      const Complex sz   = down ? verticalSlowness(j, s) : -verticalSlowness(j, s);
+      add(wave(j, s, down), amp[j * nw + k] * std::exp(iw * sz * (z - (down ? top_[j] : top_[j + 1]))));
+    }
+  } else {
+    const double zt = top_[N];
+    const bool   s_in = wave_ != PlaneWaveType::P;
+    add(wave(N, s_in, false), std::exp(iw * (-verticalSlowness(N, s_in)) * (z - zt)));
+    for (size_t k = 0; k < nw / 2; ++k) {
+      const bool s = sh || k == 1;
+      add(wave(N, s, true), amp[N * nw + k] * std::exp(iw * verticalSlowness(N, s) * (z - zt)));
+    }
+  }
+  st.u[2] = -st.u[2]; // z down -> up
+  return st;
+}
+
+PlaneWaveHistories synthesizeHistories(const PlaneWaveLayered &field, const std::vector<double> &depths, double reference_depth, const std::vector<double> &v_in,
+                                       double dt) {
+  const size_t m = v_in.size(), n = fftLength(4 * std::max<size_t>(m, 1));
+  std::vector<Complex> input(n, 0.0);
+  std::copy(v_in.begin(), v_in.end(), input.begin());
+  fft(input, false);
+  // The incident wave has unit amplitude at the half-space top; at reference_depth its phase
+  // is e^{i w q (zr - zN)} (up-going), so dividing by it puts v_in at the reference depth.
+  const Complex q_hs  = field.verticalSlowness(field.layerCount(), field.wave() != PlaneWaveType::P);
+  const double  shift = reference_depth - field.halfspaceDepth();
+  const size_t  nd    = depths.size();
+  std::vector<std::vector<Complex>> out(3 * nd, std::vector<Complex>(n, 0.0));
+  for (size_t j = 0; j <= n / 2; ++j) {
+    const double               w   = 2 * M_PI * (double)j / ((double)n * dt);
+    const std::vector<Complex> amp = field.amplitudes(w);
+    const Complex              ref = std::exp(Complex(0, -w) * q_hs * shift);
+    for (size_t d = 0; d < nd; ++d) {
+      const PlaneWaveLayered::State st = field.stateAt(amp, w, depths[d]);
+      for (size_t c = 0; c < 3; ++c) {
+        const Complex y = input[j] * st.u[c] * ref;
+        if (j == 0 || 2 * j == n) {
+          out[3 * d + c][j] = y.real(); // real input, real transfer at w = 0 and at Nyquist
+        } else {
+          out[3 * d + c][j]     = y;
+          out[3 * d + c][n - j] = std::conj(y);
+        }
+      }
+    }
+  }
+  PlaneWaveHistories h;
+  h.samples = m;
+  h.dt      = dt;
+  h.velocity.resize(3 * nd * m);
+  h.displacement.resize(3 * nd * m);
+  std::vector<Complex> accel(n);
+  for (size_t k = 0; k < 3 * nd; ++k) {
+    // The acceleration by the spectral derivative i w, for the end correction below.
+    for (size_t j = 0; j < n; ++j) {
+      const double w = 2 * M_PI * (double)(j <= n / 2 ? (long)j : (long)j - (long)n) / ((double)n * dt);
+      accel[j]       = 2 * j == n ? 0.0 : Complex(0, w) * out[k][j];
+    }
+    fft(out[k], true);
+    fft(accel, true);
+    double *v = &h.velocity[k * m], *u = &h.displacement[k * m];
+    for (size_t i = 0; i < m; ++i) v[i] = out[k][i].real();
+    // Trapezoid with its Euler-Maclaurin end correction dt^2/12 (a_i - a_{i+1}): fourth order,
+    // so the displacement is as accurate as the Hermite interpolation that reads it.
+    u[0] = 0;
+    for (size_t i = 1; i < m; ++i) u[i] = u[i - 1] + 0.5 * dt * (v[i - 1] + v[i]) + dt * dt / 12 * (accel[i - 1].real() - accel[i].real());
+  }
+  return h;
+}
+
+double planeWaveDisplacementAt(const PlaneWaveHistories &h, size_t d, size_t c, double t) {
+  if (t <= 0 || h.samples == 0) return 0;
+  const double *u = &h.displacement[(d * 3 + c) * h.samples], *v = &h.velocity[(d * 3 + c) * h.samples];
+  const double  s = t / h.dt;
+  if (s >= (double)(h.samples - 1)) return u[h.samples - 1];
+  const size_t k = (size_t)s;
+  const double x = s - (double)k, x2 = x * x, x3 = x2 * x;
+  return (2 * x3 - 3 * x2 + 1) * u[k] + (x3 - 2 * x2 + x) * h.dt * v[k] + (-2 * x3 + 3 * x2) * u[k + 1] + (x3 - x2) * h.dt * v[k + 1];
+}
+
+} // namespace slipwave::physics
