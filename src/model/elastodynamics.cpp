@@ -253,7 +253,10 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscCall(VecRestoreArrayRead(m->f_internal, &fi));
   PetscCall(VecRestoreArrayRead(m->f_external, &fe));
   PetscCall(VecRestoreArray(a, &acc));
-  for (const PrescribedVelocity &p : m->bc.prescribed) PetscCall(VecAXPY(a, p.history.acceleration(t), p.dofs));
+  // The geostatic stage (input_enabled false) holds prescribed dofs at rest: a record's
+  // baseline correction leaves a nonzero acceleration at t = 0 that would drag them along.
+  if (m->input_enabled)
+    for (const PrescribedVelocity &p : m->bc.prescribed) PetscCall(VecAXPY(a, p.history.acceleration(t), p.dofs));
   PetscCall(LateralTieApply(m->tie, a));
   PetscCall(PetscLogEventEnd(core::event_boundary, 0, 0, 0, 0));
   PetscFunctionReturn(0);
