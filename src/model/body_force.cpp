@@ -7,12 +7,12 @@ namespace slipwave::model {
 PetscErrorCode BodyForceCreate(DM dm, Vec mass, BoundaryConditions *bc) {
   MPI_Comm     comm = PetscObjectComm((PetscObject)dm);
   PetscInt     dim, nb;
-  PetscReal    b[3] = {0, 0, 0};
+  PetscReal    b[4] = {0, 0, 0, 0}; // room for one value too many, to report it
   PetscBool    set;
   TimeFunction history;
   PetscFunctionBeginUser;
   PetscCall(DMGetDimension(dm, &dim));
-  nb = dim;
+  nb = 4;
   PetscOptionsBegin(comm, "", "Body force", "slipwave");
   PetscCall(PetscOptionsRealArray("-body_force", "body force per unit mass bx,by[,bz] [m/s^2] on every cell (times -body_force_stf)", "BodyForceCreate", b, &nb, &set));
   if (set) PetscCall(history.Read(comm, "body_force_", HistoryRole::Load, PetscOptionsObject));

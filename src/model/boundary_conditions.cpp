@@ -253,8 +253,8 @@ PetscErrorCode addTractionSide(DM dm, PetscInt dim, const std::vector<BoundaryFa
 PetscErrorCode addVelocitySide(DM dm, const std::vector<BoundaryFace> &faces, const std::vector<PetscInt> &components, const std::string &name, const std::string &prefix,
                                SideOptions *o, SideSums *sums, BoundaryConditions *bc) {
   PetscFunctionBeginUser;
-  PetscCheck(o->history.active(), PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "-%stype velocity needs a history; allowed: -%sstf ricker, gabor or record",
-             prefix.c_str(), prefix.c_str());
+  PetscCheck(o->history.active(), PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "-%stype%s velocity needs a history; allowed: -%sstf ricker, gabor, harmonic or record",
+             prefix.c_str(), o->per_component ? "_<component>" : "", prefix.c_str());
   PrescribedVelocity pv;
   pv.boundary = name;
   PetscCall(VecDuplicate(sums->constrained, &pv.dofs));

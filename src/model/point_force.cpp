@@ -1,5 +1,6 @@
 #include "slipwave/model/point_force.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -20,19 +21,22 @@ struct PointForceOptions {
 
 PetscErrorCode readPointForce(MPI_Comm comm, PetscInt dim, const std::string &name, PointForceOptions *o) {
   const std::string prefix = "point_force_" + name + "_", title = "Point force " + name;
-  PetscInt          nloc = dim, nforce = dim;
+  PetscInt          nloc = 4, nforce = 4; // room for one value too many, to report it
+  PetscReal         location[4] = {0, 0, 0, 0}, force[4] = {0, 0, 0, 0};
   PetscBool         loc_set, force_set;
   PetscFunctionBeginUser;
   o->name = name;
   PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
-  PetscCall(PetscOptionsRealArray("-location", "point of application x,y[,z] [m] (the nearest mesh node takes the force)", "PointForcesCreate", o->location, &nloc, &loc_set));
-  PetscCall(PetscOptionsRealArray("-force", "force fx,fy[,fz] [N in 3D; N/m (line load per unit thickness) in 2D]", "PointForcesCreate", o->force, &nforce, &force_set));
+  PetscCall(PetscOptionsRealArray("-location", "point of application x,y[,z] [m] (the nearest mesh node takes the force)", "PointForcesCreate", location, &nloc, &loc_set));
+  PetscCall(PetscOptionsRealArray("-force", "force fx,fy[,fz] [N in 3D; N/m (line load per unit thickness) in 2D]", "PointForcesCreate", force, &nforce, &force_set));
   PetscCall(o->history.Read(comm, prefix, HistoryRole::Load, PetscOptionsObject));
   PetscOptionsEnd();
   PetscCheck(loc_set && nloc == dim, comm, PETSC_ERR_USER_INPUT, "-%slocation has %" PetscInt_FMT " values; allowed: %" PetscInt_FMT " coordinates [m]", prefix.c_str(),
              loc_set ? nloc : 0, dim);
   PetscCheck(force_set && nforce == dim, comm, PETSC_ERR_USER_INPUT, "-%sforce has %" PetscInt_FMT " values; allowed: %" PetscInt_FMT " components [N, or N/m in 2D]",
              prefix.c_str(), force_set ? nforce : 0, dim);
+  std::copy(location, location + dim, o->location);
+  std::copy(force, force + dim, o->force);
   PetscFunctionReturn(0);
 }
 
@@ -121,8 +125,9 @@ PetscErrorCode PointForcesCreate(DM dm, BoundaryConditions *bc) {
     PetscCall(PetscFree(names[i]));
     bool inside = true;
     for (PetscInt d = 0; d < dim; ++d) inside = inside && o.location[d] >= lo[d] && o.location[d] <= hi[d];
-    PetscCheck(inside, comm, PETSC_ERR_USER_INPUT, "-point_force_%s_location is outside the mesh; allowed: a point in [%g, %g] x [%g, %g]%s", o.name.c_str(), (double)lo[0],
-               (double)hi[0], (double)lo[1], (double)hi[1], dim == 3 ? " x [z range of the mesh]" : "");
+    char box[256]; // formatted here: PETSc's own %g would print 0 as "0."
+    std::snprintf(box, sizeof box, "[%g, %g] x [%g, %g]%s", (double)lo[0], (double)hi[0], (double)lo[1], (double)hi[1], dim == 3 ? " x [the mesh's z range]" : "");
+    PetscCheck(inside, comm, PETSC_ERR_USER_INPUT, "-point_force_%s_location is outside the mesh; allowed: a point in %s", o.name.c_str(), box);
     Vec       pattern;
     Candidate node;
     PetscCall(pointForcePattern(dm, dim, o, &pattern, &node));

@@ -16,15 +16,16 @@ struct StructureLoadOptions {
 
 PetscErrorCode readStructureLoad(MPI_Comm comm, PetscInt dim, const std::vector<std::string> &regions, StructureLoadOptions *o, PetscBool *given) {
   char      region[256] = "";
-  PetscInt  nf = dim, nm = dim == 2 ? 1 : 3;
+  PetscInt  nf = 4, nm = 4; // room for one value too many, to report it
+  PetscReal force[4] = {0, 0, 0, 0}, moment[4] = {0, 0, 0, 0};
   PetscBool force_set, moment_set;
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, "structure_load_", "Structure load (forced vibration)", "slipwave");
   PetscCall(PetscOptionsString("-region", "region carrying the resultant force and moment (a structure or foundation)", "StructureLoadCreate", region, region, sizeof region,
                                given));
-  PetscCall(PetscOptionsRealArray("-force", "resultant force fx,fy[,fz] [N; N/m in 2D]", "StructureLoadCreate", o->force, &nf, &force_set));
+  PetscCall(PetscOptionsRealArray("-force", "resultant force fx,fy[,fz] [N; N/m in 2D]", "StructureLoadCreate", force, &nf, &force_set));
   PetscCall(PetscOptionsRealArray("-moment", "resultant moment about the region's node centroid: M [N m/m] about z in 2D, mx,my,mz [N m] in 3D", "StructureLoadCreate",
-                                  o->moment, &nm, &moment_set));
+                                  moment, &nm, &moment_set));
   if (*given) PetscCall(o->history.Read(comm, "structure_load_", HistoryRole::Load, PetscOptionsObject));
   PetscOptionsEnd();
   PetscCheck(*given || (!force_set && !moment_set), comm, PETSC_ERR_USER_INPUT,
@@ -37,6 +38,8 @@ PetscErrorCode readStructureLoad(MPI_Comm comm, PetscInt dim, const std::vector<
              region);
   PetscCheck(!force_set || nf == dim, comm, PETSC_ERR_USER_INPUT, "-structure_load_force has %" PetscInt_FMT " values; allowed: %" PetscInt_FMT, nf, dim);
   PetscCheck(!moment_set || nm == (dim == 2 ? 1 : 3), comm, PETSC_ERR_USER_INPUT, "-structure_load_moment has %" PetscInt_FMT " values; allowed: %d", nm, dim == 2 ? 1 : 3);
+  std::copy(force, force + 3, o->force);
+  std::copy(moment, moment + 3, o->moment);
   PetscFunctionReturn(0);
 }
 
