@@ -14,7 +14,9 @@
 # less, and the Richardson extrapolation 2 K(h/2) - K(h) must be within 10 % of K_r (issue
 # 12's bound; the fixed boundary at 8 B adds about 2 %: 1.5 % less at 15 B). Measured at
 # commit time: 1.167 and 1.114 K_r, extrapolated 1.061 K_r. The coarse run on 2 ranks matches
-# 1 rank to 1e-10 (each footing node carries its share once, whatever the partition).
+# 1 rank to 1e-10 (each footing node carries its share once, whatever the partition); the
+# accelerations to 1e-6 of their peak: in this quasi-static run M a is the small residual of
+# much larger nodal forces (K u), whose round-off it inherits (2e-8 measured).
 set -eu
 . tests/tools/lib.sh
 $PY - "$WORK/ramp.csv" <<'PY'
@@ -30,7 +32,7 @@ rocking="-mesh_box_upper 32,17 -regions soil,air,footing -region_soil_box 0,32,0
 $SW $rocking -mesh_box_faces 64,34 -output_dir "$WORK/h" | grep "load: structure load on 'footing' (27 nodes, centroid 16, 16.5): force (0, 0), moment 100000"
 $SW $rocking -mesh_box_faces 128,68 -output_dir "$WORK/h2" > /dev/null
 $MPIEXEC -n 2 $SW $rocking -mesh_box_faces 64,34 -output_dir "$WORK/h_np2" > /dev/null
-$CHECK stations-equal "$WORK/h" "$WORK/h_np2" --names L,R --tol 1e-10
+$CHECK stations-equal "$WORK/h" "$WORK/h_np2" --names L,R --tol 1e-10 --tol-a 1e-6
 $PY - "$WORK" <<'PY'
 import sys
 import numpy as np
