@@ -12,6 +12,8 @@ Both are Fourier-transformed on the run's samples (zero-padded to --pad times th
 the ratio is kept where the load's spectrum exceeds --min-spectrum of its peak. With
 --k-ref K_ref (a static stiffness) and --half-width B and --vs vs the script also gives the
 dimensionless coefficients of K = K_ref (k(a0) + i a0 c(a0)), a0 = w B / vs (Gazetas 1991).
+With --inertia (the foundation's mass, or its moment of inertia for rocking) its own
+inertia is taken out, K = P/R + inertia w^2: the soil's impedance under a massless footing.
 Writes <out>/impedance.csv (f, a0, K1, wC, C[, k, c]) and <out>/impedance.png (matplotlib,
 Agg).
 """
@@ -78,6 +80,7 @@ def main(argv=None):
     ap.add_argument("--stf-csv", help="time,factor CSV (--stf csv)")
     ap.add_argument("--f0", type=float, default=2.0, help="-structure_load_f0 [Hz]")
     ap.add_argument("--t0", type=float, help="-structure_load_t0 [s] (default: 1.2/f0 for ricker, 0 for harmonic)")
+    ap.add_argument("--inertia", type=float, default=0.0, help="foundation mass [kg, kg/m] or moment of inertia [kg m^2, kg m^2/m] to take out")
     ap.add_argument("--pad", type=int, default=4, help="zero padding factor of the FFT")
     ap.add_argument("--min-spectrum", type=float, default=0.05, help="keep frequencies where |P| >= this fraction of its peak")
     ap.add_argument("--half-width", type=float, help="B [m], for a0 = w B / vs")
@@ -89,6 +92,7 @@ def main(argv=None):
     p = load_history(t, args)
     f, K = impedance(t, p, r, args.pad, args.min_spectrum)
     w = 2 * np.pi * f
+    K = K + args.inertia * w * w
     cols = [f, np.full_like(f, np.nan), K.real, K.imag, K.imag / w]
     names = ["f", "a0", "K1", "wC", "C"]
     if args.half_width and args.vs:
