@@ -1,6 +1,5 @@
 #include "slipwave/model/body_force.hpp"
 
-#include <cstdio>
 
 namespace slipwave::model {
 
@@ -30,9 +29,7 @@ PetscErrorCode BodyForceCreate(DM dm, Vec mass, BoundaryConditions *bc) {
   for (PetscInt i = 0; i < n; ++i) f[i] = b[i % dim] * m[i];
   PetscCall(VecRestoreArrayRead(mass, &m));
   PetscCall(VecRestoreArray(pattern, &f));
-  char note[512];
-  std::snprintf(note, sizeof note, "body force: (%g, %g%s) m/s^2 per unit mass, %s", (double)b[0], (double)b[1], dim == 3 ? (", " + std::to_string(b[2])).c_str() : "",
-                history.active() ? history.describe().c_str() : "constant");
+  const std::string note = "body force: " + LoadVectorText(b, dim) + " m/s^2 per unit mass, " + (history.active() ? history.describe() : "constant");
   bc->load_notes.push_back(note);
   PetscCall(TimedLoadAdopt("body force", pattern, std::move(history), bc->constant_force, &bc->timed_loads));
   PetscFunctionReturn(0);

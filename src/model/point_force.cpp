@@ -131,10 +131,9 @@ PetscErrorCode PointForcesCreate(DM dm, BoundaryConditions *bc) {
     Vec       pattern;
     Candidate node;
     PetscCall(pointForcePattern(dm, dim, o, &pattern, &node));
-    char note[512];
-    std::snprintf(note, sizeof note, "point force %s: (%g, %g%s) %s on the node at (%g, %g%s), %s", o.name.c_str(), (double)o.force[0], (double)o.force[1],
-                  dim == 3 ? (", " + std::to_string(o.force[2])).c_str() : "", dim == 2 ? "N/m" : "N", node[1], node[2], dim == 3 ? (", " + std::to_string(node[3])).c_str() : "",
-                  o.history.active() ? o.history.describe().c_str() : "constant");
+    const double at[3] = {node[1], node[2], node[3]};
+    const std::string note = "point force " + o.name + ": " + LoadVectorText(o.force, dim) + (dim == 2 ? " N/m" : " N") + " on the node at " + LoadVectorText(at, dim) +
+                             ", " + (o.history.active() ? o.history.describe() : "constant");
     bc->load_notes.push_back(note);
     PetscCall(TimedLoadAdopt("point force " + o.name, pattern, std::move(o.history), bc->constant_force, &bc->timed_loads));
   }

@@ -151,11 +151,9 @@ PetscErrorCode StructureLoadCreate(DM dm, const fem::BulkOperator &bulk, const s
   PetscCall(rigidBodyForces(comm, dim, o, marks, coords, pattern, centroid, &count));
   PetscCall(VecDestroy(&coords));
   PetscCall(VecDestroy(&marks));
-  char note[512];
-  std::snprintf(note, sizeof note, "structure load on '%s' (%.0f nodes, centroid %g, %g%s): force (%g, %g%s), moment %g%s, %s", o.region.c_str(), count, centroid[0],
-                centroid[1], dim == 3 ? (", " + std::to_string(centroid[2])).c_str() : "", (double)o.force[0], (double)o.force[1],
-                dim == 3 ? (", " + std::to_string(o.force[2])).c_str() : "", (double)o.moment[0],
-                dim == 3 ? (", " + std::to_string(o.moment[1]) + ", " + std::to_string(o.moment[2])).c_str() : "", o.history.active() ? o.history.describe().c_str() : "constant");
+  const std::string note = "structure load on '" + o.region + "' (" + std::to_string((long)count) + " nodes, centroid " + LoadVectorText(centroid, dim) +
+                           "): force " + LoadVectorText(o.force, dim) + ", moment " + LoadVectorText(o.moment, dim == 2 ? 1 : 3) + ", " +
+                           (o.history.active() ? o.history.describe() : "constant");
   bc->load_notes.push_back(note);
   PetscCall(TimedLoadAdopt("structure load " + o.region, pattern, std::move(o.history), bc->constant_force, &bc->timed_loads));
   PetscFunctionReturn(0);

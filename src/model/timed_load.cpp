@@ -1,5 +1,7 @@
 #include "slipwave/model/timed_load.hpp"
 
+#include <cstdio>
+
 namespace slipwave::model {
 
 PetscErrorCode TimedLoadsAdd(const std::vector<TimedLoad> &loads, double t, Vec f) {
@@ -14,6 +16,16 @@ PetscErrorCode TimedLoadsDestroy(std::vector<TimedLoad> *loads) {
   for (TimedLoad &l : *loads) PetscCall(VecDestroy(&l.pattern));
   loads->clear();
   PetscFunctionReturn(0);
+}
+
+std::string LoadVectorText(const double *v, PetscInt n) {
+  std::string text = "(";
+  for (PetscInt i = 0; i < n; ++i) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%s%g", i ? ", " : "", v[i]);
+    text += buf;
+  }
+  return text + ")";
 }
 
 PetscErrorCode TimedLoadAdopt(const std::string &name, Vec pattern, TimeFunction history, Vec constant, std::vector<TimedLoad> *loads) {

@@ -29,7 +29,7 @@ rocking="-mesh_box_upper 32,17 -regions soil,air,footing -region_soil_box 0,32,0
  -material_soil_rho 2000 -material_soil_vp 200 -material_soil_vs 100 -material_footing_rho 2000 -material_footing_vp 1000 -material_footing_vs 500
  -bc_left_type fixed -bc_right_type fixed -bc_bottom_type fixed -structure_load_region footing -structure_load_moment 1e5 -structure_load_stf record
  -structure_load_record $WORK/ramp.csv -ts_max_time 3 -output_fields 0 -progress_interval 1000000 -station_coordinates 14,16,18,16 -station_names L,R"
-$SW $rocking -mesh_box_faces 64,34 -output_dir "$WORK/h" | grep "load: structure load on 'footing' (27 nodes, centroid 16, 16.5): force (0, 0), moment 100000"
+$SW $rocking -mesh_box_faces 64,34 -output_dir "$WORK/h" | grep "load: structure load on 'footing' (27 nodes, centroid (16, 16.5)): force (0, 0), moment (100000)"
 $SW $rocking -mesh_box_faces 128,68 -output_dir "$WORK/h2" > /dev/null
 $MPIEXEC -n 2 $SW $rocking -mesh_box_faces 64,34 -output_dir "$WORK/h_np2" > /dev/null
 $CHECK stations-equal "$WORK/h" "$WORK/h_np2" --names L,R --tol 1e-10 --tol-a 1e-6

@@ -24,6 +24,8 @@ struct TimedLoad {
 PetscErrorCode TimedLoadsAdd(const std::vector<TimedLoad> &loads, double t, Vec f);
 PetscErrorCode TimedLoadsDestroy(std::vector<TimedLoad> *loads);
 // The pattern goes to `constant` when the history is inactive, else into a new timed load.
+// "(a, b[, c])" with %g, for the run report's load lines.
+std::string LoadVectorText(const double *v, PetscInt n);
 PetscErrorCode TimedLoadAdopt(const std::string &name, Vec pattern, TimeFunction history, Vec constant, std::vector<TimedLoad> *loads);
 
 } // namespace slipwave::model
