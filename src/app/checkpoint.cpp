@@ -1,6 +1,7 @@
 #include "slipwave/app/checkpoint.hpp"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -30,6 +31,7 @@ void ledgerFromArray(const double *a, model::EnergyLedger *e) {
   e->kinetic = a[0], e->strain = a[1], e->input = a[2], e->external = a[3], e->reactions = a[4], e->absorbed = a[5], e->damped = a[6];
   e->interface_work = a[7], e->shadow = a[8], e->shadow_start = a[9], e->balance_error = a[10], e->scale = a[11], e->h_prev = a[12];
   e->started = a[13] != 0, e->anelastic = a[14], e->contact_damped = a[15];
+  e->external_gross = std::fabs(e->external); // not stored: the net work bounds it from below
 }
 constexpr PetscInt kLedgerSize = 16;
 

@@ -116,6 +116,7 @@ PetscErrorCode ReportSetup(const model::Elastodynamics &model, const model::Stab
   for (size_t i = 0; i < model.bc.names.size(); ++i) bcs += " " + model.bc.names[i] + "=" + model::boundaryTypeName(model.bc.types[i]);
   PetscCall(PetscPrintf(comm, "  boundaries:%s\n", bcs.c_str()));
   for (const std::string &w : model.bc.warnings) PetscCall(PetscPrintf(comm, "  warning: %s\n", w.c_str()));
+  for (const std::string &l : model.bc.load_notes) PetscCall(PetscPrintf(comm, "  load: %s\n", l.c_str()));
   if (model.bc.input_wave != model::InputWave::None)
     PetscCall(PetscPrintf(comm, "  input: %s wave through '%s', %s\n", model::inputWaveName(model.bc.input_wave), model.bc.input_boundary.c_str(), model.bc.input.describe().c_str()));
   for (const std::string &line : model::DrmReport(model.drm)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));

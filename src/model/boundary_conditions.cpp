@@ -122,17 +122,49 @@ PetscErrorCode readLoadOptions(MPI_Comm comm, PetscInt dim, BoundaryConditions *
 struct SideOptions {
   BoundaryType          type = BoundaryType::Free;
   std::vector<PetscInt> components; // held components (fixed, velocity)
+  std::vector<PetscInt> fixed_components, velocity_components; // with per-component types
+  bool                  per_component = false;                 // some -type_<c> given
   PetscReal             traction[3] = {0, 0, 0};
-  TimeFunction          history;    // velocity
+  TimeFunction          history;    // velocity, or the traction's factor
   std::string           tie_with;   // tied
 };
+
+// -<prefix>type_x|_y|_z: each component's own type, free, fixed or velocity; the others keep
+// the side's -type.
+PetscErrorCode readComponentTypes(MPI_Comm comm, PetscInt dim, const std::string &prefix, PetscInt side_type, bool components_given, PetscOptionItems *PetscOptionsObject,
+                                  SideOptions *o) {
+  const char *const kComponentTypes[] = {"free", "fixed", "velocity"};
+  const BoundaryType kComponentType[] = {BoundaryType::Free, BoundaryType::Fixed, BoundaryType::Velocity};
+  PetscInt          types[3];
+  PetscFunctionBeginUser;
+  for (PetscInt c = 0; c < dim; ++c) {
+    const std::string name = std::string("-type_") + "xyz"[c];
+    PetscInt          choice = 0;
+    PetscBool         set;
+    PetscCall(core::OptionsChoice(PetscOptionsObject, name.c_str(), "this component's own condition on the boundary: free, fixed, velocity (overrides -type for it)",
+                                  kComponentTypes, 3, &choice, &set));
+    types[c] = set ? (PetscInt)kComponentType[choice] : side_type;
+    o->per_component = o->per_component || set;
+  }
+  if (!o->per_component) PetscFunctionReturn(0);
+  const BoundaryType side = (BoundaryType)side_type;
+  PetscCheck(side == BoundaryType::Free || side == BoundaryType::Fixed || side == BoundaryType::Velocity, comm, PETSC_ERR_USER_INPUT,
+             "-%stype = %s with -%stype_<component>; allowed: -%stype free, fixed or velocity (the components not named)", prefix.c_str(), kTypeNames[side_type],
+             prefix.c_str(), prefix.c_str());
+  PetscCheck(!components_given, comm, PETSC_ERR_USER_INPUT, "-%scomponents with -%stype_<component>; allowed: one of them", prefix.c_str(), prefix.c_str());
+  for (PetscInt c = 0; c < dim; ++c) {
+    if ((BoundaryType)types[c] == BoundaryType::Fixed) o->fixed_components.push_back(c);
+    if ((BoundaryType)types[c] == BoundaryType::Velocity) o->velocity_components.push_back(c);
+  }
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode readSideOptions(MPI_Comm comm, PetscInt dim, const std::string &prefix, const std::string &name, SideOptions *o) {
   const std::string title = "Boundary " + name;
   PetscInt          type  = 0;
   char              comps[16] = "", tie_with[256] = "";
   PetscInt          ntraction = dim;
-  PetscBool         traction_set;
+  PetscBool         traction_set, comps_set;
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
   PetscCall(core::OptionsChoice(PetscOptionsObject, "-type", "boundary condition", kTypeNames, kTypeCount, &type, nullptr));
@@ -140,9 +172,13 @@ PetscErrorCode readSideOptions(MPI_Comm comm, PetscInt dim, const std::string &p
     PetscCall(PetscOptionsString("-tie_with", "the opposite side whose facing nodes move with this one's (type tied)", "BoundaryConditionsCreate", tie_with, tie_with,
                                  sizeof tie_with, nullptr));
   PetscCall(PetscOptionsString("-components", "components held (fixed, velocity): x,y[,z]; default all", "BoundaryConditionsCreate", comps, comps, sizeof comps,
-                               nullptr));
-  PetscCall(PetscOptionsRealArray("-traction", "applied traction tx,ty[,tz] [Pa] (type traction)", "BoundaryConditionsCreate", o->traction, &ntraction, &traction_set));
-  if ((BoundaryType)type == BoundaryType::Velocity) PetscCall(o->history.Read(comm, prefix, HistoryRole::BoundaryVelocity, PetscOptionsObject));
+                               &comps_set));
+  PetscCall(readComponentTypes(comm, dim, prefix, type, comps_set, PetscOptionsObject, o));
+  PetscCall(PetscOptionsRealArray("-traction", "applied traction tx,ty[,tz] [Pa] (type traction; times -stf when given)", "BoundaryConditionsCreate", o->traction, &ntraction,
+                                  &traction_set));
+  if ((BoundaryType)type == BoundaryType::Velocity || !o->velocity_components.empty())
+    PetscCall(o->history.Read(comm, prefix, HistoryRole::BoundaryVelocity, PetscOptionsObject));
+  if ((BoundaryType)type == BoundaryType::Traction) PetscCall(o->history.Read(comm, prefix, HistoryRole::Load, PetscOptionsObject));
   PetscOptionsEnd();
   o->type     = (BoundaryType)type;
   o->tie_with = tie_with;
@@ -173,16 +209,16 @@ PetscErrorCode addTiedSide(MPI_Comm comm, const std::vector<std::string> &bounda
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode addFixedSide(DM dm, const std::vector<BoundaryFace> &faces, const std::string &name, const std::string &prefix, const SideOptions &o, SideSums *sums,
-                            BoundaryConditions *bc) {
+PetscErrorCode addFixedSide(DM dm, const std::vector<BoundaryFace> &faces, const std::vector<PetscInt> &components, const std::string &name, const std::string &prefix,
+                            SideSums *sums, BoundaryConditions *bc) {
   PetscFunctionBeginUser;
-  PetscCall(markFaceDofs(dm, faces, o.components, sums->constrained));
+  PetscCall(markFaceDofs(dm, faces, components, sums->constrained));
   // A vertically incident plane wave moves every point of a horizontally layered site
   // alike; a side held in that component reflects the wave back into the model instead
   // of letting it pass (rollers under SV: the default scene lost 2/3 of its surface
   // velocity that way).
   if (bc->input_wave != InputWave::None && name != bc->input_boundary &&
-      std::find(o.components.begin(), o.components.end(), bc->input_component) != o.components.end()) {
+      std::find(components.begin(), components.end(), bc->input_component) != components.end()) {
     bc->warnings.push_back("boundary '" + name + "' is fixed in " + "xyz"[bc->input_component] + ", the component the incident " +
                            (bc->input_wave == InputWave::SV ? "SV" : "P") + " wave moves: it holds back the free-field motion; use -" + prefix +
                            "type freefield (or tied with the opposite side)");
@@ -190,28 +226,61 @@ PetscErrorCode addFixedSide(DM dm, const std::vector<BoundaryFace> &faces, const
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode addTractionSide(PetscInt dim, const std::vector<BoundaryFace> &faces, const SideOptions &o, SideSums *sums) {
+// A constant traction adds to the constant force; one with a history becomes a timed load.
+PetscErrorCode addTractionSide(DM dm, PetscInt dim, const std::vector<BoundaryFace> &faces, const std::string &name, SideOptions *o, SideSums *sums,
+                               BoundaryConditions *bc) {
+  Vec          local = sums->force_local;
   PetscScalar *fa;
   PetscFunctionBeginUser;
-  PetscCall(VecGetArray(sums->force_local, &fa));
-  for (const BoundaryFace &f : faces) PetscCall(addFaceLoad(sums->s, f, dim, o.traction, fa));
-  PetscCall(VecRestoreArray(sums->force_local, &fa));
+  if (o->history.active()) {
+    PetscCall(DMGetLocalVector(dm, &local));
+    PetscCall(VecZeroEntries(local));
+  }
+  PetscCall(VecGetArray(local, &fa));
+  for (const BoundaryFace &f : faces) PetscCall(addFaceLoad(sums->s, f, dim, o->traction, fa));
+  PetscCall(VecRestoreArray(local, &fa));
+  if (!o->history.active()) PetscFunctionReturn(0);
+  Vec pattern;
+  PetscCall(DMCreateGlobalVector(dm, &pattern));
+  PetscCall(VecZeroEntries(pattern));
+  PetscCall(DMLocalToGlobal(dm, local, ADD_VALUES, pattern));
+  PetscCall(DMRestoreLocalVector(dm, &local));
+  bc->load_notes.push_back("traction on '" + name + "': " + o->history.describe());
+  PetscCall(TimedLoadAdopt("traction " + name, pattern, std::move(o->history), bc->constant_force, &bc->timed_loads));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode addVelocitySide(DM dm, const std::vector<BoundaryFace> &faces, const std::string &name, const std::string &prefix, SideOptions *o, SideSums *sums,
-                               BoundaryConditions *bc) {
+PetscErrorCode addVelocitySide(DM dm, const std::vector<BoundaryFace> &faces, const std::vector<PetscInt> &components, const std::string &name, const std::string &prefix,
+                               SideOptions *o, SideSums *sums, BoundaryConditions *bc) {
   PetscFunctionBeginUser;
-  PetscCheck(o->history.active(), PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "-%stype velocity needs a history; allowed: -%sstf ricker, gabor or record",
-             prefix.c_str(), prefix.c_str());
+  PetscCheck(o->history.active(), PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT, "-%stype%s velocity needs a history; allowed: -%sstf ricker, gabor, harmonic or record",
+             prefix.c_str(), o->per_component ? "_<component>" : "", prefix.c_str());
   PrescribedVelocity pv;
   pv.boundary = name;
   PetscCall(VecDuplicate(sums->constrained, &pv.dofs));
   PetscCall(VecZeroEntries(pv.dofs));
-  PetscCall(markFaceDofs(dm, faces, o->components, pv.dofs));
+  PetscCall(markFaceDofs(dm, faces, components, pv.dofs));
   PetscCall(VecAXPY(sums->constrained, 1.0, pv.dofs));
   pv.history = std::move(o->history);
   bc->prescribed.push_back(std::move(pv));
+  PetscFunctionReturn(0);
+}
+
+// A side with per-component types: its fixed and its velocity components, each as a side of
+// that type; the side's recorded type is the strongest one it holds (velocity, fixed, free).
+PetscErrorCode addComponentSide(DM dm, const std::vector<BoundaryFace> &faces, const std::string &name, const std::string &prefix, SideOptions *o, SideSums *sums,
+                                BoundaryConditions *bc) {
+  std::string note = "boundary '" + name + "' per component:";
+  PetscFunctionBeginUser;
+  for (PetscInt c : o->fixed_components) note += std::string(" ") + "xyz"[c] + " fixed";
+  for (PetscInt c : o->velocity_components) note += std::string(" ") + "xyz"[c] + " velocity";
+  if (!o->fixed_components.empty()) PetscCall(addFixedSide(dm, faces, o->fixed_components, name, prefix, sums, bc));
+  if (!o->velocity_components.empty()) {
+    note += " (" + o->history.describe() + ")";
+    PetscCall(addVelocitySide(dm, faces, o->velocity_components, name, prefix, o, sums, bc));
+  }
+  bc->types.back() = !o->velocity_components.empty() ? BoundaryType::Velocity : !o->fixed_components.empty() ? BoundaryType::Fixed : BoundaryType::Free;
+  bc->load_notes.push_back(note + ", the others free");
   PetscFunctionReturn(0);
 }
 
@@ -341,12 +410,16 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
     bc->types.push_back(o.type);
     std::vector<BoundaryFace> faces;
     PetscCall(BoundaryFacesGet(dm, name, &faces));
+    if (o.per_component) {
+      PetscCall(addComponentSide(dm, faces, name, prefix, &o, &sums, bc));
+      continue;
+    }
     switch (o.type) {
     case BoundaryType::Free: break;
     case BoundaryType::Tied: PetscCall(addTiedSide(comm, boundaries, name, prefix, o, bc)); break;
-    case BoundaryType::Fixed: PetscCall(addFixedSide(dm, faces, name, prefix, o, &sums, bc)); break;
-    case BoundaryType::Traction: PetscCall(addTractionSide(dim, faces, o, &sums)); break;
-    case BoundaryType::Velocity: PetscCall(addVelocitySide(dm, faces, name, prefix, &o, &sums, bc)); break;
+    case BoundaryType::Fixed: PetscCall(addFixedSide(dm, faces, o.components, name, prefix, &sums, bc)); break;
+    case BoundaryType::Traction: PetscCall(addTractionSide(dm, dim, faces, name, &o, &sums, bc)); break;
+    case BoundaryType::Velocity: PetscCall(addVelocitySide(dm, faces, o.components, name, prefix, &o, &sums, bc)); break;
     case BoundaryType::FreeField:
     case BoundaryType::Absorbing: PetscCall(addDashpotSide(dim, faces, materials, name, o.type, &sums, bc)); break;
     }
@@ -374,6 +447,7 @@ PetscErrorCode BoundaryConditionsDestroy(BoundaryConditions *bc) {
   PetscCall(VecDestroy(&bc->input_force));
   PetscCall(VecDestroy(&bc->free_mask));
   for (PrescribedVelocity &p : bc->prescribed) PetscCall(VecDestroy(&p.dofs));
+  PetscCall(TimedLoadsDestroy(&bc->timed_loads));
   bc->prescribed.clear();
   PetscCall(DMDestroy(&bc->block_dm));
   PetscFunctionReturn(0);

@@ -6,10 +6,13 @@
 
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/model/attenuation.hpp"
+#include "slipwave/model/body_force.hpp"
 #include "slipwave/model/drm.hpp"
 #include "slipwave/model/free_field.hpp"
 #include "slipwave/model/lateral_tie.hpp"
 #include "slipwave/model/node_fields.hpp"
+#include "slipwave/model/point_force.hpp"
+#include "slipwave/model/structure_load.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 namespace slipwave::model {
@@ -154,6 +157,9 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(VecDuplicate(m->u_local, &m->f_local));
   PetscCall(assembleMass(m));
   PetscCall(BoundaryConditionsCreate(m->dm, m->mesh.boundaries, m->materials, m->mass, &m->bc));
+  PetscCall(PointForcesCreate(m->dm, &m->bc));
+  PetscCall(BodyForceCreate(m->dm, m->mass, &m->bc));
+  PetscCall(StructureLoadCreate(m->dm, m->bulk, m->mesh.regions, &m->bc));
   if (m->attenuation && m->attenuation->reference_auto) {
     PetscCall(AttenuationChooseReferences(m->attenuation, m->dm, m->bulk, m->mass, m->bc.free_mask, &m->materials));
     PetscCall(setupBulk());
@@ -229,6 +235,7 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscCall(VecAXPBY(m->f_input, v_in, 0.0, m->bc.input_force));
   if (m->drm && m->input_enabled) PetscCall(DrmAddForce(m->drm, *m, ts, t, m->f_input));
   PetscCall(VecWAXPY(m->f_external, 1.0, m->bc.constant_force, m->f_input));
+  if (m->input_enabled) PetscCall(TimedLoadsAdd(m->bc.timed_loads, t, m->f_external));
   if (m->free_field) {
     // The columns' trial reaches t here; their force C v_ff + A t_ff at t is external.
     PetscCall(FreeFieldUpdate(m->free_field, m->dm, ts, t, v_in, m->input_enabled));
@@ -257,7 +264,10 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscCall(VecRestoreArrayRead(m->f_internal, &fi));
   PetscCall(VecRestoreArrayRead(m->f_external, &fe));
   PetscCall(VecRestoreArray(a, &acc));
-  for (const PrescribedVelocity &p : m->bc.prescribed) PetscCall(VecAXPY(a, p.history.acceleration(t), p.dofs));
+  // The geostatic stage (input_enabled false) holds prescribed dofs at rest: a record's
+  // baseline correction leaves a nonzero acceleration at t = 0 that would drag them along.
+  if (m->input_enabled)
+    for (const PrescribedVelocity &p : m->bc.prescribed) PetscCall(VecAXPY(a, p.history.acceleration(t), p.dofs));
   PetscCall(LateralTieApply(m->tie, a));
   PetscCall(PetscLogEventEnd(core::event_boundary, 0, 0, 0, 0));
   PetscFunctionReturn(0);

@@ -81,6 +81,7 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, EnergyL
     const double h_mean = 0.5 * (e->h_prev + h);
     e->input += h_mean * s[3];
     e->external += h_mean * s[4];
+    e->external_gross += std::fabs(h_mean * s[4]);
     e->reactions += h_mean * s[5];
     e->absorbed += h_mean * s[6];
     e->damped += h_mean * s[7];

@@ -110,7 +110,7 @@ std::string relativeName(const std::string &prefix, PetscOptionItems *PetscOptio
 } // namespace
 
 struct TimeFunction::Impl {
-  std::variant<std::monostate, physics::RickerWavelet, physics::GaborWavelet, physics::TabulatedHistory> f;
+  std::variant<std::monostate, physics::RickerWavelet, physics::GaborWavelet, physics::HarmonicWave, physics::TabulatedHistory> f;
   // For a record: the (scaled, baseline-corrected) acceleration samples at the velocity's
   // times. The tabulated velocity is their trapezoid integral, i.e. the exact integral of
   // their linear interpolation at every sample, so this interpolation is the velocity's own
@@ -126,34 +126,45 @@ TimeFunction::TimeFunction(TimeFunction &&) noexcept = default;
 TimeFunction &TimeFunction::operator=(TimeFunction &&) noexcept = default;
 
 PetscErrorCode TimeFunction::Read(MPI_Comm comm, const std::string &prefix, HistoryRole role, PetscOptionItems *PetscOptionsObject) {
-  const char *const kinds[] = {"none", "ricker", "gabor", "record"};
-  PetscInt          kind = 0;
-  PetscReal         amplitude = 0.1, f0 = 2.0, t0 = -1, gamma = 4.0, phase = 0;
+  const char *const kinds[] = {"none", "ricker", "gabor", "harmonic", "record"};
+  enum Kind { None, Ricker, Gabor, Harmonic, Record };
+  const bool        load = role == HistoryRole::Load;
+  PetscInt          kind = None;
+  PetscReal         amplitude = load ? 1.0 : 0.1, f0 = 2.0, t0 = -1, gamma = 4.0, phase = 0;
   const std::string p = "-" + prefix, q = relativeName(prefix, PetscOptionsObject);
+  const char       *unit = load ? "" : " m/s";
   PetscFunctionBeginUser;
-  PetscCall(core::OptionsChoice(PetscOptionsObject, (q + "stf").c_str(), "velocity history: none, ricker, gabor, record", kinds, 4, &kind, nullptr));
-  if (kind == 0) PetscFunctionReturn(0);
+  PetscCall(core::OptionsChoice(PetscOptionsObject, (q + "stf").c_str(), load ? "load factor history: none, ricker, gabor, harmonic, record" : "velocity history: none, ricker, gabor, harmonic, record",
+                                kinds, 5, &kind, nullptr));
+  if (kind == None) PetscFunctionReturn(0);
   char buf[1024];
-  if (kind == 3) {
-    PetscCall(readRecord(comm, prefix, role, PetscOptionsObject));
+  if (kind == Record) {
+    PetscCall(load ? readLoadRecord(comm, prefix, PetscOptionsObject) : readRecord(comm, prefix, role, PetscOptionsObject));
     PetscFunctionReturn(0);
   }
-  PetscCall(PetscOptionsReal((q + "amplitude").c_str(), "peak particle velocity [m/s] (ricker, gabor; a record is scaled with -record_scale or -record_pga)", "TimeFunction::Read",
-                             amplitude, &amplitude, nullptr));
+  PetscCall(PetscOptionsReal((q + "amplitude").c_str(),
+                             load ? "peak factor on the load [-] (ricker, gabor, harmonic; a record is scaled with -record_scale)"
+                                  : "peak particle velocity [m/s] (ricker, gabor, harmonic; a record is scaled with -record_scale or -record_pga)",
+                             "TimeFunction::Read", amplitude, &amplitude, nullptr));
   PetscCall(PetscOptionsReal((q + "f0").c_str(), "central frequency [Hz]", "TimeFunction::Read", f0, &f0, nullptr));
-  PetscCall(PetscOptionsReal((q + "t0").c_str(), "time of the peak [s] (default 1.2/f0 for ricker, gamma/(2 f0) for gabor)", "TimeFunction::Read", t0, &t0, nullptr));
+  PetscCall(PetscOptionsReal((q + "t0").c_str(), "time of the peak [s] (default 1.2/f0 for ricker, gamma/(2 f0) for gabor); harmonic: switch-on time (default 0)",
+                             "TimeFunction::Read", t0, &t0, nullptr));
   PetscCheck(f0 > 0, comm, PETSC_ERR_USER_INPUT, "%sf0 = %g; allowed: > 0 Hz", p.c_str(), (double)f0);
-  if (kind == 1) {
+  if (kind == Ricker) {
     if (t0 < 0) t0 = 1.2 / f0;
     impl_->f = physics::RickerWavelet{amplitude, f0, t0};
-    std::snprintf(buf, sizeof buf, "Ricker wavelet, peak velocity %g m/s, f0 %g Hz, t0 %g s", (double)amplitude, (double)f0, (double)t0);
+    std::snprintf(buf, sizeof buf, "Ricker wavelet, peak %g%s, f0 %g Hz, t0 %g s", (double)amplitude, unit, (double)f0, (double)t0);
+  } else if (kind == Harmonic) {
+    if (t0 < 0) t0 = 0;
+    impl_->f = physics::HarmonicWave{amplitude, f0, t0};
+    std::snprintf(buf, sizeof buf, "harmonic, amplitude %g%s, f0 %g Hz, from t0 %g s", (double)amplitude, unit, (double)f0, (double)t0);
   } else {
     PetscCall(PetscOptionsReal((q + "gamma").c_str(), "Gabor envelope width [periods]", "TimeFunction::Read", gamma, &gamma, nullptr));
     PetscCall(PetscOptionsReal((q + "phase").c_str(), "Gabor phase [rad]", "TimeFunction::Read", phase, &phase, nullptr));
     PetscCheck(gamma > 0, comm, PETSC_ERR_USER_INPUT, "%sgamma = %g; allowed: > 0", p.c_str(), (double)gamma);
     if (t0 < 0) t0 = gamma / (2 * f0);
     impl_->f = physics::GaborWavelet{amplitude, f0, t0, gamma, phase};
-    std::snprintf(buf, sizeof buf, "Gabor wavelet, amplitude %g m/s, f0 %g Hz, t0 %g s, gamma %g", (double)amplitude, (double)f0, (double)t0, (double)gamma);
+    std::snprintf(buf, sizeof buf, "Gabor wavelet, amplitude %g%s, f0 %g Hz, t0 %g s, gamma %g", (double)amplitude, unit, (double)f0, (double)t0, (double)gamma);
   }
   impl_->description = buf;
   PetscFunctionReturn(0);
@@ -225,6 +236,9 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
                                   : "a CSV file of lines \"time,acceleration\" [s; m/s^2, or g when the header's acceleration column says g or with " + p +
                                       "record_units g], optional header, at least 2 samples, times increasing";
   PetscCheck(status.ok, comm, PETSC_ERR_FILE_OPEN, "%srecord (%s): %s; allowed: %s", p.c_str(), at2 ? "PEER .AT2" : "CSV", status.message.c_str(), allowed.c_str());
+  PetscCheck(!baseline || record.time.size() >= kBaselineMinSamples, comm, PETSC_ERR_USER_INPUT,
+             "%srecord = %s has %zu samples; allowed: at least %zu for the baseline correction (or %sbaseline_correction false)", p.c_str(), file, record.time.size(),
+             kBaselineMinSamples, p.c_str());
   if (baseline) removeBaselineDrift(&record);
   double record_peak = 0;
   for (double a : record.acceleration) record_peak = std::max(record_peak, std::fabs(a));
@@ -253,6 +267,31 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
   impl_->record_top_frequency = spectralTopFrequency(history);
   impl_->f                   = std::move(history);
   impl_->description         = buf;
+  PetscFunctionReturn(0);
+}
+
+// -<prefix>stf record for a load: the factor itself, sampled in a CSV "time,factor" file.
+PetscErrorCode TimeFunction::readLoadRecord(MPI_Comm comm, const std::string &prefix, PetscOptionItems *PetscOptionsObject) {
+  const std::string p = "-" + prefix, q = relativeName(prefix, PetscOptionsObject);
+  char              file[PETSC_MAX_PATH_LEN] = "";
+  PetscReal         scale = 1.0;
+  PetscBool         has_file;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsString((q + "record").c_str(), "load factor history: CSV time,factor [s; -]", "TimeFunction::Read", file, file, sizeof file, &has_file));
+  PetscCall(PetscOptionsReal((q + "record_scale").c_str(), "factor on the recorded load factor [-]", "TimeFunction::Read", scale, &scale, nullptr));
+  PetscCheck(has_file && file[0], comm, PETSC_ERR_USER_INPUT, "%sstf record needs the file; allowed: %srecord <file.csv>", p.c_str(), p.c_str());
+  PetscCheck(std::isfinite(scale), comm, PETSC_ERR_USER_INPUT, "%srecord_scale is not finite; allowed: a finite factor", p.c_str());
+  GroundMotionRecord record;
+  ReadStatus         status;
+  PetscCall(readRecordCollective(comm, file, false, AccelerationUnit::MetresPerSecondSquared, &record, &status));
+  PetscCheck(status.ok, comm, PETSC_ERR_FILE_OPEN, "%srecord (CSV): %s; allowed: a CSV file of lines \"time,factor\", optional header, at least 2 samples, times increasing",
+             p.c_str(), status.message.c_str());
+  for (double &a : record.acceleration) a *= scale;
+  char buf[PETSC_MAX_PATH_LEN + 128];
+  std::snprintf(buf, sizeof buf, "recorded load factor %s (%zu samples, %g to %g s, scale %g)", file, record.time.size(), record.time.front(), record.time.back(),
+                (double)scale);
+  impl_->f           = physics::TabulatedHistory{record.time, record.acceleration};
+  impl_->description = buf;
   PetscFunctionReturn(0);
 }
 

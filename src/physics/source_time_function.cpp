@@ -35,6 +35,17 @@ double acceleration(const GaborWavelet &w, double t) {
 
 double topFrequency(const GaborWavelet &w) { return w.frequency * (1 + 2 * std::sqrt(std::log(100.0)) / w.gamma); }
 
+double velocity(const HarmonicWave &w, double t) {
+  return t < w.delay ? 0.0 : w.amplitude * std::sin(2 * M_PI * w.frequency * (t - w.delay));
+}
+
+double acceleration(const HarmonicWave &w, double t) {
+  const double om = 2 * M_PI * w.frequency;
+  return t < w.delay ? 0.0 : w.amplitude * om * std::cos(om * (t - w.delay));
+}
+
+double topFrequency(const HarmonicWave &w) { return 2 * w.frequency; }
+
 double velocity(const TabulatedHistory &h, double t) {
   if (h.times.empty() || t < h.times.front()) return 0;
   if (t >= h.times.back()) return h.values.back();

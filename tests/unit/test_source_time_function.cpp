@@ -73,6 +73,18 @@ int main() {
   unit::near(spectrum(gv, topFrequency(g), -2, 6) / spectrum(gv, g.frequency, -2, 6), 0.01, 1e-6, 0,
              "Gabor spectrum at top frequency is 1% of its value at f0 (numerical Fourier integral)");
 
+  const HarmonicWave hw{2.0, 1.5, 0.4};
+  unit::near(velocity(hw, 0.39), 0, 0, 0, "harmonic: zero before t0");
+  unit::near(acceleration(hw, 0.39), 0, 0, 0, "harmonic: no acceleration before t0");
+  unit::near(velocity(hw, 0.4 + 1 / (4 * 1.5)), 2.0, 1e-15, 0, "harmonic: A at a quarter period after t0");
+  unit::near(acceleration(hw, 0.4), 2.0 * 2 * M_PI * 1.5, 1e-15, 0, "harmonic: slope A 2 pi f0 at the switch-on");
+  double worst_h = 0;
+  for (double t = 0.41; t < 3.0; t += 0.0173)
+    worst_h = std::fmax(worst_h, std::fabs(derivative([&](double s) { return velocity(hw, s); }, t) - acceleration(hw, t)));
+  // max |a| = A 2 pi f0 = 18.8.
+  unit::near(worst_h, 0, 0, 1e-9 * 18.8, "harmonic: d(velocity)/dt = acceleration after t0");
+  unit::near(topFrequency(hw), 3.0, 1e-15, 0, "harmonic: top frequency 2 f0");
+
   const TabulatedHistory h{{0.0, 0.1, 0.3}, {1.0, 3.0, -1.0}};
   unit::near(velocity(h, -0.01), 0, 0, 0, "tabulated: zero before the first time");
   unit::near(velocity(h, 0.0), 1.0, 1e-15, 0, "tabulated: first sample");

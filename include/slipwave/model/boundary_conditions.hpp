@@ -5,8 +5,12 @@
 //     (freefield: a lateral side coupled to a 1D free-field column, see model/free_field.hpp;
 //      its Lysmer dashpot goes into absorbing_blocks here, the column's force is added by the RHS)
 //   -bc_<boundary>_components x,y[,z]   (fixed, velocity)
+//   -bc_<boundary>_type_x|_y|_z free|fixed|velocity: one component's own condition on the
+//     same boundary (overrides -bc_<boundary>_type, which must then be free, fixed or
+//     velocity, for that component; not with -bc_<boundary>_components): "x driven, y held"
 //   -bc_<boundary>_traction tx,ty[,tz]  (traction) [Pa]
-//   -bc_<boundary>_stf ... (velocity: its history, see TimeFunction)
+//   -bc_<boundary>_stf ... (velocity: its history; traction: the traction's factor history,
+//     none = constant; see TimeFunction)
 //   -input_wave none|sv|p -input_boundary <absorbing boundary> -input_stf ...  (incident plane wave)
 //   -gravity g [m/s^2] along -gravity_direction (default down the last axis);
 //   -constrain_components y (every node)
@@ -18,6 +22,7 @@
 
 #include "slipwave/model/materials.hpp"
 #include "slipwave/model/time_function.hpp"
+#include "slipwave/model/timed_load.hpp"
 
 namespace slipwave::model {
 
@@ -35,7 +40,9 @@ struct BoundaryConditions {
   std::vector<BoundaryType> types;
   DM                        block_dm = nullptr;       // node layout with dim*dim dofs
   Vec                       absorbing_blocks = nullptr; // Lysmer-Kuhlemeyer C per node (not divided by mass)
-  Vec                       constant_force = nullptr;   // gravity + tractions [N]
+  Vec                       constant_force = nullptr;   // gravity + constant tractions and loads [N]
+  std::vector<TimedLoad>    timed_loads;                // loads with a history (dynamic stage only)
+  std::vector<std::string>  load_notes;                 // for the run report: the loads and per-component sides
   Vec                       input_force = nullptr;      // incident-wave force per unit incident velocity [N s/m]
   Vec                       free_mask = nullptr;        // 1 free dof, 0 prescribed
   std::vector<PrescribedVelocity> prescribed;

@@ -17,7 +17,9 @@ struct EnergyLedger {
   double kinetic = 0;   // ½ v_nᵀ M v_n
   double strain  = 0;   // ½ u_nᵀ K u_n
   double input   = 0;   // cumulative work of the incident-wave traction
-  double external = 0;  // cumulative work of gravity and tractions
+  double external = 0;  // cumulative work of gravity, tractions, point and body forces
+  double external_gross = 0; // cumulative |work| of those per step: what a load that reverses
+                             // (a Ricker force) put in, though its net work falls back
   double reactions = 0; // cumulative work of held dofs (prescribed velocity)
   double absorbed  = 0; // cumulative energy taken by absorbing dashpots
   double damped    = 0; // cumulative Rayleigh dissipation

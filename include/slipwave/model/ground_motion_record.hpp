@@ -47,7 +47,10 @@ std::vector<double> integrateTrapezoid(const std::vector<double> &time, const st
 // Subtracts c0 + c1 (t - t_first) from the acceleration with c0, c1 chosen so that the
 // trapezoid-integrated velocity and displacement both end at zero (the record ends at
 // rest where it started, instead of drifting away with the base).
+// Needs kBaselineMinSamples samples: with two, the constant and the ramp integrate to
+// proportional end values and the 2 x 2 system is singular.
 void removeBaselineDrift(GroundMotionRecord *record);
+constexpr size_t kBaselineMinSamples = 3;
 
 // The velocity history (trapezoid integral of the acceleration) for the incident wave.
 physics::TabulatedHistory velocityHistory(const GroundMotionRecord &record);

@@ -1,6 +1,7 @@
 // A scalar history read from options with a prefix: the incident wave's particle velocity,
-// or a prescribed boundary velocity. -<prefix>stf none|ricker|gabor|record and its
-// parameters. Velocity is the primary quantity; acceleration drives prescribed dofs.
+// a prescribed boundary velocity, or the factor on a load (HistoryRole::Load: a point force,
+// a traction, a body force). -<prefix>stf none|ricker|gabor|harmonic|record and its
+// parameters (harmonic: A sin(2 pi f0 (t - t0)) from t0 on, t0 default 0). Velocity is the primary quantity; acceleration drives prescribed dofs.
 // -<prefix>stf record reads -<prefix>record FILE (CSV time,acceleration [s; m/s^2 or g, from
 // the header or -<prefix>record_units] or PEER .AT2 [g], by extension or
 // -<prefix>record_format csv|at2), removes the baseline drift unless
@@ -13,6 +14,11 @@
 // record is: outcrop (default: the motion at the free surface of the rock, which doubles the
 // incident wave, so the incident wave is half the record) or incident (the upgoing wave
 // itself). A prescribed boundary velocity is the record itself.
+// For a load the value is a dimensionless factor on the load vector (-<prefix>amplitude,
+// default 1), and a record is that factor sampled: CSV "time,factor", linear between the
+// samples, scaled by -<prefix>record_scale, neither integrated nor baseline-corrected.
+// A record with fewer than kBaselineMinSamples samples cannot be baseline-corrected and is
+// refused unless -<prefix>baseline_correction false.
 #pragma once
 #include <petscsys.h>
 
@@ -21,7 +27,7 @@
 
 namespace slipwave::model {
 
-enum class HistoryRole { IncidentWave, BoundaryVelocity };
+enum class HistoryRole { IncidentWave, BoundaryVelocity, Load };
 
 class TimeFunction {
 public:
@@ -40,6 +46,7 @@ public:
 
 private:
   PetscErrorCode readRecord(MPI_Comm comm, const std::string &prefix, HistoryRole role, PetscOptionItems *PetscOptionsObject);
+  PetscErrorCode readLoadRecord(MPI_Comm comm, const std::string &prefix, PetscOptionItems *PetscOptionsObject);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

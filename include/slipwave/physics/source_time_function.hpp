@@ -35,6 +35,20 @@ double acceleration(const GaborWavelet &w, double t);
 // it falls below 1% of its peak at f = f0 (1 + 2 sqrt(ln 100) / gamma).
 double topFrequency(const GaborWavelet &w);
 
+// v(t) = A sin(2 pi f0 (t - t0)) from t0 on, 0 before: a steady harmonic force or motion
+// switched on at t0 with zero value (the velocity is continuous; its slope jumps to
+// 2 pi f0 A, which excites a transient that radiation damping carries away).
+struct HarmonicWave {
+  double amplitude;  // A
+  double frequency;  // f0, Hz
+  double delay;      // t0, s
+};
+double velocity(const HarmonicWave &w, double t);
+double acceleration(const HarmonicWave &w, double t);
+// The switch-on spreads the line at f0; twice f0 bounds where the spectrum of the first
+// few cycles has fallen to a few per cent (for points-per-wavelength reports only).
+double topFrequency(const HarmonicWave &w);
+
 // Sampled velocity (e.g. integrated from a ground-motion record), times strictly
 // increasing. Linear between samples; zero before the first sample; after the last one
 // the velocity holds its last value (the acceleration is zero there, and a jump to zero
