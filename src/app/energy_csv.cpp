@@ -11,9 +11,13 @@ constexpr std::array<const char *, 15> kValueColumns = {"time",           "kinet
                                                         "interface_work", "interface_stored", "interface_dissipated", "contact_damped",
                                                         "stored_change",  "balance_error",    "relative_balance_error"};
 
-std::string header() {
+constexpr std::array<const char *, 3> kFluidColumns = {"fluid_stored", "darcy_dissipated", "fluid_inflow_work"};
+
+std::string header(bool fluid) {
   std::string line = "step";
   for (const char *name : kValueColumns) line += std::string(",") + name;
+  if (fluid)
+    for (const char *name : kFluidColumns) line += std::string(",") + name;
   return line + "\n";
 }
 
@@ -22,7 +26,7 @@ std::string header() {
 PetscErrorCode EnergyCsv::Open(const std::string &dir, bool restarted, PetscInt restart_step) {
   const std::string path = dir + "/energy.csv";
   PetscFunctionBeginUser;
-  std::string kept = header();
+  std::string kept = header(fluid_);
   if (restarted) {
     if (FILE *in = std::fopen(path.c_str(), "r")) {
       char line[4096];
@@ -61,7 +65,12 @@ void EnergyCsv::Append(PetscInt step, PetscReal t, const model::EnergyLedger &e,
   std::fprintf(file_, "%" PetscInt_FMT, step);
   // The relative error is a ratio read at a glance: 4 digits; the energies keep 10.
   for (size_t k = 0; k + 1 < values.size(); ++k) std::fprintf(file_, ",%.10g", values[k]);
-  std::fprintf(file_, ",%.3e\n", values.back());
+  std::fprintf(file_, ",%.3e", values.back());
+  if (fluid_) {
+    const std::array<double, kFluidColumns.size()> fluid = {e.fluid_stored, e.darcy, e.fluid_inflow};
+    for (double x : fluid) std::fprintf(file_, ",%.10g", x);
+  }
+  std::fputc('\n', file_);
 }
 
 void EnergyCsv::Flush() {

@@ -16,6 +16,7 @@
 #include "slipwave/model/elastodynamics.hpp"
 #include "slipwave/model/energy_ledger.hpp"
 #include "slipwave/model/geostatic.hpp"
+#include "slipwave/model/pore_pressure.hpp"
 #include "slipwave/model/stable_step.hpp"
 #include "slipwave/time/central_difference.hpp"
 
@@ -145,6 +146,7 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   PetscCall(model::EnergyLedgerUpdate(&r->model, ts, h, &r->ledger));
   PetscCall(DivergenceGuard(r->model.comm, r->model.dim, r->ledger, r->opt.energy_growth_limit, r->step, h, step, t, u, v));
   PetscCall(r->stations.Sample(r->model.dm, t, u, v, a));
+  if (r->model.pore) PetscCall(r->stations.SamplePressure(r->model.pore->pdm, r->model.pore->p));
   PetscCall(appendEnergyRow(r, step, t));
   if (r->opt.fields) PetscCall(r->frames.WriteIfDue(r->model, step, t, last, u, v, a));
   PetscCall(checkpointIfDue(r, ts, step));
@@ -165,6 +167,9 @@ PetscErrorCode setUp(MPI_Comm comm, Run *r) {
   PetscCall(r->stations.Setup(r->model.dm, r->model.bulk, r->model.mesh));
   PetscCall(RegionVelocitiesRead(comm, r->model.dim, r->model.materials, &r->region_velocity));
   PetscCall(model::GeostaticOptionsRead(comm, &r->geostatic));
+  PetscCheck(!r->model.pore || !(r->geostatic.enabled || r->opt.checkpoint_interval > 0 || r->opt.restart[0]), comm, PETSC_ERR_SUP,
+             "saturated regions (-material_<r>_saturated) do not yet work with %s; allowed: dry scenes for them",
+             r->geostatic.enabled ? "the geostatic stage" : "checkpoints (-checkpoint_interval, -restart)");
   PetscFunctionReturn(0);
 }
 
@@ -222,6 +227,7 @@ PetscErrorCode openOutputs(Run *r, TS ts) {
     PetscReal dt;
     PetscCall(TSGetTimeStep(ts, &dt));
     std::filesystem::create_directories(r->opt.output_dir);
+    r->energy_csv.SetFluid(r->model.pore != nullptr);
     PetscCall(r->energy_csv.Open(r->opt.output_dir, restarted, r->restart_step));
     WriteRunInfo(r->model, r->opt.output_dir, dt);
   }

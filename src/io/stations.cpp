@@ -182,12 +182,30 @@ PetscErrorCode Stations::Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Stations::SamplePressure(DM pdm, Vec p) {
+  PetscFunctionBeginUser;
+  if (names_.empty()) PetscFunctionReturn(0);
+  has_pressure_ = true;
+  if (!pressure_local_) PetscCall(DMCreateLocalVector(pdm, &pressure_local_));
+  PetscCall(DMGlobalToLocal(pdm, p, INSERT_VALUES, pressure_local_));
+  const PetscScalar *arr;
+  PetscCall(VecGetArrayRead(pressure_local_, &arr));
+  // The pressure layout has one dof where the displacement has dim_ (model/node_fields.hpp).
+  for (Local &l : local_) {
+    double s = 0;
+    for (size_t n = 0; n < l.offsets.size(); ++n) s += l.shape[n] * PetscRealPart(arr[l.offsets[n] / dim_]);
+    l.record.push_back(s);
+  }
+  PetscCall(VecRestoreArrayRead(pressure_local_, &arr));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Stations::Write(MPI_Comm comm, const std::string &dir) const {
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   if (names_.empty()) PetscFunctionReturn(0);
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  const int row = 1 + 3 * (int)dim_;
+  const int row = rowWidth();
   // Every record goes to rank 0, station by station, in station order.
   std::vector<std::vector<double>> records(names_.size());
   for (size_t s = 0; s < names_.size(); ++s) {
@@ -215,7 +233,7 @@ PetscErrorCode Stations::Write(MPI_Comm comm, const std::string &dir) const {
     std::fprintf(fp, "t");
     for (const char *q : {"u", "v", "a"})
       for (PetscInt d = 0; d < dim_; ++d) std::fprintf(fp, ",%s_%c", q, axes[d]);
-    std::fprintf(fp, "\n");
+    std::fprintf(fp, has_pressure_ ? ",p\n" : "\n");
     for (size_t r = 0; r + row <= records[s].size(); r += row) {
       for (int k = 0; k < row; ++k) std::fprintf(fp, k ? ",%.17g" : "%.17g", records[s][r + k]);
       std::fprintf(fp, "\n");
@@ -228,14 +246,14 @@ PetscErrorCode Stations::Write(MPI_Comm comm, const std::string &dir) const {
   for (size_t s = 0; s < names_.size(); ++s) {
     const hsize_t nt    = records[s].size() / row;
     hid_t         group = H5Gcreate2(file, names_[s].c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    const char   *dsets[4] = {"time", "displacement", "velocity", "acceleration"};
-    for (int q = 0; q < 4; ++q) {
-      const int           width = q == 0 ? 1 : (int)dim_;
+    const char   *dsets[5] = {"time", "displacement", "velocity", "acceleration", "pore_pressure"};
+    for (int q = 0; q < (has_pressure_ ? 5 : 4); ++q) {
+      const int           width = q == 0 || q == 4 ? 1 : (int)dim_;
       std::vector<double> buf(nt * width);
       for (hsize_t r = 0; r < nt; ++r)
         for (int k = 0; k < width; ++k) buf[r * width + k] = records[s][r * row + (q == 0 ? 0 : 1 + (q - 1) * dim_ + k)];
       hsize_t dims[2] = {nt, (hsize_t)width};
-      hid_t   space   = H5Screate_simple(q == 0 ? 1 : 2, dims, nullptr);
+      hid_t   space   = H5Screate_simple(width == 1 ? 1 : 2, dims, nullptr);
       hid_t   dset    = H5Dcreate2(group, dsets[q], H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
       H5Dwrite(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data());
       H5Dclose(dset);
@@ -260,6 +278,7 @@ void Stations::loadRecords(const double *in, size_t n) {
 PetscErrorCode Stations::Destroy() {
   PetscFunctionBeginUser;
   for (Vec &w : work_) PetscCall(VecDestroy(&w));
+  PetscCall(VecDestroy(&pressure_local_));
   PetscFunctionReturn(0);
 }
 

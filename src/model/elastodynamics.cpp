@@ -9,6 +9,7 @@
 #include "slipwave/model/free_field.hpp"
 #include "slipwave/model/lateral_tie.hpp"
 #include "slipwave/model/node_fields.hpp"
+#include "slipwave/model/pore_pressure.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 namespace slipwave::model {
@@ -141,6 +142,9 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(DMGetDimension(m->dm, &m->dim));
   PetscCall(NodeFieldSetSection(m->dm, m->dim));
   PetscCall(MaterialsRead(comm, m->mesh.regions, &m->materials));
+  std::vector<SaturatedRegion> saturated;
+  bool                         any_saturated = false;
+  PetscCall(PorePressureReadMaterials(comm, &m->materials, &saturated, &any_saturated));
   PetscCall(readDamping(m));
   PetscCall(AttenuationCreate(comm, &m->materials, &m->attenuation));
   auto setupBulk = [m]() {
@@ -173,6 +177,12 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(VecDuplicate(m->mass, &m->f_contact_damping));
   PetscCall(VecZeroEntries(m->f_contact_damping));
   PetscCall(createInterfaces(m));
+  if (any_saturated) {
+    PetscCheck(!m->free_field && m->bc.gravity == 0, comm, PETSC_ERR_SUP, "saturated regions (-material_<r>_saturated) do not yet work with %s; allowed: dry scenes for them",
+               m->free_field ? "free-field sides" : "gravity (no water table yet)");
+    PetscCall(PorePressureCreate(m->dm, m->bulk, m->mesh.boundaries, std::move(saturated), &m->pore));
+    PetscCall(VecDuplicate(m->mass, &m->f_pore));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -182,6 +192,8 @@ PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
   PetscCall(FreeFieldDestroy(&m->free_field));
   PetscCall(LateralTieDestroy(&m->tie));
   PetscCall(AttenuationDestroy(&m->attenuation));
+  PetscCall(PorePressureDestroy(&m->pore));
+  PetscCall(VecDestroy(&m->f_pore));
   for (auto &iface : m->interfaces) PetscCall(iface.Destroy());
   PetscCall(VecDestroy(&m->f_interface));
   PetscCall(VecDestroy(&m->f_contact_damping));
@@ -199,6 +211,12 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   // The memory forces need K_U u and the ghosted u that K u has just gathered into u_local.
   // Off in the geostatic stage (input_enabled false): the memory starts with the dynamic stage.
   if (m->attenuation && m->input_enabled) PetscCall(AttenuationForce(m->attenuation, m->dm, m->bulk, m->u_local, m->f_internal, t, m->f_anelastic));
+  if (m->pore) {
+    const PetscScalar *ul;
+    PetscCall(VecGetArrayRead(m->u_local, &ul));
+    PetscCall(PorePressureTrial(m->pore, m->dm, ul, t, m->f_pore));
+    PetscCall(VecRestoreArrayRead(m->u_local, &ul));
+  }
   if (m->rayleigh.beta > 0) {
     Vec v_half;
     PetscCall(time::CentralDifferenceGetHalfStepVelocity(ts, &v_half));
@@ -244,14 +262,20 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscCall(VecGetArrayRead(m->inv_mass, &im));
   PetscCall(VecGetArrayRead(m->bc.free_mask, &mask));
   for (PetscInt i = 0; i < n; ++i) acc[i] = mask[i] * im[i] * (fe[i] - fi[i] - fd[i] + fif[i] + fan[i] + fcd[i]);
-  PetscCall(VecRestoreArrayRead(m->bc.free_mask, &mask));
-  PetscCall(VecRestoreArrayRead(m->inv_mass, &im));
   PetscCall(VecRestoreArrayRead(m->f_contact_damping, &fcd));
   PetscCall(VecRestoreArrayRead(m->f_anelastic, &fan));
   PetscCall(VecRestoreArrayRead(m->f_interface, &fif));
   PetscCall(VecRestoreArrayRead(m->f_stiffness_damping, &fd));
   PetscCall(VecRestoreArrayRead(m->f_internal, &fi));
   PetscCall(VecRestoreArrayRead(m->f_external, &fe));
+  if (m->pore) {
+    const PetscScalar *fp;
+    PetscCall(VecGetArrayRead(m->f_pore, &fp));
+    for (PetscInt i = 0; i < n; ++i) acc[i] += mask[i] * im[i] * fp[i];
+    PetscCall(VecRestoreArrayRead(m->f_pore, &fp));
+  }
+  PetscCall(VecRestoreArrayRead(m->bc.free_mask, &mask));
+  PetscCall(VecRestoreArrayRead(m->inv_mass, &im));
   PetscCall(VecRestoreArray(a, &acc));
   for (const PrescribedVelocity &p : m->bc.prescribed) PetscCall(VecAXPY(a, p.history.acceleration(t), p.dofs));
   PetscCall(LateralTieApply(m->tie, a));
@@ -268,6 +292,7 @@ PetscErrorCode ElastodynamicsCommit(Elastodynamics *m) {
   for (auto &iface : m->interfaces) iface.Commit();
   FreeFieldCommit(m->free_field);
   AttenuationCommit(m->attenuation);
+  PorePressureCommit(m->pore);
   PetscFunctionReturn(0);
 }
 

@@ -18,6 +18,9 @@ public:
   // A new file with its header; after a restart (restarted), the header and the rows up to
   // restart_step of the file already there are kept and the run appends to them.
   PetscErrorCode Open(const std::string &dir, bool restarted, PetscInt restart_step);
+  // Before Open, in saturated scenes: the fluid columns (fluid_stored, darcy_dissipated,
+  // fluid_inflow_work) follow the others.
+  void SetFluid(bool fluid) { fluid_ = fluid; }
   void           Append(PetscInt step, PetscReal t, const model::EnergyLedger &ledger, const interface::InterfaceTotals &interfaces);
   // Before a checkpoint: the file on disk holds every row up to the checkpointed step.
   void Flush();
@@ -25,6 +28,7 @@ public:
 
 private:
   FILE *file_ = nullptr;
+  bool  fluid_ = false;
 };
 
 } // namespace slipwave::app

@@ -49,6 +49,8 @@ public:
   // DMPlex point of node a of cell c.
   PetscInt  cellVertex(PetscInt c, PetscInt a) const { return cell_vertices_[c * nen_ + a]; }
   PetscInt  cellRegion(PetscInt c) const { return cell_region_[c]; }
+  // Index of cell c's element matrices: cells with the same index share region and geometry.
+  PetscInt  cellMatrix(PetscInt c) const { return cell_matrix_[c]; }
   const double *cellCoordinates(PetscInt c) const { return &cell_coords_[c * nen_ * dim_]; }
   double    minCellSize() const { return h_min_; }
 

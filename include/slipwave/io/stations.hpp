@@ -28,6 +28,9 @@ public:
   bool           empty() const { return names_.empty(); }
   // Samples the global u, v, a at time t.
   PetscErrorCode Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a);
+  // Saturated scenes, after each Sample: the pore pressure p (global, one dof per vertex on a
+  // clone of dm) joins the row as column p [Pa], compression positive.
+  PetscErrorCode SamplePressure(DM pdm, Vec p);
   PetscErrorCode Write(MPI_Comm comm, const std::string &dir) const;
   PetscErrorCode Destroy();
   const std::vector<std::string> &names() const { return names_; }
@@ -35,7 +38,7 @@ public:
   void saveRecords(std::vector<double> *out) const;
   void loadRecords(const double *in, size_t n);
   size_t localStations() const { return local_.size(); }
-  int    rowWidth() const { return 1 + 3 * (int)dim_; }
+  int    rowWidth() const { return 1 + 3 * (int)dim_ + (has_pressure_ ? 1 : 0); }
 
 private:
   struct Local {
@@ -50,6 +53,8 @@ private:
   std::vector<Local>       local_;
   std::vector<std::string> ambiguities_;
   Vec                      work_[3] = {nullptr, nullptr, nullptr};
+  Vec                      pressure_local_ = nullptr;
+  bool                     has_pressure_ = false;
 };
 
 } // namespace slipwave::io

@@ -24,6 +24,7 @@ namespace slipwave::model {
 struct FreeField;  // model/free_field.hpp
 struct LateralTie; // model/lateral_tie.hpp
 struct Attenuation; // model/attenuation.hpp
+struct PorePressure; // model/pore_pressure.hpp
 
 struct Elastodynamics {
   MPI_Comm                        comm = MPI_COMM_NULL;
@@ -51,6 +52,8 @@ struct Elastodynamics {
   FreeField  *free_field = nullptr; // free-field lateral columns (-bc_<side>_type freefield), or null
   LateralTie *tie        = nullptr; // tied lateral sides (-bc_<side>_type tied), or null
   Attenuation *attenuation = nullptr; // constant-Q damping of regions with a damping ratio, or null
+  PorePressure *pore = nullptr; // pore pressure of saturated regions, or null (dry scenes)
+  Vec       f_pore = nullptr;   // + alpha Q^T p, the pore pressure's force on the skeleton (saturated scenes only)
 };
 
 PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);

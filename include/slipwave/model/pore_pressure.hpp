@@ -1,0 +1,84 @@
+// Pore pressure of the saturated regions: Biot's u-p equations integrated explicitly
+// (docs/saturated-soil.md). The pressure is a nodal scalar on its own node layout (a clone
+// of the mesh DM with one dof per vertex, node i of it is node i of the displacement), so the
+// displacement layout, the "cd" TS and every dry-scene pass stay as they are; a dry scene
+// never creates this object.
+//
+// One step, with S the lumped storage (integral of N_a / M), Q the coupling
+// (integral of N_a div), H the Darcy matrix (integral of kappa grad N_a . grad N_b):
+//   p_{n+1} = p_n - S^{-1} [ alpha Q (u_{n+1} - u_n) + h (H p_n - q) ]  on free pressure nodes,
+//   f_pore  = alpha Q^T p                                             (force on the skeleton),
+// so total stress = effective stress - alpha p I. The update is a trial state of the RHS
+// (it needs u_{n+1}, which the RHS receives) that PorePressureCommit accepts.
+//
+// Options per region r (prefix -material_r_): saturated, porosity, fluid_bulk_modulus,
+// grain_bulk_modulus, hydraulic_conductivity, fluid_density. Per boundary b: -bc_b_fluid
+// noflow|drained|flux, -bc_b_fluid_flux q [m/s].
+#pragma once
+#include <petscdmplex.h>
+
+#include <string>
+#include <vector>
+
+#include "slipwave/fem/bulk_operator.hpp"
+#include "slipwave/model/materials.hpp"
+#include "slipwave/physics/biot.hpp"
+
+namespace slipwave::model {
+
+struct SaturatedRegion {
+  bool                 saturated = false;
+  physics::BiotMaterial biot{};
+  double               alpha = 0, M = 0, kappa = 0; // Biot coefficient [-], modulus [Pa], mobility [m^2/(Pa s)]
+};
+
+struct PorePressure {
+  DM                           pdm = nullptr;    // one dof per vertex
+  std::vector<SaturatedRegion> regions;          // per region, in materials order
+  // Element matrices per distinct bulk matrix (region and geometry): alpha Q, kappa H, S.
+  std::vector<double>   coupling, diffusion, storage_element;
+  std::vector<PetscInt> cells;                   // local cells of saturated regions
+  std::vector<PetscInt> cell_matrix;             // per cell of `cells`: its distinct-matrix index
+  std::vector<PetscInt> cell_p, cell_u;          // per cell node: local offset in p, in u
+  PetscInt              nen = 0, dim = 0;
+  Vec storage = nullptr, inv_storage = nullptr;  // lumped S per node (0 off the saturated regions)
+  Vec free_mask = nullptr;                       // 1 where p evolves: S > 0 and not drained
+  Vec inflow = nullptr;                          // q: prescribed boundary inflow per node [m^3/s]
+  Vec p = nullptr, p_trial = nullptr;            // committed p_n and the RHS's trial p_{n+1} [Pa]
+  Vec Qu = nullptr, Qu_trial = nullptr;          // alpha Q u at the same two states [m^3]
+  Vec Hp = nullptr, Hp_trial = nullptr, Hp_previous = nullptr; // H p at p_n, p_trial, p_{n-1} [m^3/s]
+  Vec p_local = nullptr, q_local = nullptr;
+  double t = 0, t_trial = 0;
+  bool   started = false;                        // Qu holds the initial state
+  double dt_diffusion = 1e300;                   // explicit diffusion limit [s]
+  double vp_undrained_max = 0;                   // [m/s], for the report
+  std::vector<std::string> drained, flux;        // boundary names, for the report
+};
+
+// Reads the per-region options after MaterialsRead; sets vp_undrained of saturated regions
+// (the absorbing boundaries match it). *any: whether some region is saturated.
+PetscErrorCode PorePressureReadMaterials(MPI_Comm comm, std::vector<RegionMaterialInfo> *materials, std::vector<SaturatedRegion> *regions, bool *any);
+// Builds the layout, element matrices, storage, fluid boundary conditions and diffusion limit.
+PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const std::vector<std::string> &boundaries, std::vector<SaturatedRegion> regions,
+                                  PorePressure **pore);
+PetscErrorCode PorePressureDestroy(PorePressure **pore);
+// Trial state at time t from the ghosted displacement u_local: p_trial, and the force on the
+// skeleton f_pore = alpha Q^T p_trial (global, displacement layout, overwritten).
+PetscErrorCode PorePressureTrial(PorePressure *pore, DM dm, const PetscScalar *u_local, PetscReal t, Vec f_pore);
+void           PorePressureCommit(PorePressure *pore);
+// Adds alpha^2 (|Q|^T S^{-1} |Q| 1) to the Gershgorin rows of K (global, displacement layout):
+// the undrained stiffening the wave step must cover (rows of drained nodes do not stiffen).
+PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pore, DM dm, Vec rows);
+
+// The fluid's terms of the energy budget at t_n (docs/saturated-soil.md): the shadow storage
+// energy F_{n+1/2} = ½ p_n S p_{n+1}, and this step's Darcy dissipation
+// ½ h p_n H (p_n + p_{n-1}) and work of the prescribed inflow h p_n q.
+// held_power = v_n . f_pore on held dofs: the part of the supports' reaction power that the
+// pore pressure supplies, which the ledger takes out of the reactions (it is internal work).
+struct PoreEnergy {
+  double storage = 0, darcy = 0, inflow = 0, held_power = 0;
+};
+// v, a: v_n and a_n; f_pore at t_n; free_mask of the displacement dofs.
+PetscErrorCode PorePressureEnergy(PorePressure *pore, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e);
+
+} // namespace slipwave::model

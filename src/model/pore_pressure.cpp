@@ -1,0 +1,444 @@
+#include "slipwave/model/pore_pressure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "slipwave/model/node_fields.hpp"
+
+namespace slipwave::model {
+namespace {
+
+// Standard gravity turns a hydraulic conductivity into a mobility; it is a unit conversion
+// (k_h is measured under g), not the scene's -gravity.
+constexpr double kStandardGravity = 9.80665;
+
+PetscErrorCode readRegion(MPI_Comm comm, RegionMaterialInfo *info, SaturatedRegion *r) {
+  PetscBool saturated = PETSC_FALSE, has_porosity = PETSC_FALSE, has_k = PETSC_FALSE;
+  PetscReal porosity = 0, K_f = 2.2e9, K_s = 0, k_h = 0, rho_f = 1000;
+  const std::string prefix = "material_" + info->region + "_";
+  const std::string title  = "Pore fluid of region " + info->region;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
+  PetscCall(PetscOptionsBool("-saturated", "the region is a saturated porous medium (Biot u-p; -material_<r>_rho is then the mixture density)", "PorePressureReadMaterials",
+                             saturated, &saturated, nullptr));
+  if (saturated) {
+    PetscCall(PetscOptionsReal("-porosity", "porosity n [-], 0 < n < 1 (saturated region, required)", "PorePressureReadMaterials", porosity, &porosity, &has_porosity));
+    PetscCall(PetscOptionsReal("-hydraulic_conductivity", "hydraulic conductivity k [m/s], >= 0 (0: undrained; mobility k/(rho_f g), g = 9.80665) (required)",
+                               "PorePressureReadMaterials", k_h, &k_h, &has_k));
+    PetscCall(PetscOptionsReal("-fluid_bulk_modulus", "bulk modulus of the pore fluid K_f [Pa], > 0 (default water, 2.2e9)", "PorePressureReadMaterials", K_f, &K_f, nullptr));
+    PetscCall(PetscOptionsReal("-grain_bulk_modulus", "bulk modulus of the solid grains K_s [Pa], 0 (incompressible, Biot coefficient 1) or > drained K", "PorePressureReadMaterials",
+                               K_s, &K_s, nullptr));
+    PetscCall(PetscOptionsReal("-fluid_density", "density of the pore fluid rho_f [kg/m^3], > 0 (default 1000)", "PorePressureReadMaterials", rho_f, &rho_f, nullptr));
+  }
+  PetscOptionsEnd();
+  r->saturated = saturated;
+  if (!saturated) PetscFunctionReturn(0);
+  const char *name = info->region.c_str();
+  PetscCheck(has_porosity, comm, PETSC_ERR_USER_INPUT, "-material_%s_porosity is missing; allowed: 0 < n < 1 (region %s is saturated)", name, name);
+  PetscCheck(has_k, comm, PETSC_ERR_USER_INPUT, "-material_%s_hydraulic_conductivity is missing; allowed: >= 0 m/s (region %s is saturated)", name, name);
+  const physics::LameParameters lame = physics::lame(info->elastic);
+  const double                  K    = lame.lambda + 2.0 * lame.mu / 3.0;
+  r->biot                            = physics::BiotMaterial{porosity, K_f, K_s, k_h, rho_f, kStandardGravity};
+  const std::string problem          = physics::biotMaterialProblem(r->biot, K);
+  PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "pore fluid of region '%s' (-material_%s_...): %s", name, name, problem.c_str());
+  r->alpha           = physics::biotCoefficient(r->biot, K);
+  r->M               = physics::biotModulus(r->biot, K);
+  r->kappa           = physics::mobility(r->biot);
+  info->vp_undrained = physics::undrainedPWaveSpeed(K, lame.mu, r->alpha, r->M, info->elastic.rho);
+  PetscFunctionReturn(0);
+}
+
+// Adds local per-node values into a global vector of the pressure layout (overwritten).
+PetscErrorCode localToGlobalSum(DM pdm, Vec local, Vec global) {
+  PetscFunctionBeginUser;
+  PetscCall(VecZeroEntries(global));
+  PetscCall(DMLocalToGlobal(pdm, local, ADD_VALUES, global));
+  PetscFunctionReturn(0);
+}
+
+enum FluidCondition { NoFlow, Drained, Flux };
+const char *const kFluidNames[] = {"noflow", "drained", "flux"};
+
+} // namespace
+} // namespace slipwave::model
+
+#include "slipwave/core/option_choice.hpp"
+#include "slipwave/model/boundary_faces.hpp"
+
+namespace slipwave::model {
+namespace {
+
+// -bc_<b>_fluid and -bc_<b>_fluid_flux: drained nodes go into `drained_local` (1), the inflow
+// q (integral of N_a q over the saturated faces) into `inflow_local`.
+PetscErrorCode readFluidBoundaries(DM dm, DM pdm, const std::vector<std::string> &boundaries, const std::vector<SaturatedRegion> &regions, Vec drained_local,
+                                   Vec inflow_local, PorePressure *pp) {
+  MPI_Comm     comm = PetscObjectComm((PetscObject)dm);
+  PetscSection section;
+  PetscScalar *drained, *inflow;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(pdm, &section));
+  PetscCall(VecGetArray(drained_local, &drained));
+  PetscCall(VecGetArray(inflow_local, &inflow));
+  for (const std::string &b : boundaries) {
+    const std::string prefix = "bc_" + b + "_";
+    const std::string title  = "Pore fluid on boundary " + b;
+    PetscInt          condition = NoFlow;
+    PetscReal         q         = 0;
+    PetscBool         q_set     = PETSC_FALSE;
+    PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
+    PetscCall(core::OptionsChoice(PetscOptionsObject, "-fluid", "pore fluid condition: noflow (default), drained (p = 0), flux (prescribed inflow)", kFluidNames, 3, &condition,
+                                  nullptr));
+    PetscCall(PetscOptionsReal("-fluid_flux", "Darcy inflow through the boundary q [m/s], inward positive (with -bc_<b>_fluid flux)", "PorePressureCreate", q, &q, &q_set));
+    PetscOptionsEnd();
+    PetscCheck(!q_set || condition == Flux, comm, PETSC_ERR_USER_INPUT, "-%sfluid_flux is given but -%sfluid = %s; allowed: -%sfluid flux", prefix.c_str(), prefix.c_str(),
+               kFluidNames[condition], prefix.c_str());
+    if (condition == NoFlow) continue;
+    (condition == Drained ? pp->drained : pp->flux).push_back(b);
+    std::vector<BoundaryFace> faces;
+    PetscCall(BoundaryFacesGet(dm, b, &faces));
+    for (const BoundaryFace &f : faces) {
+      if (!regions[f.region].saturated) continue;
+      for (PetscInt k = 0; k < f.nvert; ++k) {
+        PetscInt off;
+        PetscCall(PetscSectionGetOffset(section, f.vertices[k], &off));
+        if (condition == Drained) drained[off] = 1;
+        else inflow[off] += q * f.weights[k];
+      }
+    }
+  }
+  PetscCall(VecRestoreArray(inflow_local, &inflow));
+  PetscCall(VecRestoreArray(drained_local, &drained));
+  PetscFunctionReturn(0);
+}
+
+// Element matrices per distinct bulk matrix, the cell lists and their node offsets.
+PetscErrorCode buildCells(DM pdm, const fem::BulkOperator &bulk, PorePressure *pp) {
+  PetscSection section;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(pdm, &section));
+  pp->nen = bulk.nodesPerCell();
+  pp->dim = bulk.dimension();
+  const PetscInt          nen = pp->nen, nd = nen * pp->dim;
+  std::map<PetscInt, PetscInt> index; // bulk matrix -> ours
+  for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
+    const SaturatedRegion &r = pp->regions[bulk.cellRegion(c)];
+    if (!r.saturated) continue;
+    auto found = index.find(bulk.cellMatrix(c));
+    if (found == index.end()) {
+      const PetscInt k = (PetscInt)index.size();
+      found            = index.emplace(bulk.cellMatrix(c), k).first;
+      pp->coupling.resize((size_t)(k + 1) * nen * nd);
+      pp->diffusion.resize((size_t)(k + 1) * nen * nen);
+      pp->storage_element.resize((size_t)(k + 1) * nen);
+      double *Q = &pp->coupling[(size_t)k * nen * nd], *H = &pp->diffusion[(size_t)k * nen * nen];
+      fem::elementCoupling(bulk.shape(), bulk.cellCoordinates(c), Q);
+      fem::elementDiffusion(bulk.shape(), bulk.cellCoordinates(c), H);
+      fem::elementLumpedMass(bulk.shape(), bulk.cellCoordinates(c), 1.0 / r.M, &pp->storage_element[(size_t)k * nen]);
+      for (PetscInt i = 0; i < nen * nd; ++i) Q[i] *= r.alpha;
+      for (PetscInt i = 0; i < nen * nen; ++i) H[i] *= r.kappa;
+    }
+    pp->cells.push_back(c);
+    pp->cell_matrix.push_back(found->second);
+    for (PetscInt a = 0; a < nen; ++a) {
+      PetscInt off;
+      PetscCall(PetscSectionGetOffset(section, bulk.cellVertex(c, a), &off));
+      pp->cell_p.push_back(off);
+      pp->cell_u.push_back(bulk.cellNodeOffset(c, a));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+// Lumped storage, the free mask, the inflow, and the explicit diffusion limit over free nodes.
+PetscErrorCode assembleNodal(DM dm, const std::vector<std::string> &boundaries, PorePressure *pp) {
+  Vec          drained_local, inflow_local, drained, rows;
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  const PetscInt nen = pp->nen;
+  PetscCall(DMCreateGlobalVector(pp->pdm, &pp->storage));
+  for (Vec *v : {&pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->Hp, &pp->Hp_trial, &pp->Hp_previous}) {
+    PetscCall(VecDuplicate(pp->storage, v));
+    PetscCall(VecZeroEntries(*v));
+  }
+  PetscCall(DMCreateLocalVector(pp->pdm, &pp->p_local));
+  PetscCall(VecDuplicate(pp->p_local, &pp->q_local));
+  PetscCall(VecDuplicate(pp->p_local, &drained_local));
+  PetscCall(VecDuplicate(pp->p_local, &inflow_local));
+  PetscCall(VecDuplicate(pp->storage, &drained));
+  PetscCall(VecDuplicate(pp->storage, &rows));
+  // Storage and the Gershgorin rows of H.
+  PetscCall(VecZeroEntries(pp->q_local));
+  PetscCall(VecZeroEntries(pp->p_local));
+  {
+    PetscScalar *h;
+    PetscCall(VecGetArray(pp->q_local, &a));
+    PetscCall(VecGetArray(pp->p_local, &h));
+    for (size_t i = 0; i < pp->cells.size(); ++i) {
+      const double *S = &pp->storage_element[(size_t)pp->cell_matrix[i] * nen], *H = &pp->diffusion[(size_t)pp->cell_matrix[i] * nen * nen];
+      for (PetscInt r = 0; r < nen; ++r) {
+        a[pp->cell_p[i * nen + r]] += S[r];
+        for (PetscInt c = 0; c < nen; ++c) h[pp->cell_p[i * nen + r]] += std::fabs(H[r * nen + c]);
+      }
+    }
+    PetscCall(VecRestoreArray(pp->p_local, &h));
+    PetscCall(VecRestoreArray(pp->q_local, &a));
+  }
+  PetscCall(localToGlobalSum(pp->pdm, pp->q_local, pp->storage));
+  PetscCall(localToGlobalSum(pp->pdm, pp->p_local, rows));
+  PetscCall(VecZeroEntries(drained_local));
+  PetscCall(VecZeroEntries(inflow_local));
+  PetscCall(readFluidBoundaries(dm, pp->pdm, boundaries, pp->regions, drained_local, inflow_local, pp));
+  PetscCall(localToGlobalSum(pp->pdm, drained_local, drained));
+  PetscCall(localToGlobalSum(pp->pdm, inflow_local, pp->inflow));
+  {
+    PetscInt           n;
+    const PetscScalar *s, *d, *h;
+    PetscScalar       *inv, *mask;
+    PetscCall(VecGetLocalSize(pp->storage, &n));
+    PetscCall(VecGetArrayRead(pp->storage, &s));
+    PetscCall(VecGetArrayRead(drained, &d));
+    PetscCall(VecGetArrayRead(rows, &h));
+    PetscCall(VecGetArray(pp->inv_storage, &inv));
+    PetscCall(VecGetArray(pp->free_mask, &mask));
+    for (PetscInt i = 0; i < n; ++i) {
+      const bool free = PetscRealPart(s[i]) > 0 && PetscRealPart(d[i]) == 0;
+      mask[i]         = free ? 1.0 : 0.0;
+      inv[i]          = free ? 1.0 / s[i] : 0.0;
+      if (free) pp->dt_diffusion = std::min(pp->dt_diffusion, physics::explicitDiffusionStepOfRow(PetscRealPart(s[i]), PetscRealPart(h[i])));
+    }
+    PetscCall(VecRestoreArray(pp->free_mask, &mask));
+    PetscCall(VecRestoreArray(pp->inv_storage, &inv));
+    PetscCall(VecRestoreArrayRead(rows, &h));
+    PetscCall(VecRestoreArrayRead(drained, &d));
+    PetscCall(VecRestoreArrayRead(pp->storage, &s));
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &pp->dt_diffusion, 1, MPI_DOUBLE, MPI_MIN, PetscObjectComm((PetscObject)dm)));
+  for (Vec *v : {&drained_local, &inflow_local, &drained, &rows}) PetscCall(VecDestroy(v));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode PorePressureReadMaterials(MPI_Comm comm, std::vector<RegionMaterialInfo> *materials, std::vector<SaturatedRegion> *regions, bool *any) {
+  PetscFunctionBeginUser;
+  regions->assign(materials->size(), SaturatedRegion{});
+  *any = false;
+  for (size_t i = 0; i < materials->size(); ++i) {
+    PetscCall(readRegion(comm, &(*materials)[i], &(*regions)[i]));
+    *any = *any || (*regions)[i].saturated;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const std::vector<std::string> &boundaries, std::vector<SaturatedRegion> regions,
+                                  PorePressure **out) {
+  PetscFunctionBeginUser;
+  auto *pp    = new PorePressure();
+  pp->regions = std::move(regions);
+  PetscCall(NodeFieldCreateDM(dm, 1, &pp->pdm));
+  PetscCall(buildCells(pp->pdm, bulk, pp));
+  PetscCall(assembleNodal(dm, boundaries, pp));
+  *out = pp;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureDestroy(PorePressure **pore) {
+  PetscFunctionBeginUser;
+  if (!*pore) PetscFunctionReturn(0);
+  PorePressure *pp = *pore;
+  for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->Hp, &pp->Hp_trial, &pp->Hp_previous,
+                 &pp->p_local, &pp->q_local})
+    PetscCall(VecDestroy(v));
+  PetscCall(DMDestroy(&pp->pdm));
+  delete pp;
+  *pore = nullptr;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureTrial(PorePressure *pp, DM dm, const PetscScalar *u, PetscReal t, Vec f_pore) {
+  const PetscInt nen = pp->nen, dim = pp->dim, nd = nen * dim;
+  PetscScalar   *q;
+  PetscFunctionBeginUser;
+  // alpha Q u_{n+1}.
+  PetscCall(VecZeroEntries(pp->q_local));
+  PetscCall(VecGetArray(pp->q_local, &q));
+  for (size_t i = 0; i < pp->cells.size(); ++i) {
+    const double   *Q  = &pp->coupling[(size_t)pp->cell_matrix[i] * nen * nd];
+    const PetscInt *up = &pp->cell_u[i * nen], *pq = &pp->cell_p[i * nen];
+    for (PetscInt r = 0; r < nen; ++r) {
+      double s = 0;
+      for (PetscInt b = 0; b < nen; ++b)
+        for (PetscInt j = 0; j < dim; ++j) s += Q[r * nd + b * dim + j] * PetscRealPart(u[up[b] + j]);
+      q[pq[r]] += s;
+    }
+  }
+  PetscCall(VecRestoreArray(pp->q_local, &q));
+  PetscCall(localToGlobalSum(pp->pdm, pp->q_local, pp->Qu_trial));
+  if (!pp->started) {
+    // The first evaluation is the initial state: its alpha Q u is the reference.
+    PetscCall(VecCopy(pp->Qu_trial, pp->Qu));
+    pp->t       = t;
+    pp->started = true;
+  }
+  // p_{n+1} = p_n - S^{-1} [alpha Q (u_{n+1} - u_n) + h (H p_n - q)] on free nodes; 0 elsewhere.
+  {
+    const double       h = t - pp->t;
+    PetscInt           n;
+    PetscScalar       *pt;
+    const PetscScalar *p, *qt, *qc, *hp, *in, *inv, *mask;
+    PetscCall(VecGetLocalSize(pp->p, &n));
+    PetscCall(VecGetArray(pp->p_trial, &pt));
+    PetscCall(VecGetArrayRead(pp->p, &p));
+    PetscCall(VecGetArrayRead(pp->Qu_trial, &qt));
+    PetscCall(VecGetArrayRead(pp->Qu, &qc));
+    PetscCall(VecGetArrayRead(pp->Hp, &hp));
+    PetscCall(VecGetArrayRead(pp->inflow, &in));
+    PetscCall(VecGetArrayRead(pp->inv_storage, &inv));
+    PetscCall(VecGetArrayRead(pp->free_mask, &mask));
+    for (PetscInt i = 0; i < n; ++i) pt[i] = mask[i] * (p[i] - inv[i] * ((qt[i] - qc[i]) + h * (hp[i] - in[i])));
+    PetscCall(VecRestoreArrayRead(pp->free_mask, &mask));
+    PetscCall(VecRestoreArrayRead(pp->inv_storage, &inv));
+    PetscCall(VecRestoreArrayRead(pp->inflow, &in));
+    PetscCall(VecRestoreArrayRead(pp->Hp, &hp));
+    PetscCall(VecRestoreArrayRead(pp->Qu, &qc));
+    PetscCall(VecRestoreArrayRead(pp->Qu_trial, &qt));
+    PetscCall(VecRestoreArrayRead(pp->p, &p));
+    PetscCall(VecRestoreArray(pp->p_trial, &pt));
+  }
+  pp->t_trial = t;
+  // f_pore = alpha Q^T p and H p at the trial pressure.
+  Vec                f_local;
+  PetscScalar       *f;
+  const PetscScalar *pl;
+  PetscCall(DMGlobalToLocal(pp->pdm, pp->p_trial, INSERT_VALUES, pp->p_local));
+  PetscCall(DMGetLocalVector(dm, &f_local));
+  PetscCall(VecZeroEntries(f_local));
+  PetscCall(VecZeroEntries(pp->q_local));
+  PetscCall(VecGetArray(f_local, &f));
+  PetscCall(VecGetArray(pp->q_local, &q));
+  PetscCall(VecGetArrayRead(pp->p_local, &pl));
+  for (size_t i = 0; i < pp->cells.size(); ++i) {
+    const double   *Q  = &pp->coupling[(size_t)pp->cell_matrix[i] * nen * nd];
+    const double   *H  = &pp->diffusion[(size_t)pp->cell_matrix[i] * nen * nen];
+    const PetscInt *up = &pp->cell_u[i * nen], *pq = &pp->cell_p[i * nen];
+    double          pe[fem::kMaxCellNodes];
+    for (PetscInt r = 0; r < nen; ++r) pe[r] = PetscRealPart(pl[pq[r]]);
+    for (PetscInt b = 0; b < nen; ++b)
+      for (PetscInt j = 0; j < dim; ++j) {
+        double s = 0;
+        for (PetscInt r = 0; r < nen; ++r) s += Q[r * nd + b * dim + j] * pe[r];
+        f[up[b] + j] += s;
+      }
+    for (PetscInt r = 0; r < nen; ++r) {
+      double s = 0;
+      for (PetscInt b = 0; b < nen; ++b) s += H[r * nen + b] * pe[b];
+      q[pq[r]] += s;
+    }
+  }
+  PetscCall(VecRestoreArrayRead(pp->p_local, &pl));
+  PetscCall(VecRestoreArray(pp->q_local, &q));
+  PetscCall(VecRestoreArray(f_local, &f));
+  PetscCall(VecZeroEntries(f_pore));
+  PetscCall(DMLocalToGlobal(dm, f_local, ADD_VALUES, f_pore));
+  PetscCall(DMRestoreLocalVector(dm, &f_local));
+  PetscCall(localToGlobalSum(pp->pdm, pp->q_local, pp->Hp_trial));
+  PetscFunctionReturn(0);
+}
+
+void PorePressureCommit(PorePressure *pp) {
+  if (!pp) return;
+  std::swap(pp->p, pp->p_trial);
+  std::swap(pp->Qu, pp->Qu_trial);
+  // H p_{n-1} <- H p_n <- H p_{n+1}.
+  Vec oldest      = pp->Hp_previous;
+  pp->Hp_previous = pp->Hp;
+  pp->Hp          = pp->Hp_trial;
+  pp->Hp_trial    = oldest;
+  pp->t           = pp->t_trial;
+}
+
+PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pp, DM dm, Vec rows) {
+  const PetscInt nen = pp->nen, dim = pp->dim, nd = nen * dim;
+  Vec            w, f_local, extra;
+  PetscScalar   *q, *f;
+  const PetscScalar *wl;
+  PetscFunctionBeginUser;
+  // w_a = sum_k |alpha Q_ak| / S_a on free pressure nodes.
+  PetscCall(VecDuplicate(pp->storage, &w));
+  PetscCall(VecZeroEntries(pp->q_local));
+  PetscCall(VecGetArray(pp->q_local, &q));
+  for (size_t i = 0; i < pp->cells.size(); ++i) {
+    const double *Q = &pp->coupling[(size_t)pp->cell_matrix[i] * nen * nd];
+    for (PetscInt r = 0; r < nen; ++r)
+      for (PetscInt k = 0; k < nd; ++k) q[pp->cell_p[i * nen + r]] += std::fabs(Q[r * nd + k]);
+  }
+  PetscCall(VecRestoreArray(pp->q_local, &q));
+  PetscCall(localToGlobalSum(pp->pdm, pp->q_local, w));
+  PetscCall(VecPointwiseMult(w, w, pp->inv_storage));
+  PetscCall(DMGlobalToLocal(pp->pdm, w, INSERT_VALUES, pp->q_local));
+  // rows_(b,j) += sum_a |alpha Q_a,bj| w_a  >=  sum_(c,k) |(alpha^2 Q^T S^-1 Q)_(bj),(ck)|.
+  PetscCall(DMGetLocalVector(dm, &f_local));
+  PetscCall(VecZeroEntries(f_local));
+  PetscCall(VecGetArray(f_local, &f));
+  PetscCall(VecGetArrayRead(pp->q_local, &wl));
+  for (size_t i = 0; i < pp->cells.size(); ++i) {
+    const double *Q = &pp->coupling[(size_t)pp->cell_matrix[i] * nen * nd];
+    for (PetscInt b = 0; b < nen; ++b)
+      for (PetscInt j = 0; j < dim; ++j)
+        for (PetscInt r = 0; r < nen; ++r) f[pp->cell_u[i * nen + b] + j] += std::fabs(Q[r * nd + b * dim + j]) * PetscRealPart(wl[pp->cell_p[i * nen + r]]);
+  }
+  PetscCall(VecRestoreArrayRead(pp->q_local, &wl));
+  PetscCall(VecRestoreArray(f_local, &f));
+  PetscCall(VecDuplicate(rows, &extra));
+  PetscCall(VecZeroEntries(extra));
+  PetscCall(DMLocalToGlobal(dm, f_local, ADD_VALUES, extra));
+  PetscCall(DMRestoreLocalVector(dm, &f_local));
+  PetscCall(VecAXPY(rows, 1.0, extra));
+  PetscCall(VecDestroy(&extra));
+  PetscCall(VecDestroy(&w));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureEnergy(PorePressure *pp, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e) {
+  PetscScalar pSp, pHp, pHq, pq;
+  Vec         Sp;
+  PetscFunctionBeginUser;
+  double sums[2] = {0, 0}; // v_{n+1/2} . f_pore, v_n . f_pore on held dofs
+  {
+    PetscInt           n;
+    const PetscScalar *va, *aa, *fp, *mask;
+    PetscCall(VecGetLocalSize(v, &n));
+    PetscCall(VecGetArrayRead(v, &va));
+    PetscCall(VecGetArrayRead(a, &aa));
+    PetscCall(VecGetArrayRead(f_pore, &fp));
+    PetscCall(VecGetArrayRead(free_mask, &mask));
+    for (PetscInt k = 0; k < n; ++k) {
+      sums[0] += PetscRealPart((va[k] + 0.5 * h * aa[k]) * fp[k]);
+      sums[1] += PetscRealPart((1.0 - mask[k]) * va[k] * fp[k]);
+    }
+    PetscCall(VecRestoreArrayRead(free_mask, &mask));
+    PetscCall(VecRestoreArrayRead(f_pore, &fp));
+    PetscCall(VecRestoreArrayRead(a, &aa));
+    PetscCall(VecRestoreArrayRead(v, &va));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)v)));
+  }
+  const double vf = sums[0];
+  e->held_power   = sums[1];
+  PetscCall(VecDuplicate(pp->p, &Sp));
+  PetscCall(VecPointwiseMult(Sp, pp->storage, pp->p));
+  PetscCall(VecDot(pp->p, Sp, &pSp));
+  PetscCall(VecDestroy(&Sp));
+  PetscCall(VecDot(pp->p, pp->Hp, &pHp));
+  PetscCall(VecDot(pp->p, pp->Hp_previous, &pHq));
+  PetscCall(VecDot(pp->p, pp->inflow, &pq));
+  // S p_{n+1} = S p_n - h alpha Q v_{n+1/2} - h (H p_n - q) on free nodes, p = 0 on the others,
+  // and p_n . alpha Q v = v . alpha Q^T p_n = v . f_pore.
+  e->storage = 0.5 * PetscRealPart(pSp - h * vf - h * pHp + h * pq);
+  e->darcy   = 0.5 * h * PetscRealPart(pHp + pHq);
+  e->inflow  = h * PetscRealPart(pq);
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::model
