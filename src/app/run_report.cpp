@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "slipwave/model/attenuation.hpp"
+#include "slipwave/model/pore_pressure.hpp"
 
 namespace slipwave::app {
 namespace {
@@ -125,6 +126,8 @@ PetscErrorCode ReportSetup(const model::Elastodynamics &model, const model::Stab
                           limit.dt_bulk, 100 * (1 - limit.dt_bulk / limit.dt_without_stiffness_damping)));
   for (const std::string &line : model::AttenuationReport(model.attenuation, model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   PetscCall(reportInterfaces(model));
+  if (model.pore)
+    for (const std::string &line : model::PorePressureReport(model.pore, model.materials, limit.dt_drained, limit.dt_bulk, limit.dt_limit)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   for (const std::string &line : stations.ambiguities()) PetscCall(PetscPrintf(comm, "  %s\n", line.c_str()));
   PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", limit.dt_limit, limit.governing.c_str(), limit.dt_cfl));
   if (limit.dt_limit < limit.dt_without_interfaces * (1 - 1e-12))

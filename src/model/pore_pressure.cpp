@@ -401,6 +401,44 @@ PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pp, DM dm, Vec rows) {
   PetscFunctionReturn(0);
 }
 
+std::vector<std::string> PorePressureReport(const PorePressure *pp, const std::vector<RegionMaterialInfo> &materials, double dt_drained, double dt_undrained,
+                                            double dt_limit) {
+  std::vector<std::string> lines;
+  char                     buf[512];
+  for (size_t i = 0; i < materials.size(); ++i) {
+    const SaturatedRegion &r = pp->regions[i];
+    if (!r.saturated) continue;
+    const physics::LameParameters lame = physics::lame(materials[i].elastic);
+    const double                  K    = lame.lambda + 2.0 * lame.mu / 3.0;
+    std::snprintf(buf, sizeof buf,
+                  "  saturated %s: alpha %.4g, M %.4g Pa, Skempton B %.4g, loading efficiency %.4g, undrained vp %.1f m/s (drained %.1f), k %.3g m/s = mobility %.3g m^2/(Pa s), c_v %.4g m^2/s",
+                  materials[i].region.c_str(), r.alpha, r.M, physics::skemptonB(K, r.alpha, r.M), physics::loadingEfficiency(K, lame.mu, r.alpha, r.M),
+                  materials[i].vp_undrained, materials[i].elastic.vp, r.biot.hydraulic_conductivity, r.kappa,
+                  physics::consolidationCoefficient(K, lame.mu, r.alpha, r.M, r.kappa));
+    lines.push_back(buf);
+  }
+  auto names = [](const std::vector<std::string> &list) {
+    std::string s;
+    for (const auto &n : list) s += (s.empty() ? "" : ",") + n;
+    return s.empty() ? std::string("none") : s;
+  };
+  std::snprintf(buf, sizeof buf, "  pore fluid boundaries: drained %s; prescribed inflow %s; all others no flow", names(pp->drained).c_str(), names(pp->flux).c_str());
+  lines.push_back(buf);
+  std::snprintf(buf, sizeof buf,
+                "  pore pressure step cost: drained wave %.4e s, undrained wave %.4e s (%.2fx the drained), diffusion %.4e s; the %s governs (limit %.4e s, %.2fx the drained)",
+                dt_drained, dt_undrained, dt_drained / dt_undrained, pp->dt_diffusion, pp->dt_diffusion < dt_undrained ? "diffusion" : "undrained wave", dt_limit,
+                dt_drained / dt_limit);
+  lines.push_back(buf);
+  if (pp->dt_diffusion < 0.1 * dt_undrained) {
+    std::snprintf(buf, sizeof buf,
+                  "  warning: the explicit pore-pressure diffusion forces a step %.3gx smaller than the undrained wave's; lower -material_<r>_hydraulic_conductivity "
+                  "or coarsen the mesh (the limit scales with h^2 / (k M))",
+                  dt_undrained / pp->dt_diffusion);
+    lines.push_back(buf);
+  }
+  return lines;
+}
+
 PetscErrorCode PorePressureEnergy(PorePressure *pp, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e) {
   PetscScalar pSp, pHp, pHq, pq;
   Vec         Sp;

@@ -70,6 +70,12 @@ void           PorePressureCommit(PorePressure *pore);
 // the undrained stiffening the wave step must cover (rows of drained nodes do not stiffen).
 PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pore, DM dm, Vec rows);
 
+// Report lines: per saturated region its Biot numbers, the fluid boundaries, and what the
+// pore pressure costs in step: dt_drained (bulk without the undrained stiffening),
+// dt_undrained (with it), dt_diffusion, and the run's limit.
+std::vector<std::string> PorePressureReport(const PorePressure *pore, const std::vector<RegionMaterialInfo> &materials, double dt_drained, double dt_undrained,
+                                            double dt_limit);
+
 // The fluid's terms of the energy budget at t_n (docs/saturated-soil.md): the shadow storage
 // energy F_{n+1/2} = ½ p_n S p_{n+1}, and this step's Darcy dissipation
 // ½ h p_n H (p_n + p_{n-1}) and work of the prescribed inflow h p_n q.

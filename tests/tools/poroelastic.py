@@ -1,0 +1,138 @@
+#!/usr/bin/python3
+"""Checks of slipwave's saturated (Biot u-p) regions against closed-form poroelasticity.
+
+Material numbers are recomputed here from the scene's inputs (not read from slipwave), with
+the formulas of Wang (2000), "Theory of Linear Poroelasticity", ch. 2-3 and 6:
+  alpha = 1 (incompressible grains), M = K_f / n, E = rho vp^2 (drained P modulus),
+  kappa = k_h / (rho_f g), c_v = kappa / (1/M + alpha^2 / E), gamma = alpha M / (E + alpha^2 M).
+Each subcommand prints what it measured and exits 1 when a bound is violated.
+"""
+import argparse
+import math
+import sys
+
+import numpy as np
+
+G_STANDARD = 9.80665
+
+
+def read_csv(path):
+    return np.genfromtxt(path, delimiter=",", names=True)
+
+
+def material(a):
+    E = a.rho * a.vp ** 2
+    M = a.fluid_bulk_modulus / a.porosity
+    alpha = 1.0
+    kappa = a.hydraulic_conductivity / (1000.0 * G_STANDARD)
+    return dict(E=E, M=M, alpha=alpha, kappa=kappa, cv=kappa / (1 / M + alpha ** 2 / E), gamma=alpha * M / (E + alpha ** 2 * M),
+                vu=math.sqrt((E + alpha ** 2 * M) / a.rho))
+
+
+def terzaghi_pressure(depth, H, Tv, p0, terms=400):
+    """Terzaghi (1923) series for a layer drained at depth 0, impervious at depth H, under a
+    load applied at t = 0: p = p0 sum_m 4/(m pi) sin(m pi z / 2H) exp(-m^2 pi^2 Tv / 4), m odd.
+    With compressible constituents the same series holds with p0 = gamma sigma and c_v above
+    (Wang 2000, sec. 6.2)."""
+    m = 2 * np.arange(terms) + 1
+    return p0 * np.sum(4 / (m * math.pi) * np.sin(m * math.pi * depth / (2 * H)) * np.exp(-(m * math.pi) ** 2 * Tv / 4))
+
+
+def terzaghi_mean(Tv, terms=400):
+    """Mean of p/p0 over the layer: sum_m 8/(m pi)^2 exp(-m^2 pi^2 Tv / 4), m odd (Terzaghi)."""
+    m = 2 * np.arange(terms) + 1
+    return np.sum(8 / (m * math.pi) ** 2 * np.exp(-(m * math.pi) ** 2 * Tv / 4))
+
+
+def terzaghi(a):
+    mat = material(a)
+    H, load = a.height, a.load
+    p0 = mat["gamma"] * load
+    ok = True
+    print(f"terzaghi: c_v {mat['cv']:.5g} m^2/s, loading efficiency {mat['gamma']:.5f}, p0 {p0:.6g} Pa, H {H} m")
+    stations = [(name, float(depth)) for name, depth in (s.split(":") for s in a.stations.split(","))]
+    top = read_csv(f"{a.dir}/stations/{a.top}.csv")
+    for Tv in (0.1, 0.3, 0.6):
+        t = Tv * H ** 2 / mat["cv"]
+        for name, depth in stations:
+            d = read_csv(f"{a.dir}/stations/{name}.csv")
+            got = np.interp(t, d["t"], d["p"])
+            want = terzaghi_pressure(depth, H, Tv, p0)
+            err = abs(got - want) / load
+            ok = ok and err <= a.p_tol
+            print(f"terzaghi: T_v {Tv}: t {t:.5g} s, depth {depth} m: p {got:.6g} Pa, Terzaghi {want:.6g} Pa, error {err:.2e} of the load (bound {a.p_tol:.0e})")
+        # Settlement = integral of the strain, eps = (-load + alpha p)/E (uniaxial strain).
+        want_s = (load * H - mat["alpha"] * p0 * H * terzaghi_mean(Tv)) / mat["E"]
+        got_s = -np.interp(t, top["t"], top["u_y"])
+        err = abs(got_s - want_s) / want_s
+        ok = ok and err <= a.s_tol
+        print(f"terzaghi: T_v {Tv}: settlement {got_s:.6g} m, Terzaghi {want_s:.6g} m, relative error {err:.2e} (bound {a.s_tol:.0e})")
+    return 0 if ok else 1
+
+
+def delay(t, x, y):
+    """Time by which y lags x: peak of the cross-correlation, refined by a parabola."""
+    dt = t[1] - t[0]
+    c = np.correlate(y, x, mode="full")
+    k = int(np.argmax(c))
+    frac = 0.5 * (c[k - 1] - c[k + 1]) / (c[k - 1] - 2 * c[k] + c[k + 1])
+    return (k - (len(x) - 1) + frac) * dt
+
+
+def pulse(a):
+    """A P pulse travelling up a column between stations a.lower and a.upper (a.distance
+    apart): its speed from the cross-correlation delay, and at the upper station the ratio
+    p / (rho c v_y), which is the loading efficiency for the undrained plane wave
+    (sigma_yy = -rho c v_y for an upgoing wave, p = gamma (-sigma_yy))."""
+    mat = material(a)
+    lo = read_csv(f"{a.dir}/stations/{a.lower}.csv")
+    up = read_csv(f"{a.dir}/stations/{a.upper}.csv")
+    speed_want = mat["vu"] if a.limit == "undrained" else a.vp
+    c = a.distance / delay(lo["t"], lo["v_y"], up["v_y"])
+    err = abs(c - speed_want) / speed_want
+    ok = err <= a.speed_tol
+    print(f"pulse: speed {c:.6g} m/s, {a.limit} speed {speed_want:.6g} m/s (undrained {mat['vu']:.6g}, drained {a.vp:.6g}), relative error {err:.2e} (bound {a.speed_tol:.0e})")
+    if a.limit == "undrained":
+        v, p = up["v_y"], up["p"]
+        big = np.abs(v) > 0.2 * np.max(np.abs(v))
+        ratio = np.sum(p[big] * v[big]) / np.sum(v[big] ** 2) / (a.rho * mat["vu"])
+        err = abs(ratio - mat["gamma"]) / mat["gamma"]
+        ok = ok and err <= a.gamma_tol
+        print(f"pulse: p / (rho c v) {ratio:.6f}, loading efficiency {mat['gamma']:.6f}, relative error {err:.2e} (bound {a.gamma_tol:.0e})")
+    return 0 if ok else 1
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__)
+    sub = p.add_subparsers(dest="cmd", required=True)
+    parsers = []
+    t = sub.add_parser("terzaghi")
+    t.add_argument("dir")
+    t.add_argument("--height", type=float, required=True)
+    t.add_argument("--load", type=float, required=True, help="compressive load on the top [Pa]")
+    t.add_argument("--stations", required=True, help="name:depth,... (depth below the drained top [m])")
+    t.add_argument("--top", required=True, help="station at the loaded top")
+    t.add_argument("--p-tol", type=float, default=0.01)
+    t.add_argument("--s-tol", type=float, default=0.01)
+    parsers.append(t)
+    u = sub.add_parser("pulse")
+    u.add_argument("dir")
+    u.add_argument("--lower", required=True)
+    u.add_argument("--upper", required=True)
+    u.add_argument("--distance", type=float, required=True)
+    u.add_argument("--limit", choices=("undrained", "drained"), required=True)
+    u.add_argument("--speed-tol", type=float, default=0.01)
+    u.add_argument("--gamma-tol", type=float, default=0.02)
+    parsers.append(u)
+    for q in parsers:
+        q.add_argument("--rho", type=float, required=True)
+        q.add_argument("--vp", type=float, required=True)
+        q.add_argument("--porosity", type=float, required=True)
+        q.add_argument("--fluid-bulk-modulus", type=float, default=2.2e9)
+        q.add_argument("--hydraulic-conductivity", type=float, required=True)
+    a = p.parse_args()
+    return {"terzaghi": terzaghi, "pulse": pulse}[a.cmd](a)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
