@@ -99,6 +99,11 @@ def pulse(a):
         err = abs(ratio - mat["gamma"]) / mat["gamma"]
         ok = ok and err <= a.gamma_tol
         print(f"pulse: p / (rho c v) {ratio:.6f}, loading efficiency {mat['gamma']:.6f}, relative error {err:.2e} (bound {a.gamma_tol:.0e})")
+    if a.late_after is not None:
+        # After the pulse has left through the top, anything at the upper station came back.
+        late = np.max(np.abs(up["v_y"][up["t"] > a.late_after])) / np.max(np.abs(up["v_y"]))
+        ok = ok and late <= a.late_max
+        print(f"pulse: motion after t = {a.late_after} s {late:.2e} of the peak (bound {a.late_max:.0e})")
     return 0 if ok else 1
 
 
@@ -123,6 +128,8 @@ def main():
     u.add_argument("--limit", choices=("undrained", "drained"), required=True)
     u.add_argument("--speed-tol", type=float, default=0.01)
     u.add_argument("--gamma-tol", type=float, default=0.02)
+    u.add_argument("--late-after", type=float, help="time after which the pulse has left the column [s]")
+    u.add_argument("--late-max", type=float, default=0.01)
     parsers.append(u)
     for q in parsers:
         q.add_argument("--rho", type=float, required=True)
