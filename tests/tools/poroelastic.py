@@ -107,6 +107,21 @@ def pulse(a):
     return 0 if ok else 1
 
 
+def energy(a):
+    """The budget with the fluid (docs/saturated-soil.md): stored (kinetic + strain + fluid
+    storage) change = work in - absorbed - damped - Darcy dissipation + inflow work, to
+    round-off. The Darcy column must matter: without it the error would be darcy/scale."""
+    d = read_csv(a.csv)
+    err = np.max(np.abs(d["relative_balance_error"]))
+    darcy, inflow = d["darcy_dissipated"][-1], d["fluid_inflow_work"][-1]
+    work_in = d["input_work"][-1]
+    scale = np.max(np.abs(d["balance_error"])) / max(err, 1e-300)
+    ok = err <= a.max_error and darcy >= a.min_darcy_fraction * work_in and np.all(np.diff(d["darcy_dissipated"]) >= -1e-12 * scale)
+    print(f"energy: max relative balance error {err:.3e} (bound {a.max_error:.0e}); Darcy dissipation {darcy:.6g} J = {darcy / work_in:.3f} of the input "
+          f"{work_in:.6g} J (at least {a.min_darcy_fraction}), never decreasing; inflow work {inflow:.4g} J")
+    return 0 if ok else 1
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__)
     sub = p.add_subparsers(dest="cmd", required=True)
@@ -137,8 +152,12 @@ def main():
         q.add_argument("--porosity", type=float, required=True)
         q.add_argument("--fluid-bulk-modulus", type=float, default=2.2e9)
         q.add_argument("--hydraulic-conductivity", type=float, required=True)
+    e = sub.add_parser("energy")
+    e.add_argument("csv")
+    e.add_argument("--max-error", type=float, required=True)
+    e.add_argument("--min-darcy-fraction", type=float, required=True)
     a = p.parse_args()
-    return {"terzaghi": terzaghi, "pulse": pulse}[a.cmd](a)
+    return {"terzaghi": terzaghi, "pulse": pulse, "energy": energy}[a.cmd](a)
 
 
 if __name__ == "__main__":
