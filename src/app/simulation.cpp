@@ -167,9 +167,11 @@ PetscErrorCode setUp(MPI_Comm comm, Run *r) {
   PetscCall(r->stations.Setup(r->model.dm, r->model.bulk, r->model.mesh));
   PetscCall(RegionVelocitiesRead(comm, r->model.dim, r->model.materials, &r->region_velocity));
   PetscCall(model::GeostaticOptionsRead(comm, &r->geostatic));
-  PetscCheck(!r->model.pore || !(r->geostatic.enabled || r->opt.checkpoint_interval > 0 || r->opt.restart[0]), comm, PETSC_ERR_SUP,
-             "saturated regions (-material_<r>_saturated) do not yet work with %s; allowed: dry scenes for them",
-             r->geostatic.enabled ? "the geostatic stage" : "checkpoints (-checkpoint_interval, -restart)");
+  // Not yet: the checkpoint does not hold the pore pressure, the geostatic stage has no water table.
+  PetscCheck(!r->model.pore || !(r->geostatic.enabled || r->opt.checkpoint_interval > 0 || r->opt.restart[0]), comm, PETSC_ERR_USER_INPUT,
+             "%s with a saturated region (-material_<r>_saturated): not supported yet; allowed: %s",
+             r->geostatic.enabled ? "the geostatic stage (-geostatic_stage)" : "checkpoints (-checkpoint_interval, -restart)",
+             r->geostatic.enabled ? "a run without -geostatic_stage" : "-checkpoint_interval 0 and no -restart");
   PetscFunctionReturn(0);
 }
 

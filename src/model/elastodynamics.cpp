@@ -178,8 +178,10 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(VecZeroEntries(m->f_contact_damping));
   PetscCall(createInterfaces(m));
   if (any_saturated) {
-    PetscCheck(!m->free_field && m->bc.gravity == 0, comm, PETSC_ERR_SUP, "saturated regions (-material_<r>_saturated) do not yet work with %s; allowed: dry scenes for them",
-               m->free_field ? "free-field sides" : "gravity (no water table yet)");
+    // Not yet: the free-field columns are dry, and gravity needs the water table (hydrostatic p).
+    PetscCheck(!m->free_field, comm, PETSC_ERR_USER_INPUT, "-bc_<side>_type freefield with a saturated region (-material_<r>_saturated): not supported yet; allowed: absorbing or tied sides");
+    PetscCheck(m->bc.gravity == 0, comm, PETSC_ERR_USER_INPUT, "-gravity = %g with a saturated region (-material_<r>_saturated): not supported yet (no water table); allowed: 0",
+               (double)m->bc.gravity);
     PetscCall(PorePressureCreate(m->dm, m->bulk, m->mesh.boundaries, std::move(saturated), &m->pore));
     PetscCall(VecDuplicate(m->mass, &m->f_pore));
   }
