@@ -122,6 +122,33 @@ def energy(a):
     return 0 if ok else 1
 
 
+def checkerboard(a):
+    """The node-alternating part of the pore pressure on a uniform grid of spacing h: per cell
+    c = (p00 - p10 - p01 + p11)/4, which is +-A for a checkerboard of amplitude A and
+    h^2 p_xy / 4 for a smooth field (below 1 % of max |p| for the wavelengths a mesh of 10
+    points per wavelength carries: (h k)^2 / 4 <= (2 pi / 10)^2 / 4 = 0.1, times the share of
+    the mixed derivative). Cells within `margin` cells of the grid edges are left out (corners
+    of absorbing boundaries); every field frame after the first is checked."""
+    import h5py
+    f = h5py.File(f"{a.dir}/volume.h5", "r")
+    g = f["geometry"][()]
+    I = np.rint((g[:, 0] - g[:, 0].min()) / a.h).astype(int)
+    J = np.rint((g[:, 1] - g[:, 1].min()) / a.h).astype(int)
+    x0, x1, y0, y1 = (float(v) for v in a.box.split(","))
+    i0, i1 = int(round(x0 / a.h)) + a.margin, int(round(x1 / a.h)) - a.margin
+    j0, j1 = int(round(y0 / a.h)) + a.margin, int(round(y1 / a.h)) - a.margin
+    worst = 0.0
+    frames = sorted(f["fields/pore_pressure"].keys())[1:]
+    for k in frames:
+        P = np.zeros((I.max() + 1, J.max() + 1))
+        P[I, J] = f["fields/pore_pressure/" + k][()][:, 0]
+        W = P[i0:i1 + 1, j0:j1 + 1]
+        c = (W[:-1, :-1] - W[1:, :-1] - W[:-1, 1:] + W[1:, 1:]) / 4
+        worst = max(worst, np.max(np.abs(c)) / np.max(np.abs(W)))
+    print(f"checkerboard: largest node-alternating part {worst:.3e} of max |p| over {len(frames)} frames (bound {a.max_ratio:.0e}; a checkerboard gives ~1)")
+    return 0 if worst <= a.max_ratio else 1
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__)
     sub = p.add_subparsers(dest="cmd", required=True)
@@ -152,12 +179,18 @@ def main():
         q.add_argument("--porosity", type=float, required=True)
         q.add_argument("--fluid-bulk-modulus", type=float, default=2.2e9)
         q.add_argument("--hydraulic-conductivity", type=float, required=True)
+    c = sub.add_parser("checkerboard")
+    c.add_argument("dir")
+    c.add_argument("--h", type=float, required=True)
+    c.add_argument("--box", required=True, help="x0,x1,y0,y1 of the saturated region [m]")
+    c.add_argument("--margin", type=int, default=2)
+    c.add_argument("--max-ratio", type=float, required=True)
     e = sub.add_parser("energy")
     e.add_argument("csv")
     e.add_argument("--max-error", type=float, required=True)
     e.add_argument("--min-darcy-fraction", type=float, required=True)
     a = p.parse_args()
-    return {"terzaghi": terzaghi, "pulse": pulse, "energy": energy}[a.cmd](a)
+    return {"terzaghi": terzaghi, "pulse": pulse, "energy": energy, "checkerboard": checkerboard}[a.cmd](a)
 
 
 if __name__ == "__main__":
