@@ -113,6 +113,71 @@ PetscErrorCode readFluidBoundaries(DM dm, DM pdm, const std::vector<std::string>
   PetscFunctionReturn(0);
 }
 
+// The two per-step cell loops, with the node count and dimension as compile-time constants
+// so the small products unroll (the runtime-sized loops cost 10x the bulk force).
+// q_a += sum (alpha Q)_a,bj u_bj: alpha Q u per pressure node.
+template <int NEN, int DIM>
+void addCouplingTimesU(size_t ncell, const PetscInt *matrix, const PetscInt *cell_u, const PetscInt *cell_p, const double *pool, const PetscScalar *u, PetscScalar *q) {
+  constexpr int N = NEN * DIM;
+  for (size_t i = 0; i < ncell; ++i) {
+    const double *__restrict Q = pool + (size_t)matrix[i] * NEN * N;
+    double ue[N];
+    for (int b = 0; b < NEN; ++b)
+      for (int j = 0; j < DIM; ++j) ue[b * DIM + j] = PetscRealPart(u[cell_u[i * NEN + b] + j]);
+    for (int r = 0; r < NEN; ++r) {
+      double s = 0;
+      for (int k = 0; k < N; ++k) s += Q[r * N + k] * ue[k];
+      q[cell_p[i * NEN + r]] += s;
+    }
+  }
+}
+
+// f_bj += sum_a (alpha Q)_a,bj p_a (the skeleton force) and h_a += sum_b (kappa H)_ab p_b.
+template <int NEN, int DIM>
+void addCouplingTransposeAndDiffusion(size_t ncell, const PetscInt *matrix, const PetscInt *cell_u, const PetscInt *cell_p, const double *coupling,
+                                      const double *diffusion, const PetscScalar *p, PetscScalar *f, PetscScalar *h) {
+  constexpr int N = NEN * DIM;
+  for (size_t i = 0; i < ncell; ++i) {
+    const double *__restrict Q = coupling + (size_t)matrix[i] * NEN * N;
+    const double *__restrict H = diffusion + (size_t)matrix[i] * NEN * NEN;
+    double pe[NEN], fe[N] = {};
+    for (int r = 0; r < NEN; ++r) pe[r] = PetscRealPart(p[cell_p[i * NEN + r]]);
+    for (int r = 0; r < NEN; ++r)
+      for (int k = 0; k < N; ++k) fe[k] += Q[r * N + k] * pe[r];
+    for (int b = 0; b < NEN; ++b)
+      for (int j = 0; j < DIM; ++j) f[cell_u[i * NEN + b] + j] += fe[b * DIM + j];
+    for (int r = 0; r < NEN; ++r) {
+      double s = 0;
+      for (int b = 0; b < NEN; ++b) s += H[r * NEN + b] * pe[b];
+      h[cell_p[i * NEN + r]] += s;
+    }
+  }
+}
+
+void couplingTimesU(const PorePressure &pp, const PetscScalar *u, PetscScalar *q) {
+  const size_t n = pp.cells.size();
+  const PetscInt *m = pp.cell_matrix.data(), *cu = pp.cell_u.data(), *cp = pp.cell_p.data();
+  switch (pp.nen * pp.dim) {
+  case 6: addCouplingTimesU<3, 2>(n, m, cu, cp, pp.coupling.data(), u, q); break;
+  case 8: addCouplingTimesU<4, 2>(n, m, cu, cp, pp.coupling.data(), u, q); break;
+  case 12: addCouplingTimesU<4, 3>(n, m, cu, cp, pp.coupling.data(), u, q); break;
+  case 24: addCouplingTimesU<8, 3>(n, m, cu, cp, pp.coupling.data(), u, q); break;
+  default: break;
+  }
+}
+
+void couplingTransposeAndDiffusion(const PorePressure &pp, const PetscScalar *p, PetscScalar *f, PetscScalar *h) {
+  const size_t n = pp.cells.size();
+  const PetscInt *m = pp.cell_matrix.data(), *cu = pp.cell_u.data(), *cp = pp.cell_p.data();
+  switch (pp.nen * pp.dim) {
+  case 6: addCouplingTransposeAndDiffusion<3, 2>(n, m, cu, cp, pp.coupling.data(), pp.diffusion.data(), p, f, h); break;
+  case 8: addCouplingTransposeAndDiffusion<4, 2>(n, m, cu, cp, pp.coupling.data(), pp.diffusion.data(), p, f, h); break;
+  case 12: addCouplingTransposeAndDiffusion<4, 3>(n, m, cu, cp, pp.coupling.data(), pp.diffusion.data(), p, f, h); break;
+  case 24: addCouplingTransposeAndDiffusion<8, 3>(n, m, cu, cp, pp.coupling.data(), pp.diffusion.data(), p, f, h); break;
+  default: break;
+  }
+}
+
 // Element matrices per distinct bulk matrix, the cell lists and their node offsets.
 PetscErrorCode buildCells(DM pdm, const fem::BulkOperator &bulk, PorePressure *pp) {
   PetscSection section;
@@ -258,22 +323,12 @@ PetscErrorCode PorePressureDestroy(PorePressure **pore) {
 }
 
 PetscErrorCode PorePressureTrial(PorePressure *pp, DM dm, const PetscScalar *u, PetscReal t, Vec f_pore) {
-  const PetscInt nen = pp->nen, dim = pp->dim, nd = nen * dim;
-  PetscScalar   *q;
+  PetscScalar *q;
   PetscFunctionBeginUser;
   // alpha Q u_{n+1}.
   PetscCall(VecZeroEntries(pp->q_local));
   PetscCall(VecGetArray(pp->q_local, &q));
-  for (size_t i = 0; i < pp->cells.size(); ++i) {
-    const double   *Q  = &pp->coupling[(size_t)pp->cell_matrix[i] * nen * nd];
-    const PetscInt *up = &pp->cell_u[i * nen], *pq = &pp->cell_p[i * nen];
-    for (PetscInt r = 0; r < nen; ++r) {
-      double s = 0;
-      for (PetscInt b = 0; b < nen; ++b)
-        for (PetscInt j = 0; j < dim; ++j) s += Q[r * nd + b * dim + j] * PetscRealPart(u[up[b] + j]);
-      q[pq[r]] += s;
-    }
-  }
+  couplingTimesU(*pp, u, q);
   PetscCall(VecRestoreArray(pp->q_local, &q));
   PetscCall(localToGlobalSum(pp->pdm, pp->q_local, pp->Qu_trial));
   if (!pp->started) {
@@ -319,24 +374,7 @@ PetscErrorCode PorePressureTrial(PorePressure *pp, DM dm, const PetscScalar *u, 
   PetscCall(VecGetArray(f_local, &f));
   PetscCall(VecGetArray(pp->q_local, &q));
   PetscCall(VecGetArrayRead(pp->p_local, &pl));
-  for (size_t i = 0; i < pp->cells.size(); ++i) {
-    const double   *Q  = &pp->coupling[(size_t)pp->cell_matrix[i] * nen * nd];
-    const double   *H  = &pp->diffusion[(size_t)pp->cell_matrix[i] * nen * nen];
-    const PetscInt *up = &pp->cell_u[i * nen], *pq = &pp->cell_p[i * nen];
-    double          pe[fem::kMaxCellNodes];
-    for (PetscInt r = 0; r < nen; ++r) pe[r] = PetscRealPart(pl[pq[r]]);
-    for (PetscInt b = 0; b < nen; ++b)
-      for (PetscInt j = 0; j < dim; ++j) {
-        double s = 0;
-        for (PetscInt r = 0; r < nen; ++r) s += Q[r * nd + b * dim + j] * pe[r];
-        f[up[b] + j] += s;
-      }
-    for (PetscInt r = 0; r < nen; ++r) {
-      double s = 0;
-      for (PetscInt b = 0; b < nen; ++b) s += H[r * nen + b] * pe[b];
-      q[pq[r]] += s;
-    }
-  }
+  couplingTransposeAndDiffusion(*pp, pl, f, q);
   PetscCall(VecRestoreArrayRead(pp->p_local, &pl));
   PetscCall(VecRestoreArray(pp->q_local, &q));
   PetscCall(VecRestoreArray(f_local, &f));
@@ -440,10 +478,10 @@ std::vector<std::string> PorePressureReport(const PorePressure *pp, const std::v
 }
 
 PetscErrorCode PorePressureEnergy(PorePressure *pp, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e) {
-  PetscScalar pSp, pHp, pHq, pq;
-  Vec         Sp;
   PetscFunctionBeginUser;
-  double sums[2] = {0, 0}; // v_{n+1/2} . f_pore, v_n . f_pore on held dofs
+  // Local sums, reduced once: 0 v_{n+1/2} . f_pore, 1 v_n . f_pore on held dofs, 2 p S p,
+  // 3 p . H p_n, 4 p . H p_{n-1}, 5 p . q.
+  double s[6] = {0, 0, 0, 0, 0, 0};
   {
     PetscInt           n;
     const PetscScalar *va, *aa, *fp, *mask;
@@ -453,29 +491,42 @@ PetscErrorCode PorePressureEnergy(PorePressure *pp, PetscReal h, Vec v, Vec a, V
     PetscCall(VecGetArrayRead(f_pore, &fp));
     PetscCall(VecGetArrayRead(free_mask, &mask));
     for (PetscInt k = 0; k < n; ++k) {
-      sums[0] += PetscRealPart((va[k] + 0.5 * h * aa[k]) * fp[k]);
-      sums[1] += PetscRealPart((1.0 - mask[k]) * va[k] * fp[k]);
+      s[0] += PetscRealPart((va[k] + 0.5 * h * aa[k]) * fp[k]);
+      s[1] += PetscRealPart((1.0 - mask[k]) * va[k] * fp[k]);
     }
     PetscCall(VecRestoreArrayRead(free_mask, &mask));
     PetscCall(VecRestoreArrayRead(f_pore, &fp));
     PetscCall(VecRestoreArrayRead(a, &aa));
     PetscCall(VecRestoreArrayRead(v, &va));
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)v)));
   }
-  const double vf = sums[0];
-  e->held_power   = sums[1];
-  PetscCall(VecDuplicate(pp->p, &Sp));
-  PetscCall(VecPointwiseMult(Sp, pp->storage, pp->p));
-  PetscCall(VecDot(pp->p, Sp, &pSp));
-  PetscCall(VecDestroy(&Sp));
-  PetscCall(VecDot(pp->p, pp->Hp, &pHp));
-  PetscCall(VecDot(pp->p, pp->Hp_previous, &pHq));
-  PetscCall(VecDot(pp->p, pp->inflow, &pq));
+  {
+    PetscInt           n;
+    const PetscScalar *p, *S, *hp, *hq, *q;
+    PetscCall(VecGetLocalSize(pp->p, &n));
+    PetscCall(VecGetArrayRead(pp->p, &p));
+    PetscCall(VecGetArrayRead(pp->storage, &S));
+    PetscCall(VecGetArrayRead(pp->Hp, &hp));
+    PetscCall(VecGetArrayRead(pp->Hp_previous, &hq));
+    PetscCall(VecGetArrayRead(pp->inflow, &q));
+    for (PetscInt k = 0; k < n; ++k) {
+      s[2] += PetscRealPart(p[k] * S[k] * p[k]);
+      s[3] += PetscRealPart(p[k] * hp[k]);
+      s[4] += PetscRealPart(p[k] * hq[k]);
+      s[5] += PetscRealPart(p[k] * q[k]);
+    }
+    PetscCall(VecRestoreArrayRead(pp->inflow, &q));
+    PetscCall(VecRestoreArrayRead(pp->Hp_previous, &hq));
+    PetscCall(VecRestoreArrayRead(pp->Hp, &hp));
+    PetscCall(VecRestoreArrayRead(pp->storage, &S));
+    PetscCall(VecRestoreArrayRead(pp->p, &p));
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 6, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)v)));
   // S p_{n+1} = S p_n - h alpha Q v_{n+1/2} - h (H p_n - q) on free nodes, p = 0 on the others,
   // and p_n . alpha Q v = v . alpha Q^T p_n = v . f_pore.
-  e->storage = 0.5 * PetscRealPart(pSp - h * vf - h * pHp + h * pq);
-  e->darcy   = 0.5 * h * PetscRealPart(pHp + pHq);
-  e->inflow  = h * PetscRealPart(pq);
+  e->storage    = 0.5 * (s[2] - h * s[0] - h * s[3] + h * s[5]);
+  e->darcy      = 0.5 * h * (s[3] + s[4]);
+  e->inflow     = h * s[5];
+  e->held_power = s[1];
   PetscFunctionReturn(0);
 }
 
