@@ -23,7 +23,7 @@ for k in $(seq 1 "$REPEATS"); do
   for case in dry wet; do
     sat=""; [ $case = wet ] && sat="$WET 0"
     "$SW" -mesh_box_faces "$N,$N" -mesh_box_upper 100,100 $SOIL $sat -output_dir "$WORK/2d_$case" > "$WORK/2d_${case}_$k.log"
-    "$SW" -mesh_box_faces "$N3,$N3,$N3" -mesh_box_upper 100,100,100 $SOIL $sat -output_dir "$WORK/3d_$case" > "$WORK/3d_${case}_$k.log"
+    "$SW" -mesh_dim 3 -mesh_box_faces "$N3,$N3,$N3" -mesh_box_upper 100,100,100 $SOIL $sat -output_dir "$WORK/3d_$case" > "$WORK/3d_${case}_$k.log"
     logs+=("2d_$case $WORK/2d_${case}_$k.log" "3d_$case $WORK/3d_${case}_$k.log")
   done
 done
