@@ -88,12 +88,13 @@ def pulse(a):
     lo = read_csv(f"{a.dir}/stations/{a.lower}.csv")
     up = read_csv(f"{a.dir}/stations/{a.upper}.csv")
     speed_want = mat["vu"] if a.limit == "undrained" else a.vp
-    c = a.distance / delay(lo["t"], lo["v_y"], up["v_y"])
+    vname = "v_" + a.component
+    c = a.distance / delay(lo["t"], lo[vname], up[vname])
     err = abs(c - speed_want) / speed_want
     ok = err <= a.speed_tol
     print(f"pulse: speed {c:.6g} m/s, {a.limit} speed {speed_want:.6g} m/s (undrained {mat['vu']:.6g}, drained {a.vp:.6g}), relative error {err:.2e} (bound {a.speed_tol:.0e})")
     if a.limit == "undrained":
-        v, p = up["v_y"], up["p"]
+        v, p = up[vname], up["p"]
         big = np.abs(v) > 0.2 * np.max(np.abs(v))
         ratio = np.sum(p[big] * v[big]) / np.sum(v[big] ** 2) / (a.rho * mat["vu"])
         err = abs(ratio - mat["gamma"]) / mat["gamma"]
@@ -101,7 +102,7 @@ def pulse(a):
         print(f"pulse: p / (rho c v) {ratio:.6f}, loading efficiency {mat['gamma']:.6f}, relative error {err:.2e} (bound {a.gamma_tol:.0e})")
     if a.late_after is not None:
         # After the pulse has left through the top, anything at the upper station came back.
-        late = np.max(np.abs(up["v_y"][up["t"] > a.late_after])) / np.max(np.abs(up["v_y"]))
+        late = np.max(np.abs(up[vname][up["t"] > a.late_after])) / np.max(np.abs(up[vname]))
         ok = ok and late <= a.late_max
         print(f"pulse: motion after t = {a.late_after} s {late:.2e} of the peak (bound {a.late_max:.0e})")
     return 0 if ok else 1
@@ -168,6 +169,7 @@ def main():
     u.add_argument("--upper", required=True)
     u.add_argument("--distance", type=float, required=True)
     u.add_argument("--limit", choices=("undrained", "drained"), required=True)
+    u.add_argument("--component", default="y", help="the vertical axis: y in 2D, z in 3D")
     u.add_argument("--speed-tol", type=float, default=0.01)
     u.add_argument("--gamma-tol", type=float, default=0.02)
     u.add_argument("--late-after", type=float, help="time after which the pulse has left the column [s]")
