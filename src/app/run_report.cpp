@@ -127,7 +127,7 @@ PetscErrorCode ReportSetup(const model::Elastodynamics &model, const model::Stab
   for (const std::string &line : model::AttenuationReport(model.attenuation, model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   PetscCall(reportInterfaces(model));
   if (model.pore)
-    for (const std::string &line : model::PorePressureReport(model.pore, model.materials, limit.dt_drained, limit.dt_bulk, limit.dt_limit)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+    for (const std::string &line : model::PorePressureReport(model.pore, model.materials, limit.dt_drained, limit.dt_bulk, limit.dt_limit, dt)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   for (const std::string &line : stations.ambiguities()) PetscCall(PetscPrintf(comm, "  %s\n", line.c_str()));
   PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", limit.dt_limit, limit.governing.c_str(), limit.dt_cfl));
   // dt_bulk, not dt_limit: the free-field columns or the pore-pressure diffusion may set the limit lower without any interface.

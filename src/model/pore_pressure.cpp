@@ -132,20 +132,29 @@ void addCouplingTimesU(size_t ncell, const PetscInt *matrix, const PetscInt *cel
   }
 }
 
-// f_bj += sum_a (alpha Q)_a,bj p_a (the skeleton force) and h_a += sum_b (kappa H)_ab p_b.
+// f_bj += sum_a (alpha Q)_a,bj p_a: the skeleton force.
 template <int NEN, int DIM>
-void addCouplingTransposeAndDiffusion(size_t ncell, const PetscInt *matrix, const PetscInt *cell_u, const PetscInt *cell_p, const double *coupling,
-                                      const double *diffusion, const PetscScalar *p, PetscScalar *f, PetscScalar *h) {
+void addCouplingTranspose(size_t ncell, const PetscInt *matrix, const PetscInt *cell_u, const PetscInt *cell_p, const double *coupling, const PetscScalar *p,
+                          PetscScalar *f) {
   constexpr int N = NEN * DIM;
   for (size_t i = 0; i < ncell; ++i) {
     const double *__restrict Q = coupling + (size_t)matrix[i] * NEN * N;
-    const double *__restrict H = diffusion + (size_t)matrix[i] * NEN * NEN;
     double pe[NEN], fe[N] = {};
     for (int r = 0; r < NEN; ++r) pe[r] = PetscRealPart(p[cell_p[i * NEN + r]]);
     for (int r = 0; r < NEN; ++r)
       for (int k = 0; k < N; ++k) fe[k] += Q[r * N + k] * pe[r];
     for (int b = 0; b < NEN; ++b)
       for (int j = 0; j < DIM; ++j) f[cell_u[i * NEN + b] + j] += fe[b * DIM + j];
+  }
+}
+
+// h_a += sum_b (kappa H)_ab p_b.
+template <int NEN>
+void addDiffusion(size_t ncell, const PetscInt *matrix, const PetscInt *cell_p, const double *diffusion, const PetscScalar *p, PetscScalar *h) {
+  for (size_t i = 0; i < ncell; ++i) {
+    const double *__restrict H = diffusion + (size_t)matrix[i] * NEN * NEN;
+    double pe[NEN];
+    for (int r = 0; r < NEN; ++r) pe[r] = PetscRealPart(p[cell_p[i * NEN + r]]);
     for (int r = 0; r < NEN; ++r) {
       double s = 0;
       for (int b = 0; b < NEN; ++b) s += H[r * NEN + b] * pe[b];
@@ -166,16 +175,68 @@ void couplingTimesU(const PorePressure &pp, const PetscScalar *u, PetscScalar *q
   }
 }
 
-void couplingTransposeAndDiffusion(const PorePressure &pp, const PetscScalar *p, PetscScalar *f, PetscScalar *h) {
+void couplingTranspose(const PorePressure &pp, const PetscScalar *p, PetscScalar *f) {
   const size_t n = pp.cells.size();
   const PetscInt *m = pp.cell_matrix.data(), *cu = pp.cell_u.data(), *cp = pp.cell_p.data();
   switch (pp.nen * pp.dim) {
-  case 6: addCouplingTransposeAndDiffusion<3, 2>(n, m, cu, cp, pp.coupling.data(), pp.diffusion.data(), p, f, h); break;
-  case 8: addCouplingTransposeAndDiffusion<4, 2>(n, m, cu, cp, pp.coupling.data(), pp.diffusion.data(), p, f, h); break;
-  case 12: addCouplingTransposeAndDiffusion<4, 3>(n, m, cu, cp, pp.coupling.data(), pp.diffusion.data(), p, f, h); break;
-  case 24: addCouplingTransposeAndDiffusion<8, 3>(n, m, cu, cp, pp.coupling.data(), pp.diffusion.data(), p, f, h); break;
+  case 6: addCouplingTranspose<3, 2>(n, m, cu, cp, pp.coupling.data(), p, f); break;
+  case 8: addCouplingTranspose<4, 2>(n, m, cu, cp, pp.coupling.data(), p, f); break;
+  case 12: addCouplingTranspose<4, 3>(n, m, cu, cp, pp.coupling.data(), p, f); break;
+  case 24: addCouplingTranspose<8, 3>(n, m, cu, cp, pp.coupling.data(), p, f); break;
   default: break;
   }
+}
+
+void diffusionTimes(const PorePressure &pp, const PetscScalar *p, PetscScalar *h) {
+  const size_t n = pp.cells.size();
+  const PetscInt *m = pp.cell_matrix.data(), *cp = pp.cell_p.data();
+  switch (pp.nen) {
+  case 3: addDiffusion<3>(n, m, cp, pp.diffusion.data(), p, h); break;
+  case 4: addDiffusion<4>(n, m, cp, pp.diffusion.data(), p, h); break;
+  case 8: addDiffusion<8>(n, m, cp, pp.diffusion.data(), p, h); break;
+  default: break;
+  }
+}
+
+// The diffusion part of the step of size h from the committed p_n (cached until the commit):
+// p_star and Hbar, with S (p_star - p_n) = -h Hbar on free nodes.
+PetscErrorCode diffuse(PorePressure *pp, double h) {
+  PetscFunctionBeginUser;
+  // The ledger asks with the TS's step, the RHS with t_{n+1} - t_n: equal up to round-off.
+  if (pp->diffused_h >= 0 && std::fabs(pp->diffused_h - h) <= 1e-12 * h) PetscFunctionReturn(0);
+  pp->substeps = PorePressureSubsteps(pp, h);
+  const double sub = h / (double)pp->substeps;
+  PetscCall(VecCopy(pp->p, pp->p_star));
+  PetscCall(VecZeroEntries(pp->Hbar));
+  for (PetscInt k = 0; k < pp->substeps && h > 0; ++k) {
+    PetscScalar       *q, *ps, *hb;
+    const PetscScalar *pl, *hl, *inv;
+    PetscCall(DMGlobalToLocal(pp->pdm, pp->p_star, INSERT_VALUES, pp->p_local));
+    PetscCall(VecZeroEntries(pp->q_local));
+    PetscCall(VecGetArray(pp->q_local, &q));
+    PetscCall(VecGetArrayRead(pp->p_local, &pl));
+    diffusionTimes(*pp, pl, q);
+    PetscCall(VecRestoreArrayRead(pp->p_local, &pl));
+    PetscCall(VecRestoreArray(pp->q_local, &q));
+    // H p^k summed over ranks into Hbar_trial (a free work vector here), then the sub-step.
+    PetscCall(localToGlobalSum(pp->pdm, pp->q_local, pp->Hbar_trial));
+    PetscInt n;
+    PetscCall(VecGetLocalSize(pp->p_star, &n));
+    PetscCall(VecGetArray(pp->p_star, &ps));
+    PetscCall(VecGetArray(pp->Hbar, &hb));
+    PetscCall(VecGetArrayRead(pp->Hbar_trial, &hl));
+    PetscCall(VecGetArrayRead(pp->inv_storage, &inv));
+    for (PetscInt i = 0; i < n; ++i) {
+      hb[i] += hl[i] / (double)pp->substeps;
+      ps[i] -= sub * inv[i] * hl[i];
+    }
+    PetscCall(VecRestoreArrayRead(pp->inv_storage, &inv));
+    PetscCall(VecRestoreArrayRead(pp->Hbar_trial, &hl));
+    PetscCall(VecRestoreArray(pp->Hbar, &hb));
+    PetscCall(VecRestoreArray(pp->p_star, &ps));
+  }
+  pp->diffused_h = h;
+  PetscFunctionReturn(0);
 }
 
 // Element matrices per distinct bulk matrix, the cell lists and their node offsets.
@@ -223,7 +284,7 @@ PetscErrorCode assembleNodal(DM dm, const std::vector<std::string> &boundaries, 
   PetscFunctionBeginUser;
   const PetscInt nen = pp->nen;
   PetscCall(DMCreateGlobalVector(pp->pdm, &pp->storage));
-  for (Vec *v : {&pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->Hp, &pp->Hp_trial, &pp->Hp_previous}) {
+  for (Vec *v : {&pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous}) {
     PetscCall(VecDuplicate(pp->storage, v));
     PetscCall(VecZeroEntries(*v));
   }
@@ -302,6 +363,12 @@ PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const st
   PetscFunctionBeginUser;
   auto *pp    = new PorePressure();
   pp->regions = std::move(regions);
+  PetscBool subcycle = PETSC_TRUE;
+  PetscOptionsBegin(PetscObjectComm((PetscObject)dm), "pore_pressure_", "Pore pressure of saturated regions", "slipwave");
+  PetscCall(PetscOptionsBool("-subcycle", "sub-step the explicit pore-pressure diffusion within each step instead of lowering the step to its limit", "PorePressureCreate",
+                             subcycle, &subcycle, nullptr));
+  PetscOptionsEnd();
+  pp->subcycle = subcycle;
   PetscCall(NodeFieldCreateDM(dm, 1, &pp->pdm));
   PetscCall(buildCells(pp->pdm, bulk, pp));
   PetscCall(assembleNodal(dm, boundaries, pp));
@@ -313,7 +380,7 @@ PetscErrorCode PorePressureDestroy(PorePressure **pore) {
   PetscFunctionBeginUser;
   if (!*pore) PetscFunctionReturn(0);
   PorePressure *pp = *pore;
-  for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->Hp, &pp->Hp_trial, &pp->Hp_previous,
+  for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous,
                  &pp->p_local, &pp->q_local})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&pp->pdm));
@@ -337,64 +404,62 @@ PetscErrorCode PorePressureTrial(PorePressure *pp, DM dm, const PetscScalar *u, 
     pp->t       = t;
     pp->started = true;
   }
-  // p_{n+1} = p_n - S^{-1} [alpha Q (u_{n+1} - u_n) + h (H p_n - q)] on free nodes; 0 elsewhere.
+  // p_{n+1} = p* - S^{-1} [alpha Q (u_{n+1} - u_n) - h q] on free nodes; 0 elsewhere.
+  const double h = t - pp->t;
+  PetscCall(diffuse(pp, h));
+  PetscCall(VecCopy(pp->Hbar, pp->Hbar_trial));
   {
-    const double       h = t - pp->t;
     PetscInt           n;
     PetscScalar       *pt;
-    const PetscScalar *p, *qt, *qc, *hp, *in, *inv, *mask;
+    const PetscScalar *ps, *qt, *qc, *in, *inv, *mask;
     PetscCall(VecGetLocalSize(pp->p, &n));
     PetscCall(VecGetArray(pp->p_trial, &pt));
-    PetscCall(VecGetArrayRead(pp->p, &p));
+    PetscCall(VecGetArrayRead(pp->p_star, &ps));
     PetscCall(VecGetArrayRead(pp->Qu_trial, &qt));
     PetscCall(VecGetArrayRead(pp->Qu, &qc));
-    PetscCall(VecGetArrayRead(pp->Hp, &hp));
     PetscCall(VecGetArrayRead(pp->inflow, &in));
     PetscCall(VecGetArrayRead(pp->inv_storage, &inv));
     PetscCall(VecGetArrayRead(pp->free_mask, &mask));
-    for (PetscInt i = 0; i < n; ++i) pt[i] = mask[i] * (p[i] - inv[i] * ((qt[i] - qc[i]) + h * (hp[i] - in[i])));
+    for (PetscInt i = 0; i < n; ++i) pt[i] = mask[i] * (ps[i] - inv[i] * ((qt[i] - qc[i]) - h * in[i]));
     PetscCall(VecRestoreArrayRead(pp->free_mask, &mask));
     PetscCall(VecRestoreArrayRead(pp->inv_storage, &inv));
     PetscCall(VecRestoreArrayRead(pp->inflow, &in));
-    PetscCall(VecRestoreArrayRead(pp->Hp, &hp));
     PetscCall(VecRestoreArrayRead(pp->Qu, &qc));
     PetscCall(VecRestoreArrayRead(pp->Qu_trial, &qt));
-    PetscCall(VecRestoreArrayRead(pp->p, &p));
+    PetscCall(VecRestoreArrayRead(pp->p_star, &ps));
     PetscCall(VecRestoreArray(pp->p_trial, &pt));
   }
   pp->t_trial = t;
-  // f_pore = alpha Q^T p and H p at the trial pressure.
+  // f_pore = alpha Q^T p at the trial pressure.
   Vec                f_local;
   PetscScalar       *f;
   const PetscScalar *pl;
   PetscCall(DMGlobalToLocal(pp->pdm, pp->p_trial, INSERT_VALUES, pp->p_local));
   PetscCall(DMGetLocalVector(dm, &f_local));
   PetscCall(VecZeroEntries(f_local));
-  PetscCall(VecZeroEntries(pp->q_local));
   PetscCall(VecGetArray(f_local, &f));
-  PetscCall(VecGetArray(pp->q_local, &q));
   PetscCall(VecGetArrayRead(pp->p_local, &pl));
-  couplingTransposeAndDiffusion(*pp, pl, f, q);
+  couplingTranspose(*pp, pl, f);
   PetscCall(VecRestoreArrayRead(pp->p_local, &pl));
-  PetscCall(VecRestoreArray(pp->q_local, &q));
   PetscCall(VecRestoreArray(f_local, &f));
   PetscCall(VecZeroEntries(f_pore));
   PetscCall(DMLocalToGlobal(dm, f_local, ADD_VALUES, f_pore));
   PetscCall(DMRestoreLocalVector(dm, &f_local));
-  PetscCall(localToGlobalSum(pp->pdm, pp->q_local, pp->Hp_trial));
   PetscFunctionReturn(0);
+}
+
+PetscInt PorePressureSubsteps(const PorePressure *pp, double h) {
+  // The sub-steps take the bulk's default fraction (0.9) of the diffusion limit.
+  return pp->subcycle && h > 0 ? std::max<PetscInt>(1, (PetscInt)std::ceil(h / (0.9 * pp->dt_diffusion))) : 1;
 }
 
 void PorePressureCommit(PorePressure *pp) {
   if (!pp) return;
   std::swap(pp->p, pp->p_trial);
   std::swap(pp->Qu, pp->Qu_trial);
-  // H p_{n-1} <- H p_n <- H p_{n+1}.
-  Vec oldest      = pp->Hp_previous;
-  pp->Hp_previous = pp->Hp;
-  pp->Hp          = pp->Hp_trial;
-  pp->Hp_trial    = oldest;
-  pp->t           = pp->t_trial;
+  std::swap(pp->Hbar_previous, pp->Hbar_trial);
+  pp->t          = pp->t_trial;
+  pp->diffused_h = -1;
 }
 
 PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pp, DM dm, Vec rows) {
@@ -440,7 +505,7 @@ PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pp, DM dm, Vec rows) {
 }
 
 std::vector<std::string> PorePressureReport(const PorePressure *pp, const std::vector<RegionMaterialInfo> &materials, double dt_drained, double dt_undrained,
-                                            double dt_limit) {
+                                            double dt_limit, double dt) {
   std::vector<std::string> lines;
   char                     buf[512];
   for (size_t i = 0; i < materials.size(); ++i) {
@@ -462,15 +527,19 @@ std::vector<std::string> PorePressureReport(const PorePressure *pp, const std::v
   };
   std::snprintf(buf, sizeof buf, "  pore fluid boundaries: drained %s; prescribed inflow %s; all others no flow", names(pp->drained).c_str(), names(pp->flux).c_str());
   lines.push_back(buf);
+  const bool governs = !pp->subcycle && pp->dt_diffusion < dt_undrained;
   std::snprintf(buf, sizeof buf,
                 "  pore pressure step cost: drained wave %.4e s, undrained wave %.4e s (%.2fx the drained), diffusion %.4e s; the %s governs (limit %.4e s, %.2fx the drained)",
-                dt_drained, dt_undrained, dt_drained / dt_undrained, pp->dt_diffusion, pp->dt_diffusion < dt_undrained ? "diffusion" : "undrained wave", dt_limit,
-                dt_drained / dt_limit);
+                dt_drained, dt_undrained, dt_drained / dt_undrained, pp->dt_diffusion, governs ? "diffusion" : "undrained wave", dt_limit, dt_drained / dt_limit);
   lines.push_back(buf);
-  if (pp->dt_diffusion < 0.1 * dt_undrained) {
+  const PetscInt substeps = PorePressureSubsteps(pp, dt);
+  if (substeps > 1) {
+    std::snprintf(buf, sizeof buf, "  pore-pressure diffusion sub-cycled: %" PetscInt_FMT " sub-steps per step (-pore_pressure_subcycle)", substeps);
+    lines.push_back(buf);
+  }
+  if (governs && pp->dt_diffusion < 0.1 * dt_undrained) {
     std::snprintf(buf, sizeof buf,
-                  "  warning: the explicit pore-pressure diffusion forces a step %.3gx smaller than the undrained wave's; lower -material_<r>_hydraulic_conductivity "
-                  "or coarsen the mesh (the limit scales with h^2 / (k M))",
+                  "  warning: the explicit pore-pressure diffusion forces a step %.3gx smaller than the undrained wave's; -pore_pressure_subcycle sub-steps it instead",
                   dt_undrained / pp->dt_diffusion);
     lines.push_back(buf);
   }
@@ -480,7 +549,8 @@ std::vector<std::string> PorePressureReport(const PorePressure *pp, const std::v
 PetscErrorCode PorePressureEnergy(PorePressure *pp, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e) {
   PetscFunctionBeginUser;
   // Local sums, reduced once: 0 v_{n+1/2} . f_pore, 1 v_n . f_pore on held dofs, 2 p S p,
-  // 3 p . H p_n, 4 p . H p_{n-1}, 5 p . q.
+  // 3 p . Hbar_n, 4 p . Hbar_{n-1}, 5 p . q.
+  PetscCall(diffuse(pp, h)); // Hbar_n of the step about to be taken
   double s[6] = {0, 0, 0, 0, 0, 0};
   {
     PetscInt           n;
@@ -505,8 +575,8 @@ PetscErrorCode PorePressureEnergy(PorePressure *pp, PetscReal h, Vec v, Vec a, V
     PetscCall(VecGetLocalSize(pp->p, &n));
     PetscCall(VecGetArrayRead(pp->p, &p));
     PetscCall(VecGetArrayRead(pp->storage, &S));
-    PetscCall(VecGetArrayRead(pp->Hp, &hp));
-    PetscCall(VecGetArrayRead(pp->Hp_previous, &hq));
+    PetscCall(VecGetArrayRead(pp->Hbar, &hp));
+    PetscCall(VecGetArrayRead(pp->Hbar_previous, &hq));
     PetscCall(VecGetArrayRead(pp->inflow, &q));
     for (PetscInt k = 0; k < n; ++k) {
       s[2] += PetscRealPart(p[k] * S[k] * p[k]);
@@ -515,14 +585,14 @@ PetscErrorCode PorePressureEnergy(PorePressure *pp, PetscReal h, Vec v, Vec a, V
       s[5] += PetscRealPart(p[k] * q[k]);
     }
     PetscCall(VecRestoreArrayRead(pp->inflow, &q));
-    PetscCall(VecRestoreArrayRead(pp->Hp_previous, &hq));
-    PetscCall(VecRestoreArrayRead(pp->Hp, &hp));
+    PetscCall(VecRestoreArrayRead(pp->Hbar_previous, &hq));
+    PetscCall(VecRestoreArrayRead(pp->Hbar, &hp));
     PetscCall(VecRestoreArrayRead(pp->storage, &S));
     PetscCall(VecRestoreArrayRead(pp->p, &p));
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 6, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)v)));
-  // S p_{n+1} = S p_n - h alpha Q v_{n+1/2} - h (H p_n - q) on free nodes, p = 0 on the others,
-  // and p_n . alpha Q v = v . alpha Q^T p_n = v . f_pore.
+  // S p_{n+1} = S p_n - h alpha Q v_{n+1/2} - h (Hbar_n - q) on free nodes, p = 0 on the
+  // others, and p_n . alpha Q v = v . alpha Q^T p_n = v . f_pore.
   e->storage    = 0.5 * (s[2] - h * s[0] - h * s[3] + h * s[5]);
   e->darcy      = 0.5 * h * (s[3] + s[4]);
   e->inflow     = h * s[5];

@@ -124,10 +124,12 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   step->governing = std::string(interfaces_matter ? "bulk stiffness and interface penalty springs" : "bulk stiffness") +
                     (m->rayleigh.beta > 0 ? " with stiffness-proportional damping" : "") + (dashpots ? " and contact dashpots" : "") + " (Gershgorin bound)";
   if (free_field_governs) step->governing = "free-field column (Gershgorin bound)";
+  // Saturated regions: the pore-pressure diffusion limits the step unless it is sub-stepped.
   if (m->pore) {
-    step->governing = (m->pore->dt_diffusion < step->dt_limit ? std::string("pore-pressure diffusion (explicit, Gershgorin bound on S^-1 H)") : "undrained " + step->governing);
-    step->dt_diffusion = m->pore->dt_diffusion;
-    step->dt_limit     = std::min(step->dt_limit, step->dt_diffusion);
+    step->dt_diffusion    = m->pore->dt_diffusion;
+    const bool diffusion  = !m->pore->subcycle && step->dt_diffusion < step->dt_limit;
+    step->governing       = diffusion ? std::string("pore-pressure diffusion (explicit, Gershgorin bound on S^-1 H)") : "undrained " + step->governing;
+    if (!m->pore->subcycle) step->dt_limit = std::min(step->dt_limit, step->dt_diffusion);
   }
   PetscFunctionReturn(0);
 }

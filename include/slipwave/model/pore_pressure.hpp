@@ -5,11 +5,16 @@
 // never creates this object.
 //
 // One step, with S the lumped storage (integral of N_a / M), Q the coupling
-// (integral of N_a div), H the Darcy matrix (integral of kappa grad N_a . grad N_b):
-//   p_{n+1} = p_n - S^{-1} [ alpha Q (u_{n+1} - u_n) + h (H p_n - q) ]  on free pressure nodes,
+// (integral of N_a div), H the Darcy matrix (integral of kappa grad N_a . grad N_b), split:
+//   p*      = p_n after m explicit diffusion sub-steps S (p^{k+1} - p^k) = -(h/m) H p^k
+//             (m = 1, or with -pore_pressure_subcycle enough that h/m is within the
+//             diffusion limit), so S (p* - p_n) = -h Hbar, Hbar the mean of H p^k;
+//   p_{n+1} = p* - S^{-1} [ alpha Q (u_{n+1} - u_n) - h q ]            on free pressure nodes,
 //   f_pore  = alpha Q^T p                                             (force on the skeleton),
-// so total stress = effective stress - alpha p I. The update is a trial state of the RHS
-// (it needs u_{n+1}, which the RHS receives) that PorePressureCommit accepts.
+// so total stress = effective stress - alpha p I. p* depends on p_n and h only: it is
+// computed once per step (cached for that h) by whichever needs it first, the RHS or the
+// energy ledger. p_{n+1} is a trial state of the RHS (it needs u_{n+1}, which the RHS
+// receives) that PorePressureCommit accepts.
 //
 // Options per region r (prefix -material_r_): saturated, porosity, fluid_bulk_modulus,
 // grain_bulk_modulus, hydraulic_conductivity, fluid_density. Per boundary b: -bc_b_fluid
@@ -46,11 +51,15 @@ struct PorePressure {
   Vec inflow = nullptr;                          // q: prescribed boundary inflow per node [m^3/s]
   Vec p = nullptr, p_trial = nullptr;            // committed p_n and the RHS's trial p_{n+1} [Pa]
   Vec Qu = nullptr, Qu_trial = nullptr;          // alpha Q u at the same two states [m^3]
-  Vec Hp = nullptr, Hp_trial = nullptr, Hp_previous = nullptr; // H p at p_n, p_trial, p_{n-1} [m^3/s]
+  Vec p_star = nullptr, Hbar = nullptr;          // the diffusion part of the step from p_n: p*, mean H p^k [m^3/s]
+  Vec Hbar_trial = nullptr, Hbar_previous = nullptr; // Hbar the trial used; that of the step before
   Vec p_local = nullptr, q_local = nullptr;
   double t = 0, t_trial = 0;
   bool   started = false;                        // Qu holds the initial state
+  double diffused_h = -1;                        // the step p_star and Hbar are for; < 0: none since the commit
   double dt_diffusion = 1e300;                   // explicit diffusion limit [s]
+  bool   subcycle = true;                        // -pore_pressure_subcycle: sub-steps instead of a smaller step
+  PetscInt substeps = 1;                         // sub-steps of the last diffusion part
   double vp_undrained_max = 0;                   // [m/s], for the report
   std::vector<std::string> drained, flux;        // boundary names, for the report
 };
@@ -58,7 +67,8 @@ struct PorePressure {
 // Reads the per-region options after MaterialsRead; sets vp_undrained of saturated regions
 // (the absorbing boundaries match it). *any: whether some region is saturated.
 PetscErrorCode PorePressureReadMaterials(MPI_Comm comm, std::vector<RegionMaterialInfo> *materials, std::vector<SaturatedRegion> *regions, bool *any);
-// Builds the layout, element matrices, storage, fluid boundary conditions and diffusion limit.
+// Builds the layout, element matrices, storage, fluid boundary conditions and diffusion
+// limit; reads -pore_pressure_subcycle.
 PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const std::vector<std::string> &boundaries, std::vector<SaturatedRegion> regions,
                                   PorePressure **pore);
 PetscErrorCode PorePressureDestroy(PorePressure **pore);
@@ -74,11 +84,14 @@ PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pore, DM dm, Vec rows)
 // pore pressure costs in step: dt_drained (bulk without the undrained stiffening),
 // dt_undrained (with it), dt_diffusion, and the run's limit.
 std::vector<std::string> PorePressureReport(const PorePressure *pore, const std::vector<RegionMaterialInfo> &materials, double dt_drained, double dt_undrained,
-                                            double dt_limit);
+                                            double dt_limit, double dt);
+
+// Sub-steps per step of size h: 1 without sub-cycling (the step is then within the limit).
+PetscInt PorePressureSubsteps(const PorePressure *pore, double h);
 
 // The fluid's terms of the energy budget at t_n (docs/saturated-soil.md): the shadow storage
 // energy F_{n+1/2} = ½ p_n S p_{n+1}, and this step's Darcy dissipation
-// ½ h p_n H (p_n + p_{n-1}) and work of the prescribed inflow h p_n q.
+// ½ h p_n (Hbar_n + Hbar_{n-1}) and work of the prescribed inflow h p_n q.
 // held_power = v_n . f_pore on held dofs: the part of the supports' reaction power that the
 // pore pressure supplies, which the ledger takes out of the reactions (it is internal work).
 struct PoreEnergy {
