@@ -132,34 +132,46 @@ void addCouplingTimesU(size_t ncell, const PetscInt *matrix, const PetscInt *cel
   }
 }
 
-// f_bj += sum_a (alpha Q)_a,bj p_a: the skeleton force.
+// One cell's f_bj += sum_a (alpha Q)_a,bj p_a (the skeleton force) from its nodal p.
 template <int NEN, int DIM>
-void addCouplingTranspose(size_t ncell, const PetscInt *matrix, const PetscInt *cell_u, const PetscInt *cell_p, const double *coupling, const PetscScalar *p,
-                          PetscScalar *f) {
+inline void cellCouplingTranspose(const double *__restrict Q, const double *pe, const PetscInt *cell_u, PetscScalar *f) {
   constexpr int N = NEN * DIM;
-  for (size_t i = 0; i < ncell; ++i) {
-    const double *__restrict Q = coupling + (size_t)matrix[i] * NEN * N;
-    double pe[NEN], fe[N] = {};
-    for (int r = 0; r < NEN; ++r) pe[r] = PetscRealPart(p[cell_p[i * NEN + r]]);
-    for (int r = 0; r < NEN; ++r)
-      for (int k = 0; k < N; ++k) fe[k] += Q[r * N + k] * pe[r];
-    for (int b = 0; b < NEN; ++b)
-      for (int j = 0; j < DIM; ++j) f[cell_u[i * NEN + b] + j] += fe[b * DIM + j];
+  double        fe[N] = {};
+  for (int r = 0; r < NEN; ++r)
+    for (int k = 0; k < N; ++k) fe[k] += Q[r * N + k] * pe[r];
+  for (int b = 0; b < NEN; ++b)
+    for (int j = 0; j < DIM; ++j) f[cell_u[b] + j] += fe[b * DIM + j];
+}
+
+// One cell's h_a += sum_b (kappa H)_ab p_b.
+template <int NEN>
+inline void cellDiffusion(const double *__restrict H, const double *pe, const PetscInt *cell_p, PetscScalar *h) {
+  for (int r = 0; r < NEN; ++r) {
+    double s = 0;
+    for (int b = 0; b < NEN; ++b) s += H[r * NEN + b] * pe[b];
+    h[cell_p[r]] += s;
   }
 }
 
-// h_a += sum_b (kappa H)_ab p_b.
+// The force on the skeleton and H p from one gather of p (the pass of every step).
+template <int NEN, int DIM>
+void addCouplingTransposeAndDiffusion(size_t ncell, const PetscInt *matrix, const PetscInt *cell_u, const PetscInt *cell_p, const double *coupling,
+                                      const double *diffusion, const PetscScalar *p, PetscScalar *f, PetscScalar *h) {
+  for (size_t i = 0; i < ncell; ++i) {
+    double pe[NEN];
+    for (int r = 0; r < NEN; ++r) pe[r] = PetscRealPart(p[cell_p[i * NEN + r]]);
+    cellCouplingTranspose<NEN, DIM>(coupling + (size_t)matrix[i] * NEN * NEN * DIM, pe, cell_u + i * NEN, f);
+    cellDiffusion<NEN>(diffusion + (size_t)matrix[i] * NEN * NEN, pe, cell_p + i * NEN, h);
+  }
+}
+
+// H p alone (the diffusion sub-steps after the first).
 template <int NEN>
 void addDiffusion(size_t ncell, const PetscInt *matrix, const PetscInt *cell_p, const double *diffusion, const PetscScalar *p, PetscScalar *h) {
   for (size_t i = 0; i < ncell; ++i) {
-    const double *__restrict H = diffusion + (size_t)matrix[i] * NEN * NEN;
     double pe[NEN];
     for (int r = 0; r < NEN; ++r) pe[r] = PetscRealPart(p[cell_p[i * NEN + r]]);
-    for (int r = 0; r < NEN; ++r) {
-      double s = 0;
-      for (int b = 0; b < NEN; ++b) s += H[r * NEN + b] * pe[b];
-      h[cell_p[i * NEN + r]] += s;
-    }
+    cellDiffusion<NEN>(diffusion + (size_t)matrix[i] * NEN * NEN, pe, cell_p + i * NEN, h);
   }
 }
 
@@ -175,14 +187,15 @@ void couplingTimesU(const PorePressure &pp, const PetscScalar *u, PetscScalar *q
   }
 }
 
-void couplingTranspose(const PorePressure &pp, const PetscScalar *p, PetscScalar *f) {
+void couplingTransposeAndDiffusion(const PorePressure &pp, const PetscScalar *p, PetscScalar *f, PetscScalar *h) {
   const size_t n = pp.cells.size();
   const PetscInt *m = pp.cell_matrix.data(), *cu = pp.cell_u.data(), *cp = pp.cell_p.data();
+  const double   *Q = pp.coupling.data(), *H = pp.diffusion.data();
   switch (pp.nen * pp.dim) {
-  case 6: addCouplingTranspose<3, 2>(n, m, cu, cp, pp.coupling.data(), p, f); break;
-  case 8: addCouplingTranspose<4, 2>(n, m, cu, cp, pp.coupling.data(), p, f); break;
-  case 12: addCouplingTranspose<4, 3>(n, m, cu, cp, pp.coupling.data(), p, f); break;
-  case 24: addCouplingTranspose<8, 3>(n, m, cu, cp, pp.coupling.data(), p, f); break;
+  case 6: addCouplingTransposeAndDiffusion<3, 2>(n, m, cu, cp, Q, H, p, f, h); break;
+  case 8: addCouplingTransposeAndDiffusion<4, 2>(n, m, cu, cp, Q, H, p, f, h); break;
+  case 12: addCouplingTransposeAndDiffusion<4, 3>(n, m, cu, cp, Q, H, p, f, h); break;
+  case 24: addCouplingTransposeAndDiffusion<8, 3>(n, m, cu, cp, Q, H, p, f, h); break;
   default: break;
   }
 }
@@ -211,27 +224,32 @@ PetscErrorCode diffuse(PorePressure *pp, double h) {
   for (PetscInt k = 0; k < pp->substeps && h > 0; ++k) {
     PetscScalar       *q, *ps, *hb;
     const PetscScalar *pl, *hl, *inv;
-    PetscCall(DMGlobalToLocal(pp->pdm, pp->p_star, INSERT_VALUES, pp->p_local));
-    PetscCall(VecZeroEntries(pp->q_local));
-    PetscCall(VecGetArray(pp->q_local, &q));
-    PetscCall(VecGetArrayRead(pp->p_local, &pl));
-    diffusionTimes(*pp, pl, q);
-    PetscCall(VecRestoreArrayRead(pp->p_local, &pl));
-    PetscCall(VecRestoreArray(pp->q_local, &q));
-    // H p^k summed over ranks into Hbar_trial (a free work vector here), then the sub-step.
-    PetscCall(localToGlobalSum(pp->pdm, pp->q_local, pp->Hbar_trial));
+    // H p^k: for k = 0 the pass that formed the last force left H p_n; later ones are summed
+    // over ranks into Hbar_trial (a free work vector here).
+    Vec Hpk = pp->Hp;
+    if (k > 0) {
+      PetscCall(DMGlobalToLocal(pp->pdm, pp->p_star, INSERT_VALUES, pp->p_local));
+      PetscCall(VecZeroEntries(pp->q_local));
+      PetscCall(VecGetArray(pp->q_local, &q));
+      PetscCall(VecGetArrayRead(pp->p_local, &pl));
+      diffusionTimes(*pp, pl, q);
+      PetscCall(VecRestoreArrayRead(pp->p_local, &pl));
+      PetscCall(VecRestoreArray(pp->q_local, &q));
+      PetscCall(localToGlobalSum(pp->pdm, pp->q_local, pp->Hbar_trial));
+      Hpk = pp->Hbar_trial;
+    }
     PetscInt n;
     PetscCall(VecGetLocalSize(pp->p_star, &n));
     PetscCall(VecGetArray(pp->p_star, &ps));
     PetscCall(VecGetArray(pp->Hbar, &hb));
-    PetscCall(VecGetArrayRead(pp->Hbar_trial, &hl));
+    PetscCall(VecGetArrayRead(Hpk, &hl));
     PetscCall(VecGetArrayRead(pp->inv_storage, &inv));
     for (PetscInt i = 0; i < n; ++i) {
       hb[i] += hl[i] / (double)pp->substeps;
       ps[i] -= sub * inv[i] * hl[i];
     }
     PetscCall(VecRestoreArrayRead(pp->inv_storage, &inv));
-    PetscCall(VecRestoreArrayRead(pp->Hbar_trial, &hl));
+    PetscCall(VecRestoreArrayRead(Hpk, &hl));
     PetscCall(VecRestoreArray(pp->Hbar, &hb));
     PetscCall(VecRestoreArray(pp->p_star, &ps));
   }
@@ -284,7 +302,7 @@ PetscErrorCode assembleNodal(DM dm, const std::vector<std::string> &boundaries, 
   PetscFunctionBeginUser;
   const PetscInt nen = pp->nen;
   PetscCall(DMCreateGlobalVector(pp->pdm, &pp->storage));
-  for (Vec *v : {&pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous}) {
+  for (Vec *v : {&pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial}) {
     PetscCall(VecDuplicate(pp->storage, v));
     PetscCall(VecZeroEntries(*v));
   }
@@ -380,7 +398,7 @@ PetscErrorCode PorePressureDestroy(PorePressure **pore) {
   PetscFunctionBeginUser;
   if (!*pore) PetscFunctionReturn(0);
   PorePressure *pp = *pore;
-  for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous,
+  for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial,
                  &pp->p_local, &pp->q_local})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&pp->pdm));
@@ -430,21 +448,25 @@ PetscErrorCode PorePressureTrial(PorePressure *pp, DM dm, const PetscScalar *u, 
     PetscCall(VecRestoreArray(pp->p_trial, &pt));
   }
   pp->t_trial = t;
-  // f_pore = alpha Q^T p at the trial pressure.
+  // f_pore = alpha Q^T p and H p at the trial pressure (H p starts the next step's diffusion).
   Vec                f_local;
   PetscScalar       *f;
   const PetscScalar *pl;
   PetscCall(DMGlobalToLocal(pp->pdm, pp->p_trial, INSERT_VALUES, pp->p_local));
   PetscCall(DMGetLocalVector(dm, &f_local));
   PetscCall(VecZeroEntries(f_local));
+  PetscCall(VecZeroEntries(pp->q_local));
   PetscCall(VecGetArray(f_local, &f));
+  PetscCall(VecGetArray(pp->q_local, &q));
   PetscCall(VecGetArrayRead(pp->p_local, &pl));
-  couplingTranspose(*pp, pl, f);
+  couplingTransposeAndDiffusion(*pp, pl, f, q);
   PetscCall(VecRestoreArrayRead(pp->p_local, &pl));
+  PetscCall(VecRestoreArray(pp->q_local, &q));
   PetscCall(VecRestoreArray(f_local, &f));
   PetscCall(VecZeroEntries(f_pore));
   PetscCall(DMLocalToGlobal(dm, f_local, ADD_VALUES, f_pore));
   PetscCall(DMRestoreLocalVector(dm, &f_local));
+  PetscCall(localToGlobalSum(pp->pdm, pp->q_local, pp->Hp_trial));
   PetscFunctionReturn(0);
 }
 
@@ -458,6 +480,7 @@ void PorePressureCommit(PorePressure *pp) {
   std::swap(pp->p, pp->p_trial);
   std::swap(pp->Qu, pp->Qu_trial);
   std::swap(pp->Hbar_previous, pp->Hbar_trial);
+  std::swap(pp->Hp, pp->Hp_trial);
   pp->t          = pp->t_trial;
   pp->diffused_h = -1;
 }

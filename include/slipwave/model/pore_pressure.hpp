@@ -53,6 +53,7 @@ struct PorePressure {
   Vec Qu = nullptr, Qu_trial = nullptr;          // alpha Q u at the same two states [m^3]
   Vec p_star = nullptr, Hbar = nullptr;          // the diffusion part of the step from p_n: p*, mean H p^k [m^3/s]
   Vec Hbar_trial = nullptr, Hbar_previous = nullptr; // Hbar the trial used; that of the step before
+  Vec Hp = nullptr, Hp_trial = nullptr;          // H p_n and H p_trial, from the pass that forms f_pore [m^3/s]
   Vec p_local = nullptr, q_local = nullptr;
   double t = 0, t_trial = 0;
   bool   started = false;                        // Qu holds the initial state
