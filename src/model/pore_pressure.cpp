@@ -113,22 +113,59 @@ PetscErrorCode readFluidBoundaries(DM dm, DM pdm, const std::vector<std::string>
   PetscFunctionReturn(0);
 }
 
-// The two per-step cell loops, with the node count and dimension as compile-time constants
-// so the small products unroll (the runtime-sized loops cost 10x the bulk force).
+// The per-step cell loops, with the node count and dimension as compile-time constants so
+// the small products unroll, and, like the bulk loop (fem/bulk_operator.cpp), runs of kBatch
+// consecutive cells that share their matrices (every cell of a box-mesh region) done
+// together: each cell's values in one SIMD lane, the matrix entry broadcast. Without this the
+// two loops cost 2.5x the bulk force per flop.
+constexpr int kBatch = 8;
+typedef double BatchVec __attribute__((vector_size(kBatch * sizeof(double))));
+union Lanes {
+  BatchVec v;
+  double   d[kBatch];
+};
+
+// Length of the run of cells from c sharing cell c's matrices, at most kBatch.
+inline size_t runLength(const PetscInt *matrix, size_t c, size_t ncell) {
+  size_t run = 1;
+  while (run < (size_t)kBatch && c + run < ncell && matrix[c + run] == matrix[c]) ++run;
+  return run;
+}
+
 // q_a += sum (alpha Q)_a,bj u_bj: alpha Q u per pressure node.
 template <int NEN, int DIM>
 void addCouplingTimesU(size_t ncell, const PetscInt *matrix, const PetscInt *cell_u, const PetscInt *cell_p, const double *pool, const PetscScalar *u, PetscScalar *q) {
   constexpr int N = NEN * DIM;
-  for (size_t i = 0; i < ncell; ++i) {
-    const double *__restrict Q = pool + (size_t)matrix[i] * NEN * N;
-    double ue[N];
-    for (int b = 0; b < NEN; ++b)
-      for (int j = 0; j < DIM; ++j) ue[b * DIM + j] = PetscRealPart(u[cell_u[i * NEN + b] + j]);
-    for (int r = 0; r < NEN; ++r) {
-      double s = 0;
-      for (int k = 0; k < N; ++k) s += Q[r * N + k] * ue[k];
-      q[cell_p[i * NEN + r]] += s;
+  size_t        c = 0;
+  while (c < ncell) {
+    const double *__restrict Q   = pool + (size_t)matrix[c] * NEN * N;
+    const size_t             run = runLength(matrix, c, ncell);
+    if (run < (size_t)kBatch) {
+      for (size_t i = c; i < c + run; ++i) {
+        double ue[N];
+        for (int b = 0; b < NEN; ++b)
+          for (int j = 0; j < DIM; ++j) ue[b * DIM + j] = PetscRealPart(u[cell_u[i * NEN + b] + j]);
+        for (int r = 0; r < NEN; ++r) {
+          double sum = 0;
+          for (int k = 0; k < N; ++k) sum += Q[r * N + k] * ue[k];
+          q[cell_p[i * NEN + r]] += sum;
+        }
+      }
+      c += run;
+      continue;
     }
+    Lanes ue[N], acc[NEN];
+    for (int l = 0; l < kBatch; ++l)
+      for (int b = 0; b < NEN; ++b)
+        for (int j = 0; j < DIM; ++j) ue[b * DIM + j].d[l] = PetscRealPart(u[cell_u[(c + l) * NEN + b] + j]);
+    for (int r = 0; r < NEN; ++r) {
+      BatchVec sum = Q[r * N] * ue[0].v;
+      for (int k = 1; k < N; ++k) sum += Q[r * N + k] * ue[k].v;
+      acc[r].v = sum;
+    }
+    for (int l = 0; l < kBatch; ++l)
+      for (int r = 0; r < NEN; ++r) q[cell_p[(c + l) * NEN + r]] += acc[r].d[l];
+    c += kBatch;
   }
 }
 
@@ -147,9 +184,9 @@ inline void cellCouplingTranspose(const double *__restrict Q, const double *pe, 
 template <int NEN>
 inline void cellDiffusion(const double *__restrict H, const double *pe, const PetscInt *cell_p, PetscScalar *h) {
   for (int r = 0; r < NEN; ++r) {
-    double s = 0;
-    for (int b = 0; b < NEN; ++b) s += H[r * NEN + b] * pe[b];
-    h[cell_p[r]] += s;
+    double sum = 0;
+    for (int b = 0; b < NEN; ++b) sum += H[r * NEN + b] * pe[b];
+    h[cell_p[r]] += sum;
   }
 }
 
@@ -157,11 +194,41 @@ inline void cellDiffusion(const double *__restrict H, const double *pe, const Pe
 template <int NEN, int DIM>
 void addCouplingTransposeAndDiffusion(size_t ncell, const PetscInt *matrix, const PetscInt *cell_u, const PetscInt *cell_p, const double *coupling,
                                       const double *diffusion, const PetscScalar *p, PetscScalar *f, PetscScalar *h) {
-  for (size_t i = 0; i < ncell; ++i) {
-    double pe[NEN];
-    for (int r = 0; r < NEN; ++r) pe[r] = PetscRealPart(p[cell_p[i * NEN + r]]);
-    cellCouplingTranspose<NEN, DIM>(coupling + (size_t)matrix[i] * NEN * NEN * DIM, pe, cell_u + i * NEN, f);
-    cellDiffusion<NEN>(diffusion + (size_t)matrix[i] * NEN * NEN, pe, cell_p + i * NEN, h);
+  constexpr int N = NEN * DIM;
+  size_t        c = 0;
+  while (c < ncell) {
+    const double *__restrict Q   = coupling + (size_t)matrix[c] * NEN * N;
+    const double *__restrict H   = diffusion + (size_t)matrix[c] * NEN * NEN;
+    const size_t             run = runLength(matrix, c, ncell);
+    if (run < (size_t)kBatch) {
+      for (size_t i = c; i < c + run; ++i) {
+        double pe[NEN];
+        for (int r = 0; r < NEN; ++r) pe[r] = PetscRealPart(p[cell_p[i * NEN + r]]);
+        cellCouplingTranspose<NEN, DIM>(Q, pe, cell_u + i * NEN, f);
+        cellDiffusion<NEN>(H, pe, cell_p + i * NEN, h);
+      }
+      c += run;
+      continue;
+    }
+    Lanes pe[NEN], fe[N], he[NEN];
+    for (int l = 0; l < kBatch; ++l)
+      for (int r = 0; r < NEN; ++r) pe[r].d[l] = PetscRealPart(p[cell_p[(c + l) * NEN + r]]);
+    for (int k = 0; k < N; ++k) {
+      BatchVec sum = Q[k] * pe[0].v;
+      for (int r = 1; r < NEN; ++r) sum += Q[r * N + k] * pe[r].v;
+      fe[k].v = sum;
+    }
+    for (int r = 0; r < NEN; ++r) {
+      BatchVec sum = H[r * NEN] * pe[0].v;
+      for (int b = 1; b < NEN; ++b) sum += H[r * NEN + b] * pe[b].v;
+      he[r].v = sum;
+    }
+    for (int l = 0; l < kBatch; ++l) {
+      for (int b = 0; b < NEN; ++b)
+        for (int j = 0; j < DIM; ++j) f[cell_u[(c + l) * NEN + b] + j] += fe[b * DIM + j].d[l];
+      for (int r = 0; r < NEN; ++r) h[cell_p[(c + l) * NEN + r]] += he[r].d[l];
+    }
+    c += kBatch;
   }
 }
 
