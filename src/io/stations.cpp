@@ -182,21 +182,25 @@ PetscErrorCode Stations::Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Stations::SamplePressure(DM pdm, Vec p) {
+PetscErrorCode Stations::SamplePressure(DM pdm, Vec p_total, Vec p_excess) {
   PetscFunctionBeginUser;
   if (names_.empty()) PetscFunctionReturn(0);
   has_pressure_ = true;
-  if (!pressure_local_) PetscCall(DMCreateLocalVector(pdm, &pressure_local_));
-  PetscCall(DMGlobalToLocal(pdm, p, INSERT_VALUES, pressure_local_));
-  const PetscScalar *arr;
-  PetscCall(VecGetArrayRead(pressure_local_, &arr));
-  // The pressure layout has one dof where the displacement has dim_ (model/node_fields.hpp).
-  for (Local &l : local_) {
-    double s = 0;
-    for (size_t n = 0; n < l.offsets.size(); ++n) s += l.shape[n] * PetscRealPart(arr[l.offsets[n] / dim_]);
-    l.record.push_back(s);
+  const PetscScalar *arr[2];
+  Vec                globals[2] = {p_total, p_excess};
+  for (int k = 0; k < 2; ++k) {
+    if (!pressure_local_[k]) PetscCall(DMCreateLocalVector(pdm, &pressure_local_[k]));
+    PetscCall(DMGlobalToLocal(pdm, globals[k], INSERT_VALUES, pressure_local_[k]));
+    PetscCall(VecGetArrayRead(pressure_local_[k], &arr[k]));
   }
-  PetscCall(VecRestoreArrayRead(pressure_local_, &arr));
+  // The pressure layout has one dof where the displacement has dim_ (model/node_fields.hpp).
+  for (Local &l : local_)
+    for (int k = 0; k < 2; ++k) {
+      double s = 0;
+      for (size_t n = 0; n < l.offsets.size(); ++n) s += l.shape[n] * PetscRealPart(arr[k][l.offsets[n] / dim_]);
+      l.record.push_back(s);
+    }
+  for (int k = 0; k < 2; ++k) PetscCall(VecRestoreArrayRead(pressure_local_[k], &arr[k]));
   PetscFunctionReturn(0);
 }
 
@@ -233,7 +237,7 @@ PetscErrorCode Stations::Write(MPI_Comm comm, const std::string &dir) const {
     std::fprintf(fp, "t");
     for (const char *q : {"u", "v", "a"})
       for (PetscInt d = 0; d < dim_; ++d) std::fprintf(fp, ",%s_%c", q, axes[d]);
-    std::fprintf(fp, has_pressure_ ? ",p\n" : "\n");
+    std::fprintf(fp, has_pressure_ ? ",p,p_excess\n" : "\n");
     for (size_t r = 0; r + row <= records[s].size(); r += row) {
       for (int k = 0; k < row; ++k) std::fprintf(fp, k ? ",%.17g" : "%.17g", records[s][r + k]);
       std::fprintf(fp, "\n");
@@ -246,12 +250,12 @@ PetscErrorCode Stations::Write(MPI_Comm comm, const std::string &dir) const {
   for (size_t s = 0; s < names_.size(); ++s) {
     const hsize_t nt    = records[s].size() / row;
     hid_t         group = H5Gcreate2(file, names_[s].c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    const char   *dsets[5] = {"time", "displacement", "velocity", "acceleration", "pore_pressure"};
-    for (int q = 0; q < (has_pressure_ ? 5 : 4); ++q) {
-      const int           width = q == 0 || q == 4 ? 1 : (int)dim_;
+    const char   *dsets[6] = {"time", "displacement", "velocity", "acceleration", "pore_pressure", "excess_pore_pressure"};
+    for (int q = 0; q < (has_pressure_ ? 6 : 4); ++q) {
+      const int           width = q == 0 || q >= 4 ? 1 : (int)dim_;
       std::vector<double> buf(nt * width);
       for (hsize_t r = 0; r < nt; ++r)
-        for (int k = 0; k < width; ++k) buf[r * width + k] = records[s][r * row + (q == 0 ? 0 : 1 + (q - 1) * dim_ + k)];
+        for (int k = 0; k < width; ++k) buf[r * width + k] = records[s][r * row + (q == 0 ? 0 : q >= 4 ? 1 + 3 * dim_ + (q - 4) : 1 + (q - 1) * dim_ + k)];
       hsize_t dims[2] = {nt, (hsize_t)width};
       hid_t   space   = H5Screate_simple(width == 1 ? 1 : 2, dims, nullptr);
       hid_t   dset    = H5Dcreate2(group, dsets[q], H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
@@ -278,7 +282,7 @@ void Stations::loadRecords(const double *in, size_t n) {
 PetscErrorCode Stations::Destroy() {
   PetscFunctionBeginUser;
   for (Vec &w : work_) PetscCall(VecDestroy(&w));
-  PetscCall(VecDestroy(&pressure_local_));
+  for (Vec &w : pressure_local_) PetscCall(VecDestroy(&w));
   PetscFunctionReturn(0);
 }
 

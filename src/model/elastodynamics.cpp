@@ -178,12 +178,12 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(VecZeroEntries(m->f_contact_damping));
   PetscCall(createInterfaces(m));
   if (any_saturated) {
-    // Not yet: the free-field columns are dry, and gravity needs the water table (hydrostatic p).
+    // Not yet: the free-field columns are dry.
     PetscCheck(!m->free_field, comm, PETSC_ERR_USER_INPUT, "-bc_<side>_type freefield with a saturated region (-material_<r>_saturated): not supported yet; allowed: absorbing or tied sides");
-    PetscCheck(m->bc.gravity == 0, comm, PETSC_ERR_USER_INPUT, "-gravity = %g with a saturated region (-material_<r>_saturated): not supported yet (no water table); allowed: 0",
-               (double)m->bc.gravity);
-    PetscCall(PorePressureCreate(m->dm, m->bulk, m->mesh.boundaries, std::move(saturated), &m->pore));
+    PetscCall(PorePressureCreate(m->dm, m->bulk, m->mesh.boundaries, std::move(saturated), m->bc.gravity, m->bc.gravity_direction, &m->pore));
+    PetscCall(PorePressureAddHydrostaticForce(m->pore, m->dm, m->bc.constant_force));
     PetscCall(VecDuplicate(m->mass, &m->f_pore));
+    PetscCall(VecZeroEntries(m->f_pore));
   }
   PetscFunctionReturn(0);
 }
@@ -213,7 +213,9 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   // The memory forces need K_U u and the ghosted u that K u has just gathered into u_local.
   // Off in the geostatic stage (input_enabled false): the memory starts with the dynamic stage.
   if (m->attenuation && m->input_enabled) PetscCall(AttenuationForce(m->attenuation, m->dm, m->bulk, m->u_local, m->f_internal, t, m->f_anelastic));
-  if (m->pore) {
+  // Off in the geostatic stage (input_enabled false): its equilibrium is the drained one, the
+  // excess pore pressure stays zero.
+  if (m->pore && m->input_enabled) {
     const PetscScalar *ul;
     PetscCall(VecGetArrayRead(m->u_local, &ul));
     PetscCall(PorePressureTrial(m->pore, m->dm, ul, t, m->f_pore));

@@ -444,20 +444,110 @@ PetscErrorCode PorePressureReadMaterials(MPI_Comm comm, std::vector<RegionMateri
 }
 
 PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const std::vector<std::string> &boundaries, std::vector<SaturatedRegion> regions,
-                                  PorePressure **out) {
+                                  double gravity, const double *gravity_direction, PorePressure **out) {
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   PetscFunctionBeginUser;
   auto *pp    = new PorePressure();
   pp->regions = std::move(regions);
-  PetscBool subcycle = PETSC_TRUE;
-  PetscOptionsBegin(PetscObjectComm((PetscObject)dm), "pore_pressure_", "Pore pressure of saturated regions", "slipwave");
-  PetscCall(PetscOptionsBool("-subcycle", "sub-step the explicit pore-pressure diffusion within each step instead of lowering the step to its limit", "PorePressureCreate",
-                             subcycle, &subcycle, nullptr));
+  PetscBool subcycle = PETSC_TRUE, water_table = PETSC_FALSE;
+  PetscReal elevation = 0;
+  PetscOptionsBegin(comm, "", "Pore pressure of saturated regions", "slipwave");
+  PetscCall(PetscOptionsBool("-pore_pressure_subcycle", "sub-step the explicit pore-pressure diffusion within each step instead of lowering the step to its limit",
+                             "PorePressureCreate", subcycle, &subcycle, nullptr));
+  PetscCall(PetscOptionsReal("-water_table", "elevation of the free water surface [m], measured against -gravity_direction (with -gravity > 0; hydrostatic pressure below it)",
+                             "PorePressureCreate", elevation, &elevation, &water_table));
   PetscOptionsEnd();
-  pp->subcycle = subcycle;
+  PetscCheck(gravity == 0 || water_table, comm, PETSC_ERR_USER_INPUT,
+             "-gravity = %g with a saturated region (-material_<r>_saturated) needs -water_table; allowed: the elevation [m] of the free water surface", gravity);
+  PetscCheck(!water_table || gravity > 0, comm, PETSC_ERR_USER_INPUT, "-water_table = %g m needs gravity; allowed: with -gravity > 0", (double)elevation);
+  pp->subcycle              = subcycle;
+  pp->water_table           = water_table;
+  pp->water_table_elevation = elevation;
+  double rho_f              = -1;
+  for (const SaturatedRegion &r : pp->regions)
+    if (r.saturated) {
+      PetscCheck(!water_table || rho_f < 0 || r.biot.fluid_density == rho_f, comm, PETSC_ERR_USER_INPUT,
+                 "-material_<r>_fluid_density differs between saturated regions (%g and %g kg/m^3) under one -water_table; allowed: one fluid density", rho_f,
+                 r.biot.fluid_density);
+      rho_f = r.biot.fluid_density;
+    }
   PetscCall(NodeFieldCreateDM(dm, 1, &pp->pdm));
   PetscCall(buildCells(pp->pdm, bulk, pp));
   PetscCall(assembleNodal(dm, boundaries, pp));
+  PetscCall(VecDuplicate(pp->p, &pp->p_hydrostatic));
+  PetscCall(VecDuplicate(pp->p, &pp->p_total));
+  PetscCall(VecZeroEntries(pp->p_hydrostatic));
+  if (water_table) {
+    // p_h = rho_f g (elevation - z)+ at the nodes of saturated cells, z = -x . g_hat. At and
+    // above the water table the pore pressure is atmospheric: those nodes are drained.
+    PetscScalar *ph, *above;
+    Vec          above_global;
+    PetscCall(VecZeroEntries(pp->p_local));
+    PetscCall(VecZeroEntries(pp->q_local));
+    PetscCall(VecGetArray(pp->p_local, &ph));
+    PetscCall(VecGetArray(pp->q_local, &above));
+    for (size_t i = 0; i < pp->cells.size(); ++i) {
+      const double *x = bulk.cellCoordinates(pp->cells[i]);
+      for (PetscInt a = 0; a < pp->nen; ++a) {
+        double z = 0;
+        for (PetscInt d = 0; d < pp->dim; ++d) z -= x[a * pp->dim + d] * gravity_direction[d];
+        ph[pp->cell_p[i * pp->nen + a]]    = rho_f * gravity * std::max(0.0, elevation - z);
+        above[pp->cell_p[i * pp->nen + a]] = z >= elevation ? 1.0 : 0.0;
+      }
+    }
+    PetscCall(VecRestoreArray(pp->q_local, &above));
+    PetscCall(VecRestoreArray(pp->p_local, &ph));
+    PetscCall(DMLocalToGlobal(pp->pdm, pp->p_local, INSERT_VALUES, pp->p_hydrostatic));
+    PetscCall(VecDuplicate(pp->p, &above_global));
+    PetscCall(DMLocalToGlobal(pp->pdm, pp->q_local, INSERT_VALUES, above_global));
+    // Fewer free nodes only raise the diffusion limit: the one computed stays a valid bound.
+    PetscInt           n;
+    PetscScalar       *mask, *inv;
+    const PetscScalar *ab;
+    PetscCall(VecGetLocalSize(pp->p, &n));
+    PetscCall(VecGetArray(pp->free_mask, &mask));
+    PetscCall(VecGetArray(pp->inv_storage, &inv));
+    PetscCall(VecGetArrayRead(above_global, &ab));
+    for (PetscInt i = 0; i < n; ++i)
+      if (PetscRealPart(ab[i]) > 0) mask[i] = inv[i] = 0.0;
+    PetscCall(VecRestoreArrayRead(above_global, &ab));
+    PetscCall(VecRestoreArray(pp->inv_storage, &inv));
+    PetscCall(VecRestoreArray(pp->free_mask, &mask));
+    PetscCall(VecDestroy(&above_global));
+    pp->drained.push_back("the water table and above");
+  }
   *out = pp;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureAddHydrostaticForce(PorePressure *pp, DM dm, Vec f) {
+  Vec                f_local, f_global;
+  PetscScalar       *fl, *q;
+  const PetscScalar *pl;
+  PetscFunctionBeginUser;
+  PetscCall(DMGlobalToLocal(pp->pdm, pp->p_hydrostatic, INSERT_VALUES, pp->p_local));
+  PetscCall(DMGetLocalVector(dm, &f_local));
+  PetscCall(VecZeroEntries(f_local));
+  PetscCall(VecZeroEntries(pp->q_local));
+  PetscCall(VecGetArray(f_local, &fl));
+  PetscCall(VecGetArray(pp->q_local, &q)); // H p_h lands here and is not used: p_h drives no flow
+  PetscCall(VecGetArrayRead(pp->p_local, &pl));
+  couplingTransposeAndDiffusion(*pp, pl, fl, q);
+  PetscCall(VecRestoreArrayRead(pp->p_local, &pl));
+  PetscCall(VecRestoreArray(pp->q_local, &q));
+  PetscCall(VecRestoreArray(f_local, &fl));
+  PetscCall(VecDuplicate(f, &f_global));
+  PetscCall(VecZeroEntries(f_global));
+  PetscCall(DMLocalToGlobal(dm, f_local, ADD_VALUES, f_global));
+  PetscCall(DMRestoreLocalVector(dm, &f_local));
+  PetscCall(VecAXPY(f, 1.0, f_global));
+  PetscCall(VecDestroy(&f_global));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureTotal(PorePressure *pp) {
+  PetscFunctionBeginUser;
+  PetscCall(VecWAXPY(pp->p_total, 1.0, pp->p_hydrostatic, pp->p));
   PetscFunctionReturn(0);
 }
 
@@ -465,7 +555,7 @@ PetscErrorCode PorePressureDestroy(PorePressure **pore) {
   PetscFunctionBeginUser;
   if (!*pore) PetscFunctionReturn(0);
   PorePressure *pp = *pore;
-  for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial,
+  for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial, &pp->p_hydrostatic, &pp->p_total,
                  &pp->p_local, &pp->q_local})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&pp->pdm));

@@ -150,6 +150,44 @@ def checkerboard(a):
     return 0 if worst <= a.max_ratio else 1
 
 
+def geostatic(a):
+    """After the geostatic stage of a column under gravity with a water table: the effective
+    vertical stress (the volume output's stress of frame 0) is the total overburden minus
+    alpha p_h, sigma'_yy(y) = -g int_y^H rho dy + alpha rho_f g (z_w - y)+ (Terzaghi's
+    effective stress with hydrostatic pore water), within round-off of the static solve; the
+    stations' total p is rho_f g (z_w - y)+, and over the dynamic stage nothing moves and the
+    excess pore pressure stays zero."""
+    import h5py
+    g = 9.81
+    f = h5py.File(f"{a.dir}/volume.h5", "r")
+    xyz = f["geometry"][()]
+    cells = f["topology"][()]
+    yc = xyz[cells][:, :, 1].mean(axis=1)
+    syy = f["fields/stress/000000"][()][:, 4]
+    # Layers: (top elevation, bottom elevation, density) from the top down.
+    layers = [tuple(float(v) for v in l.split(":")) for l in a.layers.split(",")]
+
+    def overburden(y):
+        total = 0.0
+        for top, bottom, rho in layers:
+            total += rho * g * max(0.0, top - max(bottom, y)) if y < top else 0.0
+        return total
+    want = np.array([-overburden(y) + a.rho_f * g * max(0.0, a.water_table - y) for y in yc])
+    err = np.max(np.abs(syy - want)) / np.max(np.abs(want))
+    ok = err <= a.stress_tol
+    print(f"geostatic: effective vertical stress against overburden - p_h: largest error {err:.2e} of the largest (bound {a.stress_tol:.0e}) over {len(yc)} cells")
+    for name, y in (s.split(":") for s in a.stations.split(",")):
+        d = read_csv(f"{a.dir}/stations/{name}.csv")
+        want_p = a.rho_f * g * max(0.0, a.water_table - float(y))
+        err_p = np.max(np.abs(d["p"] - want_p)) / (a.rho_f * g * a.water_table)
+        exc = np.max(np.abs(d["p_excess"])) / (a.rho_f * g * a.water_table)
+        vmax = max(np.max(np.abs(d[c])) for c in d.dtype.names if c.startswith("v_"))
+        ok = ok and err_p <= a.stress_tol and exc <= a.stress_tol and vmax <= a.v_max
+        print(f"geostatic: station {name} (y = {y} m): p {d['p'][-1]:.6g} Pa against rho_f g (z_w - y) = {want_p:.6g} Pa (error {err_p:.1e}), "
+              f"excess {exc:.1e}, max |v| {vmax:.1e} m/s (bounds {a.stress_tol:.0e} of rho_f g z_w, {a.v_max:.0e} m/s)")
+    return 0 if ok else 1
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__)
     sub = p.add_subparsers(dest="cmd", required=True)
@@ -187,12 +225,20 @@ def main():
     c.add_argument("--box", required=True, help="x0,x1,y0,y1 of the saturated region [m]")
     c.add_argument("--margin", type=int, default=2)
     c.add_argument("--max-ratio", type=float, required=True)
+    gs = sub.add_parser("geostatic")
+    gs.add_argument("dir")
+    gs.add_argument("--layers", required=True, help="top:bottom:rho,... from the top down [m, m, kg/m^3]")
+    gs.add_argument("--water-table", type=float, required=True)
+    gs.add_argument("--rho-f", type=float, default=1000.0)
+    gs.add_argument("--stations", required=True, help="name:y,...")
+    gs.add_argument("--stress-tol", type=float, required=True)
+    gs.add_argument("--v-max", type=float, required=True)
     e = sub.add_parser("energy")
     e.add_argument("csv")
     e.add_argument("--max-error", type=float, required=True)
     e.add_argument("--min-darcy-fraction", type=float, required=True)
     a = p.parse_args()
-    return {"terzaghi": terzaghi, "pulse": pulse, "energy": energy, "checkerboard": checkerboard}[a.cmd](a)
+    return {"terzaghi": terzaghi, "pulse": pulse, "energy": energy, "checkerboard": checkerboard, "geostatic": geostatic}[a.cmd](a)
 
 
 if __name__ == "__main__":

@@ -28,9 +28,10 @@ public:
   bool           empty() const { return names_.empty(); }
   // Samples the global u, v, a at time t.
   PetscErrorCode Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a);
-  // Saturated scenes, after each Sample: the pore pressure p (global, one dof per vertex on a
-  // clone of dm) joins the row as column p [Pa], compression positive.
-  PetscErrorCode SamplePressure(DM pdm, Vec p);
+  // Saturated scenes, after each Sample: the pore pressure (global vectors, one dof per vertex
+  // on a clone of dm) joins the row as columns p (total: hydrostatic + excess) and p_excess
+  // [Pa], compression positive.
+  PetscErrorCode SamplePressure(DM pdm, Vec p_total, Vec p_excess);
   PetscErrorCode Write(MPI_Comm comm, const std::string &dir) const;
   PetscErrorCode Destroy();
   const std::vector<std::string> &names() const { return names_; }
@@ -38,7 +39,7 @@ public:
   void saveRecords(std::vector<double> *out) const;
   void loadRecords(const double *in, size_t n);
   size_t localStations() const { return local_.size(); }
-  int    rowWidth() const { return 1 + 3 * (int)dim_ + (has_pressure_ ? 1 : 0); }
+  int    rowWidth() const { return 1 + 3 * (int)dim_ + (has_pressure_ ? 2 : 0); }
 
 private:
   struct Local {
@@ -53,7 +54,7 @@ private:
   std::vector<Local>       local_;
   std::vector<std::string> ambiguities_;
   Vec                      work_[3] = {nullptr, nullptr, nullptr};
-  Vec                      pressure_local_ = nullptr;
+  Vec                      pressure_local_[2] = {nullptr, nullptr};
   bool                     has_pressure_ = false;
 };
 

@@ -18,7 +18,10 @@
 //
 // Options per region r (prefix -material_r_): saturated, porosity, fluid_bulk_modulus,
 // grain_bulk_modulus, hydraulic_conductivity, fluid_density. Per boundary b: -bc_b_fluid
-// noflow|drained|flux, -bc_b_fluid_flux q [m/s].
+// noflow|drained|flux, -bc_b_fluid_flux q [m/s]. With gravity, -water_table z [m]: the
+// hydrostatic pressure p_h = rho_f g (z - elevation)+ below it. The unknown p is the excess
+// pore pressure over p_h (p_h drives no flow); its force on the skeleton, alpha Q^T p_h, is
+// a constant load (PorePressureAddHydrostaticForce); outputs give p_h + p and p.
 #pragma once
 #include <petscdmplex.h>
 
@@ -63,6 +66,10 @@ struct PorePressure {
   PetscInt substeps = 1;                         // sub-steps of the last diffusion part
   double vp_undrained_max = 0;                   // [m/s], for the report
   std::vector<std::string> drained, flux;        // boundary names, for the report
+  Vec    p_hydrostatic = nullptr;                // p_h per node [Pa]; zero without a water table
+  Vec    p_total = nullptr;                      // p_h + p, refreshed by PorePressureTotal
+  bool   water_table = false;
+  double water_table_elevation = 0;              // [m] along minus the gravity direction
 };
 
 // Reads the per-region options after MaterialsRead; sets vp_undrained of saturated regions
@@ -70,8 +77,13 @@ struct PorePressure {
 PetscErrorCode PorePressureReadMaterials(MPI_Comm comm, std::vector<RegionMaterialInfo> *materials, std::vector<SaturatedRegion> *regions, bool *any);
 // Builds the layout, element matrices, storage, fluid boundary conditions and diffusion
 // limit; reads -pore_pressure_subcycle.
+// gravity [m/s^2] along the unit vector gravity_direction (the scene's -gravity).
 PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const std::vector<std::string> &boundaries, std::vector<SaturatedRegion> regions,
-                                  PorePressure **pore);
+                                  double gravity, const double *gravity_direction, PorePressure **pore);
+// f += alpha Q^T p_h (global, displacement layout): the hydrostatic pressure's load.
+PetscErrorCode PorePressureAddHydrostaticForce(PorePressure *pore, DM dm, Vec f);
+// p_h + p of the committed state, in pore->p_total.
+PetscErrorCode PorePressureTotal(PorePressure *pore);
 PetscErrorCode PorePressureDestroy(PorePressure **pore);
 // Trial state at time t from the ghosted displacement u_local: p_trial, and the force on the
 // skeleton f_pore = alpha Q^T p_trial (global, displacement layout, overwritten).
