@@ -20,9 +20,9 @@ OUT is the -output_dir of a run. Figures go to OUT/plots/ (or DIR):
   interface_<name>_profile.png  accumulated slip and opening of every pair at the last output
                                 step, and the accumulated slip in space and time
   energy.png                    the energy budget, with the balance error on a second axis
-  stations_pore_pressure.png    saturated scenes: the excess pore pressure p [kPa] at every
-                                station (compression positive; p is the excess over the
-                                initial state, which has no water table yet)
+  stations_pore_pressure.png    saturated scenes: the excess pore pressure (over the
+                                hydrostatic one of -water_table) [kPa] at every station,
+                                compression positive
 
 Works for 2D and 3D output. What is absent (no stations, no interface, no energy.csv) is
 skipped with a message. Prints the list of files written; exits 1 if nothing was plotted.
@@ -127,16 +127,16 @@ def resolution_note(out):
 
 def plot_pore_pressure(plots, written, stations):
     """Saturated scenes only: the stations' column p."""
-    names = [n for n in stations if "p" in stations[n]]
+    names = [n for n in stations if "p_excess" in stations[n]]
     if not names:
         return
     fig, ax = plt.subplots(figsize=(11, 4))
     for name in names:
-        tt, p = thin(stations[name]["t"], stations[name]["p"])
+        tt, p = thin(stations[name]["t"], stations[name]["p_excess"])
         ax.plot(tt, p / 1e3, lw=0.8, label=name)
     ax.set_xlabel("time [s]")
     ax.set_ylabel("excess pore pressure [kPa]")
-    ax.set_title("Pore pressure at the stations (compression positive)")
+    ax.set_title("Excess pore pressure at the stations (over the hydrostatic; compression positive)")
     ax.grid(alpha=0.3)
     ax.legend(loc="upper right", fontsize=8)
     fig.tight_layout()
