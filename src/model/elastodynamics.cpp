@@ -182,6 +182,13 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
     PetscCheck(!m->free_field, comm, PETSC_ERR_USER_INPUT, "-bc_<side>_type freefield with a saturated region (-material_<r>_saturated): not supported yet; allowed: absorbing or tied sides");
     PetscCall(PorePressureCreate(m->dm, m->bulk, m->mesh.boundaries, std::move(saturated), m->bc.gravity, m->bc.gravity_direction, &m->pore));
     PetscCall(PorePressureAddHydrostaticForce(m->pore, m->dm, m->bc.constant_force));
+    // Interfaces on saturated soil: their fluid condition, and the law in effective stress.
+    for (auto &iface : m->interfaces)
+      for (size_t r = 0; r < m->materials.size(); ++r)
+        if (m->materials[r].region == iface.spec().soil_region && m->pore->regions[r].saturated) {
+          PetscCall(PorePressureInterfaceFluid(m->pore, comm, iface.spec().name, iface.pairs().soil_dof));
+          PetscCall(iface.SetPorePressure(m->pore->p_total_trial));
+        }
     PetscCall(VecDuplicate(m->mass, &m->f_pore));
     PetscCall(VecZeroEntries(m->f_pore));
   }

@@ -476,6 +476,7 @@ PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const st
   PetscCall(assembleNodal(dm, boundaries, pp));
   PetscCall(VecDuplicate(pp->p, &pp->p_hydrostatic));
   PetscCall(VecDuplicate(pp->p, &pp->p_total));
+  PetscCall(VecDuplicate(pp->p, &pp->p_total_trial));
   PetscCall(VecZeroEntries(pp->p_hydrostatic));
   if (water_table) {
     // p_h = rho_f g (elevation - z)+ at the nodes of saturated cells, z = -x . g_hat. At and
@@ -516,6 +517,8 @@ PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const st
     PetscCall(VecDestroy(&above_global));
     pp->drained.push_back("the water table and above");
   }
+  // Until the first trial (and through the geostatic stage) interfaces see the hydrostatic p.
+  PetscCall(VecCopy(pp->p_hydrostatic, pp->p_total_trial));
   *out = pp;
   PetscFunctionReturn(0);
 }
@@ -545,6 +548,41 @@ PetscErrorCode PorePressureAddHydrostaticForce(PorePressure *pp, DM dm, Vec f) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode PorePressureInterfaceFluid(PorePressure *pp, MPI_Comm comm, const std::string &name, const std::vector<PetscInt> &soil_dofs) {
+  const std::string prefix = "interface_" + name + "_";
+  const std::string title  = "Pore fluid at interface " + name;
+  const char *const kInterfaceFluid[] = {"noflow", "drained"};
+  PetscInt          condition         = 0;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
+  PetscCall(core::OptionsChoice(PetscOptionsObject, "-fluid", "pore fluid on the soil side of the interface: noflow (default), drained (excess pore pressure 0)",
+                                kInterfaceFluid, 2, &condition, nullptr));
+  PetscOptionsEnd();
+  if (condition == 0) PetscFunctionReturn(0);
+  pp->drained.push_back("interface " + name);
+  Vec                marker;
+  PetscInt           n;
+  PetscScalar       *mask, *inv;
+  const PetscScalar *mk;
+  PetscCall(VecDuplicate(pp->p, &marker));
+  PetscCall(VecZeroEntries(marker));
+  for (PetscInt dof : soil_dofs) PetscCall(VecSetValue(marker, dof / pp->dim, 1.0, INSERT_VALUES));
+  PetscCall(VecAssemblyBegin(marker));
+  PetscCall(VecAssemblyEnd(marker));
+  PetscCall(VecGetLocalSize(marker, &n));
+  PetscCall(VecGetArrayRead(marker, &mk));
+  PetscCall(VecGetArray(pp->free_mask, &mask));
+  PetscCall(VecGetArray(pp->inv_storage, &inv));
+  // Fewer free nodes only raise the diffusion limit: the one computed stays a valid bound.
+  for (PetscInt i = 0; i < n; ++i)
+    if (PetscRealPart(mk[i]) > 0) mask[i] = inv[i] = 0.0;
+  PetscCall(VecRestoreArray(pp->inv_storage, &inv));
+  PetscCall(VecRestoreArray(pp->free_mask, &mask));
+  PetscCall(VecRestoreArrayRead(marker, &mk));
+  PetscCall(VecDestroy(&marker));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode PorePressureTotal(PorePressure *pp) {
   PetscFunctionBeginUser;
   PetscCall(VecWAXPY(pp->p_total, 1.0, pp->p_hydrostatic, pp->p));
@@ -555,7 +593,7 @@ PetscErrorCode PorePressureDestroy(PorePressure **pore) {
   PetscFunctionBeginUser;
   if (!*pore) PetscFunctionReturn(0);
   PorePressure *pp = *pore;
-  for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial, &pp->p_hydrostatic, &pp->p_total,
+  for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial, &pp->p_hydrostatic, &pp->p_total, &pp->p_total_trial,
                  &pp->p_local, &pp->q_local})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&pp->pdm));
@@ -605,6 +643,7 @@ PetscErrorCode PorePressureTrial(PorePressure *pp, DM dm, const PetscScalar *u, 
     PetscCall(VecRestoreArray(pp->p_trial, &pt));
   }
   pp->t_trial = t;
+  PetscCall(VecWAXPY(pp->p_total_trial, 1.0, pp->p_hydrostatic, pp->p_trial));
   // f_pore = alpha Q^T p and H p at the trial pressure (H p starts the next step's diffusion).
   Vec                f_local;
   PetscScalar       *f;

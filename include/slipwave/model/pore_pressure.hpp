@@ -68,6 +68,7 @@ struct PorePressure {
   std::vector<std::string> drained, flux;        // boundary names, for the report
   Vec    p_hydrostatic = nullptr;                // p_h per node [Pa]; zero without a water table
   Vec    p_total = nullptr;                      // p_h + p, refreshed by PorePressureTotal
+  Vec    p_total_trial = nullptr;                // p_h + p_trial, what interfaces on saturated soil read
   bool   water_table = false;
   double water_table_elevation = 0;              // [m] along minus the gravity direction
 };
@@ -84,6 +85,10 @@ PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const st
 PetscErrorCode PorePressureAddHydrostaticForce(PorePressure *pore, DM dm, Vec f);
 // p_h + p of the committed state, in pore->p_total.
 PetscErrorCode PorePressureTotal(PorePressure *pore);
+// An interface whose soil side is saturated: -interface_<name>_fluid noflow (default) or
+// drained, which holds the excess pore pressure at zero at its soil nodes (soil_dofs: global
+// indices of their x components).
+PetscErrorCode PorePressureInterfaceFluid(PorePressure *pore, MPI_Comm comm, const std::string &name, const std::vector<PetscInt> &soil_dofs);
 PetscErrorCode PorePressureDestroy(PorePressure **pore);
 // Trial state at time t from the ghosted displacement u_local: p_trial, and the force on the
 // skeleton f_pore = alpha Q^T p_trial (global, displacement layout, overwritten).
