@@ -188,6 +188,70 @@ def geostatic(a):
     return 0 if ok else 1
 
 
+def mandel_roots(k, count=300):
+    """The positive roots of tan(x) = k x (k > 1), one per interval (m pi, (m+1) pi) after the
+    first in (0, pi/2), by bisection on sin x - k x cos x."""
+    f = lambda x: math.sin(x) - k * x * math.cos(x)
+    roots = []
+    for m in range(count):
+        lo, hi = m * math.pi + 1e-9, (m + 1) * math.pi - 1e-9
+        xs = np.linspace(lo, hi, 64)
+        ys = [f(x) for x in xs]
+        for i in range(len(xs) - 1):
+            if ys[i] * ys[i + 1] < 0:
+                a, b = xs[i], xs[i + 1]
+                for _ in range(80):
+                    mid = 0.5 * (a + b)
+                    (a, b) = (mid, b) if f(a) * f(mid) > 0 else (a, mid)
+                roots.append(0.5 * (a + b))
+    return np.array(roots)
+
+
+def mandel(a):
+    """Mandel's problem (plane strain; Cheng & Detournay 1988, Abousleiman et al. 1996): a
+    specimen of half-width a between rigid frictionless plates under the force 2F (stress
+    sigma = F/a), lateral sides drained. With nu, nu_u the drained and undrained Poisson
+    ratios, B Skempton's coefficient and c = 2 kappa B^2 G (1-nu)(1+nu_u)^2 / (9 (1-nu_u)(nu_u-nu)):
+      p(x, t) = 2 p0 sum_n sin(a_n) / (a_n - sin a_n cos a_n) (cos(a_n x/a) - cos a_n) exp(-a_n^2 c t/a^2),
+      p0 = sigma B (1 + nu_u) / 3,  tan a_n = (1 - nu)/(nu_u - nu) a_n.
+    The centre pressure first rises above p0 (the Mandel-Cryer effect) and returns to it later.
+    Checked: the peak of p(0, t), the time it returns to p0 (a well-conditioned marker of the
+    rise; the peak itself is too flat to time), and both stations' p over [t1, t_end]."""
+    rho, G = a.rho, a.rho * a.vs ** 2
+    lam = a.rho * a.vp ** 2 - 2 * G
+    K = lam + 2 * G / 3
+    M = a.fluid_bulk_modulus / a.porosity
+    Ku = K + M
+    B = M / Ku
+    nu, nuu = (3 * K - 2 * G) / (2 * (3 * K + G)), (3 * Ku - 2 * G) / (2 * (3 * Ku + G))
+    kappa = a.hydraulic_conductivity / (1000 * G_STANDARD)
+    c = 2 * kappa * B ** 2 * G * (1 - nu) * (1 + nuu) ** 2 / (9 * (1 - nuu) * (nuu - nu))
+    p0 = a.load * B * (1 + nuu) / 3
+    roots = mandel_roots((1 - nu) / (nuu - nu))
+    coef = 2 * np.sin(roots) / (roots - np.sin(roots) * np.cos(roots))
+
+    def p(x, t):
+        return p0 * np.sum(coef * (np.cos(roots * x / a.half_width) - np.cos(roots)) * np.exp(-roots ** 2 * c * t / a.half_width ** 2))
+    print(f"mandel: nu {nu:.4f}, nu_u {nuu:.4f}, B {B:.4f}, c {c:.4f} m^2/s, p0 {p0:.6g} Pa; the series at t = 0+ gives {p(0.0, 0.0) / p0:.4f} p0")
+    ok = True
+    ts = np.linspace(a.t1, a.t_end, 4000)
+    for name, x in ((n.split(":")[0], float(n.split(":")[1])) for n in a.stations.split(",")):
+        d = read_csv(f"{a.dir}/stations/{name}.csv")
+        got = np.interp(ts, d["t"], d["p"])
+        want = np.array([p(x, t) for t in ts])
+        err = np.max(np.abs(got - want)) / p0
+        ok = ok and err <= a.tol
+        print(f"mandel: {name} (x = {x} m): p over [{a.t1}, {a.t_end}] s within {err:.2e} p0 of the series (bound {a.tol:.0e})")
+        if x == 0:
+            peak_w, peak_g = np.max(want), np.max(got)
+            t_w, t_g = ts[np.argmax((want < p0) & (ts > ts[np.argmax(want)]))], ts[np.argmax((got < p0) & (ts > ts[np.argmax(got)]))]
+            e_peak, e_time = abs(peak_g - peak_w) / peak_w, abs(t_g - t_w) / t_w
+            ok = ok and e_peak <= a.tol and e_time <= a.tol and peak_w > 1.03 * p0
+            print(f"mandel: centre peak {peak_g:.6g} Pa against {peak_w:.6g} Pa = {peak_w / p0:.4f} p0 (error {e_peak:.2e}); back to p0 at {t_g:.5f} s "
+                  f"against {t_w:.5f} s (error {e_time:.2e}); bound {a.tol:.0e}")
+    return 0 if ok else 1
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__)
     sub = p.add_subparsers(dest="cmd", required=True)
@@ -233,12 +297,26 @@ def main():
     gs.add_argument("--stations", required=True, help="name:y,...")
     gs.add_argument("--stress-tol", type=float, required=True)
     gs.add_argument("--v-max", type=float, required=True)
+    md = sub.add_parser("mandel")
+    md.add_argument("dir")
+    md.add_argument("--half-width", type=float, required=True)
+    md.add_argument("--load", type=float, required=True, help="the plates' compressive stress F/a [Pa]")
+    md.add_argument("--stations", required=True, help="name:x,... (x from the centre [m])")
+    md.add_argument("--t1", type=float, required=True)
+    md.add_argument("--t-end", type=float, required=True)
+    md.add_argument("--tol", type=float, default=0.02)
+    md.add_argument("--rho", type=float, required=True)
+    md.add_argument("--vp", type=float, required=True)
+    md.add_argument("--vs", type=float, required=True)
+    md.add_argument("--porosity", type=float, required=True)
+    md.add_argument("--fluid-bulk-modulus", type=float, default=2.2e9)
+    md.add_argument("--hydraulic-conductivity", type=float, required=True)
     e = sub.add_parser("energy")
     e.add_argument("csv")
     e.add_argument("--max-error", type=float, required=True)
     e.add_argument("--min-darcy-fraction", type=float, required=True)
     a = p.parse_args()
-    return {"terzaghi": terzaghi, "pulse": pulse, "energy": energy, "checkerboard": checkerboard, "geostatic": geostatic}[a.cmd](a)
+    return {"terzaghi": terzaghi, "pulse": pulse, "energy": energy, "checkerboard": checkerboard, "geostatic": geostatic, "mandel": mandel}[a.cmd](a)
 
 
 if __name__ == "__main__":
