@@ -252,6 +252,39 @@ def mandel(a):
     return 0 if ok else 1
 
 
+def site(a):
+    """The saturated site scene shaken by SV and by P (config/scenes/saturated_site.yaml):
+    - both budgets close to round-off (relative balance error <= --energy-tol);
+    - SV: a vertically incident shear wave in a laterally uniform column changes no volume,
+      so the excess pore pressure stays at the geostatic relaxation's residue, below
+      --sv-ratio of what P gives at the same stations;
+    - P: the layer (30 m) is thin against the wavelength (866 m at 2 Hz) and undrained away
+      from the surface (diffusion length sqrt(c_v / w) = 0.6 m), so at depth z the vertical
+      total stress is the inertia of the soil above, sigma_yy = -rho z a_mean (a_mean the
+      trapezoid mean of a_y between the surface and the station; the profile's curvature
+      error is ~ (k z)^2 / 12 < 1 %), and the excess pore pressure is gamma rho z a_mean
+      (gamma the loading efficiency): relative L2 below --p-tol."""
+    ok = True
+    for run in (a.sv, a.p):
+        e = read_csv(f"{run}/energy.csv")
+        err = np.max(np.abs(e["relative_balance_error"]))
+        ok = ok and err <= a.energy_tol
+        print(f"site: {run}: energy balance {err:.2e} (bound {a.energy_tol:.0e})")
+    E, M = a.rho * a.vp ** 2, a.fluid_bulk_modulus / a.porosity
+    gamma = M / (E + M)
+    surface = read_csv(f"{a.p}/stations/{a.surface}.csv")
+    for name, depth in ((n.split(":")[0], float(n.split(":")[1])) for n in a.stations.split(",")):
+        dp = read_csv(f"{a.p}/stations/{name}.csv")
+        ds = read_csv(f"{a.sv}/stations/{name}.csv")
+        pred = gamma * a.rho * depth * 0.5 * (surface["a_y"] + dp["a_y"])
+        l2 = math.sqrt(np.sum((dp["p_excess"] - pred) ** 2) / np.sum(pred ** 2))
+        ratio = np.max(np.abs(ds["p_excess"])) / np.max(np.abs(dp["p_excess"]))
+        ok = ok and l2 <= a.p_tol and ratio <= a.sv_ratio
+        print(f"site: {name} (depth {depth} m): P: excess p against gamma rho z a_mean, relative L2 {l2:.2e} (bound {a.p_tol:.0e}); "
+              f"SV: max |excess p| {ratio:.1e} of P's (bound {a.sv_ratio:.0e})")
+    return 0 if ok else 1
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__)
     sub = p.add_subparsers(dest="cmd", required=True)
@@ -311,12 +344,24 @@ def main():
     md.add_argument("--porosity", type=float, required=True)
     md.add_argument("--fluid-bulk-modulus", type=float, default=2.2e9)
     md.add_argument("--hydraulic-conductivity", type=float, required=True)
+    st = sub.add_parser("site")
+    st.add_argument("--sv", required=True, help="output dir of the SV run")
+    st.add_argument("--p", required=True, help="output dir of the P run")
+    st.add_argument("--surface", required=True)
+    st.add_argument("--stations", required=True, help="name:depth,...")
+    st.add_argument("--rho", type=float, required=True)
+    st.add_argument("--vp", type=float, required=True)
+    st.add_argument("--porosity", type=float, required=True)
+    st.add_argument("--fluid-bulk-modulus", type=float, default=2.2e9)
+    st.add_argument("--energy-tol", type=float, required=True)
+    st.add_argument("--p-tol", type=float, required=True)
+    st.add_argument("--sv-ratio", type=float, required=True)
     e = sub.add_parser("energy")
     e.add_argument("csv")
     e.add_argument("--max-error", type=float, required=True)
     e.add_argument("--min-darcy-fraction", type=float, required=True)
     a = p.parse_args()
-    return {"terzaghi": terzaghi, "pulse": pulse, "energy": energy, "checkerboard": checkerboard, "geostatic": geostatic, "mandel": mandel}[a.cmd](a)
+    return {"terzaghi": terzaghi, "pulse": pulse, "energy": energy, "checkerboard": checkerboard, "geostatic": geostatic, "mandel": mandel, "site": site}[a.cmd](a)
 
 
 if __name__ == "__main__":
