@@ -10,106 +10,11 @@
 namespace slipwave::model {
 namespace {
 
-// Standard gravity turns a hydraulic conductivity into a mobility; it is a unit conversion
-// (k_h is measured under g), not the scene's -gravity.
-constexpr double kStandardGravity = 9.80665;
-
-PetscErrorCode readRegion(MPI_Comm comm, RegionMaterialInfo *info, SaturatedRegion *r) {
-  PetscBool saturated = PETSC_FALSE, has_porosity = PETSC_FALSE, has_k = PETSC_FALSE;
-  PetscReal porosity = 0, K_f = 2.2e9, K_s = 0, k_h = 0, rho_f = 1000;
-  const std::string prefix = "material_" + info->region + "_";
-  const std::string title  = "Pore fluid of region " + info->region;
-  PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
-  PetscCall(PetscOptionsBool("-saturated", "the region is a saturated porous medium (Biot u-p; -material_<r>_rho is then the mixture density)", "PorePressureReadMaterials",
-                             saturated, &saturated, nullptr));
-  if (saturated) {
-    PetscCall(PetscOptionsReal("-porosity", "porosity n [-], 0 < n < 1 (saturated region, required)", "PorePressureReadMaterials", porosity, &porosity, &has_porosity));
-    PetscCall(PetscOptionsReal("-hydraulic_conductivity", "hydraulic conductivity k [m/s], >= 0 (0: undrained; mobility k/(rho_f g), g = 9.80665) (required)",
-                               "PorePressureReadMaterials", k_h, &k_h, &has_k));
-    PetscCall(PetscOptionsReal("-fluid_bulk_modulus", "bulk modulus of the pore fluid K_f [Pa], > 0 (default water, 2.2e9)", "PorePressureReadMaterials", K_f, &K_f, nullptr));
-    PetscCall(PetscOptionsReal("-grain_bulk_modulus", "bulk modulus of the solid grains K_s [Pa], 0 (incompressible, Biot coefficient 1) or > drained K", "PorePressureReadMaterials",
-                               K_s, &K_s, nullptr));
-    PetscCall(PetscOptionsReal("-fluid_density", "density of the pore fluid rho_f [kg/m^3], > 0 (default 1000)", "PorePressureReadMaterials", rho_f, &rho_f, nullptr));
-  }
-  PetscOptionsEnd();
-  r->saturated = saturated;
-  if (!saturated) PetscFunctionReturn(0);
-  const char *name = info->region.c_str();
-  PetscCheck(has_porosity, comm, PETSC_ERR_USER_INPUT, "-material_%s_porosity is missing; allowed: 0 < n < 1 (region %s is saturated)", name, name);
-  PetscCheck(has_k, comm, PETSC_ERR_USER_INPUT, "-material_%s_hydraulic_conductivity is missing; allowed: >= 0 m/s (region %s is saturated)", name, name);
-  const physics::LameParameters lame = physics::lame(info->elastic);
-  const double                  K    = lame.lambda + 2.0 * lame.mu / 3.0;
-  r->biot                            = physics::BiotMaterial{porosity, K_f, K_s, k_h, rho_f, kStandardGravity};
-  const std::string problem          = physics::biotMaterialProblem(r->biot, K);
-  PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "pore fluid of region '%s' (-material_%s_...): %s", name, name, problem.c_str());
-  r->alpha           = physics::biotCoefficient(r->biot, K);
-  r->M               = physics::biotModulus(r->biot, K);
-  r->kappa           = physics::mobility(r->biot);
-  info->vp_undrained = physics::undrainedPWaveSpeed(K, lame.mu, r->alpha, r->M, info->elastic.rho);
-  PetscFunctionReturn(0);
-}
-
 // Adds local per-node values into a global vector of the pressure layout (overwritten).
 PetscErrorCode localToGlobalSum(DM pdm, Vec local, Vec global) {
   PetscFunctionBeginUser;
   PetscCall(VecZeroEntries(global));
   PetscCall(DMLocalToGlobal(pdm, local, ADD_VALUES, global));
-  PetscFunctionReturn(0);
-}
-
-enum FluidCondition { NoFlow, Drained, Flux };
-const char *const kFluidNames[] = {"noflow", "drained", "flux"};
-
-} // namespace
-} // namespace slipwave::model
-
-#include "slipwave/core/option_choice.hpp"
-#include "slipwave/model/boundary_faces.hpp"
-
-namespace slipwave::model {
-namespace {
-
-// -bc_<b>_fluid and -bc_<b>_fluid_flux: drained nodes go into `drained_local` (1), the inflow
-// q (integral of N_a q over the saturated faces) into `inflow_local`.
-PetscErrorCode readFluidBoundaries(DM dm, DM pdm, const std::vector<std::string> &boundaries, const std::vector<SaturatedRegion> &regions, Vec drained_local,
-                                   Vec inflow_local, PorePressure *pp) {
-  MPI_Comm     comm = PetscObjectComm((PetscObject)dm);
-  PetscSection section;
-  PetscScalar *drained, *inflow;
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(pdm, &section));
-  PetscCall(VecGetArray(drained_local, &drained));
-  PetscCall(VecGetArray(inflow_local, &inflow));
-  for (const std::string &b : boundaries) {
-    const std::string prefix = "bc_" + b + "_";
-    const std::string title  = "Pore fluid on boundary " + b;
-    PetscInt          condition = NoFlow;
-    PetscReal         q         = 0;
-    PetscBool         q_set     = PETSC_FALSE;
-    PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
-    PetscCall(core::OptionsChoice(PetscOptionsObject, "-fluid", "pore fluid condition: noflow (default), drained (p = 0), flux (prescribed inflow)", kFluidNames, 3, &condition,
-                                  nullptr));
-    PetscCall(PetscOptionsReal("-fluid_flux", "Darcy inflow through the boundary q [m/s], inward positive (with -bc_<b>_fluid flux)", "PorePressureCreate", q, &q, &q_set));
-    PetscOptionsEnd();
-    PetscCheck(!q_set || condition == Flux, comm, PETSC_ERR_USER_INPUT, "-%sfluid_flux is given but -%sfluid = %s; allowed: -%sfluid flux", prefix.c_str(), prefix.c_str(),
-               kFluidNames[condition], prefix.c_str());
-    if (condition == NoFlow) continue;
-    (condition == Drained ? pp->drained : pp->flux).push_back(b);
-    std::vector<BoundaryFace> faces;
-    PetscCall(BoundaryFacesGet(dm, b, &faces));
-    for (const BoundaryFace &f : faces) {
-      if (!regions[f.region].saturated) continue;
-      for (PetscInt k = 0; k < f.nvert; ++k) {
-        PetscInt off;
-        PetscCall(PetscSectionGetOffset(section, f.vertices[k], &off));
-        if (condition == Drained) drained[off] = 1;
-        else inflow[off] += q * f.weights[k];
-      }
-    }
-  }
-  PetscCall(VecRestoreArray(inflow_local, &inflow));
-  PetscCall(VecRestoreArray(drained_local, &drained));
   PetscFunctionReturn(0);
 }
 
@@ -400,7 +305,7 @@ PetscErrorCode assembleNodal(DM dm, const std::vector<std::string> &boundaries, 
   PetscCall(localToGlobalSum(pp->pdm, pp->p_local, rows));
   PetscCall(VecZeroEntries(drained_local));
   PetscCall(VecZeroEntries(inflow_local));
-  PetscCall(readFluidBoundaries(dm, pp->pdm, boundaries, pp->regions, drained_local, inflow_local, pp));
+  PetscCall(PorePressureReadFluidBoundaries(dm, pp->pdm, boundaries, pp->regions, drained_local, inflow_local, pp));
   PetscCall(localToGlobalSum(pp->pdm, drained_local, drained));
   PetscCall(localToGlobalSum(pp->pdm, inflow_local, pp->inflow));
   {
@@ -431,17 +336,6 @@ PetscErrorCode assembleNodal(DM dm, const std::vector<std::string> &boundaries, 
 }
 
 } // namespace
-
-PetscErrorCode PorePressureReadMaterials(MPI_Comm comm, std::vector<RegionMaterialInfo> *materials, std::vector<SaturatedRegion> *regions, bool *any) {
-  PetscFunctionBeginUser;
-  regions->assign(materials->size(), SaturatedRegion{});
-  *any = false;
-  for (size_t i = 0; i < materials->size(); ++i) {
-    PetscCall(readRegion(comm, &(*materials)[i], &(*regions)[i]));
-    *any = *any || (*regions)[i].saturated;
-  }
-  PetscFunctionReturn(0);
-}
 
 PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const std::vector<std::string> &boundaries, std::vector<SaturatedRegion> regions,
                                   double gravity, const double *gravity_direction, PorePressure **out) {
@@ -501,19 +395,7 @@ PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const st
     PetscCall(DMLocalToGlobal(pp->pdm, pp->p_local, INSERT_VALUES, pp->p_hydrostatic));
     PetscCall(VecDuplicate(pp->p, &above_global));
     PetscCall(DMLocalToGlobal(pp->pdm, pp->q_local, INSERT_VALUES, above_global));
-    // Fewer free nodes only raise the diffusion limit: the one computed stays a valid bound.
-    PetscInt           n;
-    PetscScalar       *mask, *inv;
-    const PetscScalar *ab;
-    PetscCall(VecGetLocalSize(pp->p, &n));
-    PetscCall(VecGetArray(pp->free_mask, &mask));
-    PetscCall(VecGetArray(pp->inv_storage, &inv));
-    PetscCall(VecGetArrayRead(above_global, &ab));
-    for (PetscInt i = 0; i < n; ++i)
-      if (PetscRealPart(ab[i]) > 0) mask[i] = inv[i] = 0.0;
-    PetscCall(VecRestoreArrayRead(above_global, &ab));
-    PetscCall(VecRestoreArray(pp->inv_storage, &inv));
-    PetscCall(VecRestoreArray(pp->free_mask, &mask));
+    PetscCall(PorePressureDrainNodes(pp, above_global));
     PetscCall(VecDestroy(&above_global));
     pp->drained.push_back("the water table and above");
   }
@@ -545,41 +427,6 @@ PetscErrorCode PorePressureAddHydrostaticForce(PorePressure *pp, DM dm, Vec f) {
   PetscCall(DMRestoreLocalVector(dm, &f_local));
   PetscCall(VecAXPY(f, 1.0, f_global));
   PetscCall(VecDestroy(&f_global));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode PorePressureInterfaceFluid(PorePressure *pp, MPI_Comm comm, const std::string &name, const std::vector<PetscInt> &soil_dofs) {
-  const std::string prefix = "interface_" + name + "_";
-  const std::string title  = "Pore fluid at interface " + name;
-  const char *const kInterfaceFluid[] = {"noflow", "drained"};
-  PetscInt          condition         = 0;
-  PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
-  PetscCall(core::OptionsChoice(PetscOptionsObject, "-fluid", "pore fluid on the soil side of the interface: noflow (default), drained (excess pore pressure 0)",
-                                kInterfaceFluid, 2, &condition, nullptr));
-  PetscOptionsEnd();
-  if (condition == 0) PetscFunctionReturn(0);
-  pp->drained.push_back("interface " + name);
-  Vec                marker;
-  PetscInt           n;
-  PetscScalar       *mask, *inv;
-  const PetscScalar *mk;
-  PetscCall(VecDuplicate(pp->p, &marker));
-  PetscCall(VecZeroEntries(marker));
-  for (PetscInt dof : soil_dofs) PetscCall(VecSetValue(marker, dof / pp->dim, 1.0, INSERT_VALUES));
-  PetscCall(VecAssemblyBegin(marker));
-  PetscCall(VecAssemblyEnd(marker));
-  PetscCall(VecGetLocalSize(marker, &n));
-  PetscCall(VecGetArrayRead(marker, &mk));
-  PetscCall(VecGetArray(pp->free_mask, &mask));
-  PetscCall(VecGetArray(pp->inv_storage, &inv));
-  // Fewer free nodes only raise the diffusion limit: the one computed stays a valid bound.
-  for (PetscInt i = 0; i < n; ++i)
-    if (PetscRealPart(mk[i]) > 0) mask[i] = inv[i] = 0.0;
-  PetscCall(VecRestoreArray(pp->inv_storage, &inv));
-  PetscCall(VecRestoreArray(pp->free_mask, &mask));
-  PetscCall(VecRestoreArrayRead(marker, &mk));
-  PetscCall(VecDestroy(&marker));
   PetscFunctionReturn(0);
 }
 
@@ -721,48 +568,6 @@ PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pp, DM dm, Vec rows) {
   PetscCall(VecDestroy(&extra));
   PetscCall(VecDestroy(&w));
   PetscFunctionReturn(0);
-}
-
-std::vector<std::string> PorePressureReport(const PorePressure *pp, const std::vector<RegionMaterialInfo> &materials, double dt_drained, double dt_undrained,
-                                            double dt_limit, double dt) {
-  std::vector<std::string> lines;
-  char                     buf[512];
-  for (size_t i = 0; i < materials.size(); ++i) {
-    const SaturatedRegion &r = pp->regions[i];
-    if (!r.saturated) continue;
-    const physics::LameParameters lame = physics::lame(materials[i].elastic);
-    const double                  K    = lame.lambda + 2.0 * lame.mu / 3.0;
-    std::snprintf(buf, sizeof buf,
-                  "  saturated %s: alpha %.4g, M %.4g Pa, Skempton B %.4g, loading efficiency %.4g, undrained vp %.1f m/s (drained %.1f), k %.3g m/s = mobility %.3g m^2/(Pa s), c_v %.4g m^2/s",
-                  materials[i].region.c_str(), r.alpha, r.M, physics::skemptonB(K, r.alpha, r.M), physics::loadingEfficiency(K, lame.mu, r.alpha, r.M),
-                  materials[i].vp_undrained, materials[i].elastic.vp, r.biot.hydraulic_conductivity, r.kappa,
-                  physics::consolidationCoefficient(K, lame.mu, r.alpha, r.M, r.kappa));
-    lines.push_back(buf);
-  }
-  auto names = [](const std::vector<std::string> &list) {
-    std::string s;
-    for (const auto &n : list) s += (s.empty() ? "" : ",") + n;
-    return s.empty() ? std::string("none") : s;
-  };
-  std::snprintf(buf, sizeof buf, "  pore fluid boundaries: drained %s; prescribed inflow %s; all others no flow", names(pp->drained).c_str(), names(pp->flux).c_str());
-  lines.push_back(buf);
-  const bool governs = !pp->subcycle && pp->dt_diffusion < dt_undrained;
-  std::snprintf(buf, sizeof buf,
-                "  pore pressure step cost: drained wave %.4e s, undrained wave %.4e s (%.2fx the drained), diffusion %.4e s; the %s governs (limit %.4e s, %.2fx the drained)",
-                dt_drained, dt_undrained, dt_drained / dt_undrained, pp->dt_diffusion, governs ? "diffusion" : "undrained wave", dt_limit, dt_drained / dt_limit);
-  lines.push_back(buf);
-  const PetscInt substeps = PorePressureSubsteps(pp, dt);
-  if (substeps > 1) {
-    std::snprintf(buf, sizeof buf, "  pore-pressure diffusion sub-cycled: %" PetscInt_FMT " sub-steps per step (-pore_pressure_subcycle)", substeps);
-    lines.push_back(buf);
-  }
-  if (governs && pp->dt_diffusion < 0.1 * dt_undrained) {
-    std::snprintf(buf, sizeof buf,
-                  "  warning: the explicit pore-pressure diffusion forces a step %.3gx smaller than the undrained wave's; -pore_pressure_subcycle sub-steps it instead",
-                  dt_undrained / pp->dt_diffusion);
-    lines.push_back(buf);
-  }
-  return lines;
 }
 
 PetscErrorCode PorePressureEnergy(PorePressure *pp, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e) {

@@ -1,5 +1,7 @@
 // Pore pressure of the saturated regions: Biot's u-p equations integrated explicitly
-// (docs/saturated-soil.md). The pressure is a nodal scalar on its own node layout (a clone
+// (docs/saturated-soil.md). model/pore_pressure.cpp: layout, update, stable-step rows,
+// energy, water table; model/pore_fluid.cpp: the per-region options and the report;
+// model/pore_pressure_bc.cpp: the fluid boundary conditions. The pressure is a nodal scalar on its own node layout (a clone
 // of the mesh DM with one dof per vertex, node i of it is node i of the displacement), so the
 // displacement layout, the "cd" TS and every dry-scene pass stay as they are; a dry scene
 // never creates this object.
@@ -103,6 +105,14 @@ PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pore, DM dm, Vec rows)
 // dt_undrained (with it), dt_diffusion, and the run's limit.
 std::vector<std::string> PorePressureReport(const PorePressure *pore, const std::vector<RegionMaterialInfo> &materials, double dt_drained, double dt_undrained,
                                             double dt_limit, double dt);
+
+// Within the module (model/pore_pressure_bc.cpp): -bc_<b>_fluid of every boundary, drained
+// nodes into drained_local (1) and the inflow integral of N_a q into inflow_local (local
+// vectors of the pressure layout).
+PetscErrorCode PorePressureReadFluidBoundaries(DM dm, DM pdm, const std::vector<std::string> &boundaries, const std::vector<SaturatedRegion> &regions,
+                                               Vec drained_local, Vec inflow_local, PorePressure *pore);
+// Holds the excess pore pressure at zero where the global marker (pressure layout) is > 0.
+PetscErrorCode PorePressureDrainNodes(PorePressure *pore, Vec marker);
 
 // Sub-steps per step of size h: 1 without sub-cycling (the step is then within the limit).
 PetscInt PorePressureSubsteps(const PorePressure *pore, double h);
