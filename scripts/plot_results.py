@@ -20,6 +20,9 @@ OUT is the -output_dir of a run. Figures go to OUT/plots/ (or DIR):
   interface_<name>_profile.png  accumulated slip and opening of every pair at the last output
                                 step, and the accumulated slip in space and time
   energy.png                    the energy budget, with the balance error on a second axis
+  stations_pore_pressure.png    saturated scenes: the excess pore pressure (over the
+                                hydrostatic one of -water_table) [kPa] at every station,
+                                compression positive
 
 Works for 2D and 3D output. What is absent (no stations, no interface, no energy.csv) is
 skipped with a message. Prints the list of files written; exits 1 if nothing was plotted.
@@ -120,6 +123,24 @@ def resolution_note(out):
                 "content above is numerical")
     except (OSError, ValueError, KeyError):
         return "resolved frequency unknown (no run_info.json)"
+
+
+def plot_pore_pressure(plots, written, stations):
+    """Saturated scenes only: the stations' column p."""
+    names = [n for n in stations if "p_excess" in stations[n]]
+    if not names:
+        return
+    fig, ax = plt.subplots(figsize=(11, 4))
+    for name in names:
+        tt, p = thin(stations[name]["t"], stations[name]["p_excess"])
+        ax.plot(tt, p / 1e3, lw=0.8, label=name)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("excess pore pressure [kPa]")
+    ax.set_title("Excess pore pressure at the stations (over the hydrostatic; compression positive)")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper right", fontsize=8)
+    fig.tight_layout()
+    save(fig, os.path.join(plots, "stations_pore_pressure.png"), written)
 
 
 def plot_stations(out, plots, written, stations):
@@ -560,6 +581,7 @@ def main():
     written = []
     stations = read_stations(args.out)
     plot_stations(args.out, plots, written, stations)
+    plot_pore_pressure(plots, written, stations)
     periods, spectra = station_spectra(stations)
     plot_spectra(plots, written, periods, spectra)
     plot_transfer(plots, written, periods, spectra, args.reference)

@@ -12,9 +12,13 @@ constexpr std::array<const char *, 15> kValueColumns = {"time",           "kinet
                                                         "interface_work", "interface_stored", "interface_dissipated", "contact_damped",
                                                         "stored_change",  "balance_error",    "relative_balance_error"};
 
-std::string header() {
+constexpr std::array<const char *, 3> kFluidColumns = {"fluid_stored", "darcy_dissipated", "fluid_inflow_work"};
+
+std::string header(bool fluid) {
   std::string line = "step";
   for (const char *name : kValueColumns) line += std::string(",") + name;
+  if (fluid)
+    for (const char *name : kFluidColumns) line += std::string(",") + name;
   return line + "\n";
 }
 
@@ -23,7 +27,7 @@ std::string header() {
 PetscErrorCode EnergyCsv::Open(const std::string &dir, const std::string &previous, PetscInt restart_step) {
   const std::string path = dir + "/energy.csv";
   PetscFunctionBeginUser;
-  std::string kept = header();
+  std::string kept = header(fluid_);
   if (!previous.empty()) {
     if (FILE *in = std::fopen(previous.c_str(), "r")) {
       char line[4096];
@@ -68,8 +72,16 @@ void EnergyCsv::Append(PetscInt step, PetscReal t, const model::EnergyLedger &e,
     std::snprintf(cell, sizeof cell, ",%.10g", values[k]);
     pending_ += cell;
   }
-  std::snprintf(cell, sizeof cell, ",%.3e\n", values.back());
+  std::snprintf(cell, sizeof cell, ",%.3e", values.back());
   pending_ += cell;
+  if (fluid_) {
+    const std::array<double, kFluidColumns.size()> fluid = {e.fluid_stored, e.darcy, e.fluid_inflow};
+    for (double x : fluid) {
+      std::snprintf(cell, sizeof cell, ",%.10g", x);
+      pending_ += cell;
+    }
+  }
+  pending_ += '\n';
 }
 
 void EnergyCsv::Flush() {

@@ -4,6 +4,8 @@
 #include <system_error>
 #include <utility>
 
+#include "slipwave/model/pore_pressure.hpp"
+
 namespace slipwave::app {
 namespace {
 
@@ -59,7 +61,10 @@ PetscErrorCode OutputFrames::WriteIfDue(const model::Elastodynamics &model, Pets
   *due = t >= next_output_ * (1 - 1e-12) || last || step == 0;
   if (!*due) PetscFunctionReturn(0);
   const PetscInt frame = (PetscInt)times_.size();
-  if (volume_) PetscCall(volume_->Write(model.dm, model.bulk, frame, t, u, v, a, model.initial_stress));
+  if (volume_) {
+    if (model.pore) PetscCall(model::PorePressureTotal(model.pore));
+    PetscCall(volume_->Write(model.dm, model.bulk, frame, t, u, v, a, model.initial_stress, model.pore ? model.pore->p_total : nullptr, model.pore ? model.pore->p : nullptr));
+  }
   for (size_t k = 0; k < interfaces_.size(); ++k) PetscCall(interfaces_[k]->Write(model.interfaces[k], frame, t));
   times_.push_back(t);
   while (next_output_ <= t * (1 + 1e-12)) next_output_ += interval_;

@@ -228,6 +228,35 @@ void elementLumpedMass(CellShape s, const double *coords, double rho, double *ma
   }
 }
 
+void elementCoupling(CellShape s, const double *coords, double *Q) {
+  const ReferenceRule &r = rule(s);
+  const int n = r.nodes, dim = r.dim, nd = n * dim;
+  for (int k = 0; k < n * nd; ++k) Q[k] = 0;
+  double dNdx[kMaxCellNodes][kMaxDim];
+  for (int q = 0; q < r.points; ++q) {
+    const double dv = r.weight[q] * physicalGradients(r, coords, r.dN[q], dNdx);
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b)
+        for (int j = 0; j < dim; ++j) Q[a * nd + b * dim + j] += dv * r.N[q][a] * dNdx[b][j];
+  }
+}
+
+void elementDiffusion(CellShape s, const double *coords, double *H) {
+  const ReferenceRule &r = rule(s);
+  const int n = r.nodes, dim = r.dim;
+  for (int k = 0; k < n * n; ++k) H[k] = 0;
+  double dNdx[kMaxCellNodes][kMaxDim];
+  for (int q = 0; q < r.points; ++q) {
+    const double dv = r.weight[q] * physicalGradients(r, coords, r.dN[q], dNdx);
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) {
+        double dot = 0;
+        for (int k = 0; k < dim; ++k) dot += dNdx[a][k] * dNdx[b][k];
+        H[a * n + b] += dv * dot;
+      }
+  }
+}
+
 double elementVolume(CellShape s, const double *coords) {
   const ReferenceRule &r = rule(s);
   double J[kMaxDim][kMaxDim], Jinv[kMaxDim][kMaxDim];

@@ -35,9 +35,10 @@ void tangentBasis(PetscInt dim, const double *n, double *t) {
   t[5] = n[0] * t[1] - n[1] * t[0];
 }
 
+// pore: the pore pressure at each pair's soil node (saturated soil side), or null.
 template <int Dim>
 double updatePairs(const physics::InterfaceLaw &law, const mesh::InterfacePairs &pairs, const double *tangent, std::vector<physics::InterfaceState<Dim>> &states,
-                   std::vector<double> &jump_prev, const PetscScalar *pu, PetscScalar *pf) {
+                   std::vector<double> &jump_prev, const PetscScalar *pu, const PetscScalar *pore, PetscScalar *pf) {
   constexpr int NT = Dim - 1;
   double        max_drift = 0;
   for (size_t p = 0; p < states.size(); ++p) {
@@ -56,7 +57,9 @@ double updatePairs(const physics::InterfaceLaw &law, const mesh::InterfacePairs 
       for (int i = 0; i < Dim; ++i) dw_T[k] += dj[i] * t[k * Dim + i];
     }
     physics::InterfaceState<Dim> &s = states[p];
-    max_drift                       = std::max(max_drift, physics::interfaceUpdate<Dim>(law, s, dw_T, dw_N));
+    const double drift = pore ? physics::interfaceUpdate<Dim>(physics::interfaceLawWithPorePressure(law, PetscRealPart(pore[p])), s, dw_T, dw_N)
+                              : physics::interfaceUpdate<Dim>(law, s, dw_T, dw_N);
+    max_drift = std::max(max_drift, drift);
     // tau: force per unit area of the structure on the soil (spec §2).
     const double A = pairs.area[p];
     for (int i = 0; i < Dim; ++i) {
@@ -164,11 +167,18 @@ PetscErrorCode InterfaceAssembler::AddForces(Vec u, Vec f) {
   trial_states2_ = states2_;
   trial_states3_ = states3_;
   trial_jump_    = jump_prev_;
+  const PetscScalar *pore = nullptr;
+  if (pore_scatter_) {
+    PetscCall(VecScatterBegin(pore_scatter_, pore_source_, pair_p_, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(pore_scatter_, pore_source_, pair_p_, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGetArrayRead(pair_p_, &pore));
+  }
   PetscCall(applyToPairs(u, f, [&](const PetscScalar *pu, PetscScalar *pf) {
-    const double drift = dim_ == 2 ? updatePairs<2>(law, pairs_, tangent_.data(), trial_states2_, trial_jump_, pu, pf)
-                                   : updatePairs<3>(law, pairs_, tangent_.data(), trial_states3_, trial_jump_, pu, pf);
+    const double drift = dim_ == 2 ? updatePairs<2>(law, pairs_, tangent_.data(), trial_states2_, trial_jump_, pu, pore, pf)
+                                   : updatePairs<3>(law, pairs_, tangent_.data(), trial_states3_, trial_jump_, pu, pore, pf);
     trial_max_drift_   = std::max(max_drift_, drift);
   }));
+  if (pore) PetscCall(VecRestoreArrayRead(pair_p_, &pore));
   has_trial_ = true;
   PetscFunctionReturn(0);
 }
@@ -186,6 +196,23 @@ PetscErrorCode InterfaceAssembler::applyToPairs(Vec x, Vec f, const std::functio
   PetscCall(VecRestoreArrayRead(pair_u_, &px));
   PetscCall(VecScatterBegin(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecScatterEnd(scatter_, pair_f_, f, ADD_VALUES, SCATTER_REVERSE));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceAssembler::SetPorePressure(Vec p) {
+  const PetscInt np = (PetscInt)pairs_.id.size();
+  PetscFunctionBeginUser;
+  // The pressure layout numbers node i where the displacement has dofs i*dim .. i*dim+dim-1.
+  std::vector<PetscInt> from(np);
+  for (PetscInt k = 0; k < np; ++k) from[k] = pairs_.soil_dof[k] / dim_;
+  IS is_from, is_to;
+  PetscCall(ISCreateGeneral(PETSC_COMM_SELF, np, from.data(), PETSC_COPY_VALUES, &is_from));
+  PetscCall(ISCreateStride(PETSC_COMM_SELF, np, 0, 1, &is_to));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, np, &pair_p_));
+  PetscCall(VecScatterCreate(p, is_from, pair_p_, is_to, &pore_scatter_));
+  PetscCall(ISDestroy(&is_from));
+  PetscCall(ISDestroy(&is_to));
+  pore_source_ = p;
   PetscFunctionReturn(0);
 }
 
@@ -383,6 +410,8 @@ void InterfaceAssembler::loadState(const double *in) {
 
 PetscErrorCode InterfaceAssembler::Destroy() {
   PetscFunctionBeginUser;
+  PetscCall(VecScatterDestroy(&pore_scatter_));
+  PetscCall(VecDestroy(&pair_p_));
   PetscCall(VecScatterDestroy(&scatter_));
   PetscCall(VecDestroy(&pair_u_));
   PetscCall(VecDestroy(&pair_f_));

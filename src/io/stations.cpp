@@ -184,10 +184,33 @@ PetscErrorCode Stations::Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Stations::SamplePressure(DM pdm, Vec p_total, Vec p_excess) {
+  PetscFunctionBeginUser;
+  if (names_.empty()) PetscFunctionReturn(0);
+  has_pressure_ = true;
+  const PetscScalar *arr[2];
+  Vec                globals[2] = {p_total, p_excess};
+  for (int k = 0; k < 2; ++k) {
+    if (!pressure_local_[k]) PetscCall(DMCreateLocalVector(pdm, &pressure_local_[k]));
+    PetscCall(DMGlobalToLocal(pdm, globals[k], INSERT_VALUES, pressure_local_[k]));
+    PetscCall(VecGetArrayRead(pressure_local_[k], &arr[k]));
+  }
+  // The pressure layout has one dof where the displacement has dim_ (model/node_fields.hpp).
+  for (Local &l : local_)
+    for (int k = 0; k < 2; ++k) {
+      double s = 0;
+      for (size_t n = 0; n < l.offsets.size(); ++n) s += l.shape[n] * PetscRealPart(arr[k][l.offsets[n] / dim_]);
+      l.record.push_back(s);
+    }
+  for (int k = 0; k < 2; ++k) PetscCall(VecRestoreArrayRead(pressure_local_[k], &arr[k]));
+  PetscFunctionReturn(0);
+}
+
 namespace {
 
-// The four datasets of a station's group and their widths (time: one column).
-const char *const kDatasets[4] = {"time", "displacement", "velocity", "acceleration"};
+// The datasets of a station's group (time and the pore pressures: one column; the last two in
+// saturated scenes only).
+const char *const kDatasets[6] = {"time", "displacement", "velocity", "acceleration", "pore_pressure", "excess_pore_pressure"};
 
 // Rows per HDF5 chunk: a few KiB, so a short run's file stays small and a long one's appends
 // touch few chunks.
@@ -269,7 +292,7 @@ PetscErrorCode Stations::Flush(MPI_Comm comm, const std::string &dir) {
       std::fprintf(fp, "t");
       for (const char *q : {"u", "v", "a"})
         for (PetscInt d = 0; d < dim_; ++d) std::fprintf(fp, ",%s_%c", q, axes[d]);
-      std::fprintf(fp, "\n");
+      std::fprintf(fp, has_pressure_ ? ",p,p_excess\n" : "\n");
     }
     for (size_t r = 0; r + row <= fresh[s].size(); r += row) {
       for (int k = 0; k < row; ++k) std::fprintf(fp, k ? ",%.17g" : "%.17g", fresh[s][r + k]);
@@ -285,11 +308,11 @@ PetscErrorCode Stations::Flush(MPI_Comm comm, const std::string &dir) {
   for (size_t s = 0; s < names_.size() && status >= 0; ++s) {
     hid_t group = first ? H5Gcreate2(file, names_[s].c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : H5Gopen2(file, names_[s].c_str(), H5P_DEFAULT);
     const size_t nt = fresh[s].size() / row;
-    for (int q = 0; q < 4 && status >= 0; ++q) {
-      const int           width = q == 0 ? 0 : (int)dim_;
+    for (int q = 0; q < (has_pressure_ ? 6 : 4) && status >= 0; ++q) {
+      const int           width = q == 0 || q >= 4 ? 0 : (int)dim_;
       std::vector<double> buf(nt * std::max(width, 1));
       for (size_t r = 0; r < nt; ++r)
-        for (int k = 0; k < std::max(width, 1); ++k) buf[r * std::max(width, 1) + k] = fresh[s][r * row + (q == 0 ? 0 : 1 + (q - 1) * dim_ + k)];
+        for (int k = 0; k < std::max(width, 1); ++k) buf[r * std::max(width, 1) + k] = fresh[s][r * row + (q == 0 ? 0 : q >= 4 ? 1 + 3 * dim_ + (q - 4) : 1 + (q - 1) * dim_ + k)];
       hid_t dset = first ? createExtendible(group, kDatasets[q], width) : H5Dopen2(group, kDatasets[q], H5P_DEFAULT);
       status     = dset < 0 ? (herr_t)-1 : appendRows(dset, buf, width);
       if (dset >= 0) H5Dclose(dset);
@@ -315,6 +338,7 @@ void Stations::loadRecords(const double *in, size_t n) {
 PetscErrorCode Stations::Destroy() {
   PetscFunctionBeginUser;
   for (Vec &w : work_) PetscCall(VecDestroy(&w));
+  for (Vec &w : pressure_local_) PetscCall(VecDestroy(&w));
   PetscFunctionReturn(0);
 }
 

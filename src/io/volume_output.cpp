@@ -61,7 +61,7 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
 }
 
 PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a,
-                                   const std::vector<double> &initial_stress) {
+                                   const std::vector<double> &initial_stress, Vec p_total, Vec p_excess) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(core::event_output, 0, 0, 0, 0));
   PetscCall(DMGlobalToLocal(dm, u, INSERT_VALUES, u_local_));
@@ -74,12 +74,14 @@ PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscIn
   PetscCall(VecRestoreArray(stress_, &s));
   PetscCall(VecRestoreArrayRead(u_local_, &ul));
   for (Vec x : {u, v, a}) PetscCall(VecSetBlockSize(x, bulk.dimension()));
-  PetscCall(writer_.WriteStep(step, t,
-                              {{"displacement", Centering::Node, u},
-                               {"velocity", Centering::Node, v},
-                               {"acceleration", Centering::Node, a},
-                               {"stress", Centering::Cell, stress_},
-                               {"region", Centering::Cell, region_}}));
+  std::vector<FieldRef> fields = {{"displacement", Centering::Node, u},
+                                            {"velocity", Centering::Node, v},
+                                            {"acceleration", Centering::Node, a},
+                                            {"stress", Centering::Cell, stress_},
+                                            {"region", Centering::Cell, region_}};
+  if (p_total) fields.push_back({"pore_pressure", Centering::Node, p_total});
+  if (p_excess) fields.push_back({"excess_pore_pressure", Centering::Node, p_excess});
+  PetscCall(writer_.WriteStep(step, t, fields));
   PetscCall(PetscLogEventEnd(core::event_output, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }

@@ -12,6 +12,7 @@
 #include "slipwave/model/lateral_tie.hpp"
 #include "slipwave/model/node_fields.hpp"
 #include "slipwave/model/point_force.hpp"
+#include "slipwave/model/pore_pressure.hpp"
 #include "slipwave/model/structure_load.hpp"
 #include "slipwave/time/central_difference.hpp"
 
@@ -145,6 +146,9 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(DMGetDimension(m->dm, &m->dim));
   PetscCall(NodeFieldSetSection(m->dm, m->dim));
   PetscCall(MaterialsRead(comm, m->mesh.regions, &m->materials));
+  std::vector<SaturatedRegion> saturated;
+  bool                         any_saturated = false;
+  PetscCall(PorePressureReadMaterials(comm, &m->materials, &saturated, &any_saturated));
   PetscCall(readDamping(m));
   PetscCall(AttenuationCreate(comm, &m->materials, &m->attenuation));
   auto setupBulk = [m]() {
@@ -181,6 +185,21 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(VecDuplicate(m->mass, &m->f_contact_damping));
   PetscCall(VecZeroEntries(m->f_contact_damping));
   PetscCall(createInterfaces(m));
+  if (any_saturated) {
+    // Not yet: the free-field columns are dry.
+    PetscCheck(!m->free_field, comm, PETSC_ERR_USER_INPUT, "-bc_<side>_type freefield with a saturated region (-material_<r>_saturated): not supported yet; allowed: absorbing or tied sides");
+    PetscCall(PorePressureCreate(m->dm, m->bulk, m->mesh.boundaries, std::move(saturated), m->bc.gravity, m->bc.gravity_direction, &m->pore));
+    PetscCall(PorePressureAddHydrostaticForce(m->pore, m->dm, m->bc.constant_force));
+    // Interfaces on saturated soil: their fluid condition, and the law in effective stress.
+    for (auto &iface : m->interfaces)
+      for (size_t r = 0; r < m->materials.size(); ++r)
+        if (m->materials[r].region == iface.spec().soil_region && m->pore->regions[r].saturated) {
+          PetscCall(PorePressureInterfaceFluid(m->pore, comm, iface.spec().name, iface.pairs().soil_dof));
+          PetscCall(iface.SetPorePressure(m->pore->p_total_trial));
+        }
+    PetscCall(VecDuplicate(m->mass, &m->f_pore));
+    PetscCall(VecZeroEntries(m->f_pore));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -191,6 +210,8 @@ PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
   PetscCall(DrmDestroy(&m->drm));
   PetscCall(LateralTieDestroy(&m->tie));
   PetscCall(AttenuationDestroy(&m->attenuation));
+  PetscCall(PorePressureDestroy(&m->pore));
+  PetscCall(VecDestroy(&m->f_pore));
   for (auto &iface : m->interfaces) PetscCall(iface.Destroy());
   PetscCall(VecDestroy(&m->f_interface));
   PetscCall(VecDestroy(&m->f_contact_damping));
@@ -208,6 +229,14 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   // The memory forces need K_U u and the ghosted u that K u has just gathered into u_local.
   // Off in the geostatic stage (input_enabled false): the memory starts with the dynamic stage.
   if (m->attenuation && m->input_enabled) PetscCall(AttenuationForce(m->attenuation, m->dm, m->bulk, m->u_local, m->f_internal, t, m->f_anelastic));
+  // Off in the geostatic stage (input_enabled false): its equilibrium is the drained one, the
+  // excess pore pressure stays zero.
+  if (m->pore && m->input_enabled) {
+    const PetscScalar *ul;
+    PetscCall(VecGetArrayRead(m->u_local, &ul));
+    PetscCall(PorePressureTrial(m->pore, m->dm, ul, t, m->f_pore));
+    PetscCall(VecRestoreArrayRead(m->u_local, &ul));
+  }
   if (m->rayleigh.beta > 0) {
     Vec v_half;
     PetscCall(time::CentralDifferenceGetHalfStepVelocity(ts, &v_half));
@@ -255,14 +284,20 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscCall(VecGetArrayRead(m->inv_mass, &im));
   PetscCall(VecGetArrayRead(m->bc.free_mask, &mask));
   for (PetscInt i = 0; i < n; ++i) acc[i] = mask[i] * im[i] * (fe[i] - fi[i] - fd[i] + fif[i] + fan[i] + fcd[i]);
-  PetscCall(VecRestoreArrayRead(m->bc.free_mask, &mask));
-  PetscCall(VecRestoreArrayRead(m->inv_mass, &im));
   PetscCall(VecRestoreArrayRead(m->f_contact_damping, &fcd));
   PetscCall(VecRestoreArrayRead(m->f_anelastic, &fan));
   PetscCall(VecRestoreArrayRead(m->f_interface, &fif));
   PetscCall(VecRestoreArrayRead(m->f_stiffness_damping, &fd));
   PetscCall(VecRestoreArrayRead(m->f_internal, &fi));
   PetscCall(VecRestoreArrayRead(m->f_external, &fe));
+  if (m->pore) {
+    const PetscScalar *fp;
+    PetscCall(VecGetArrayRead(m->f_pore, &fp));
+    for (PetscInt i = 0; i < n; ++i) acc[i] += mask[i] * im[i] * fp[i];
+    PetscCall(VecRestoreArrayRead(m->f_pore, &fp));
+  }
+  PetscCall(VecRestoreArrayRead(m->bc.free_mask, &mask));
+  PetscCall(VecRestoreArrayRead(m->inv_mass, &im));
   PetscCall(VecRestoreArray(a, &acc));
   // The geostatic stage (input_enabled false) holds prescribed dofs at rest: a record's
   // baseline correction leaves a nonzero acceleration at t = 0 that would drag them along.
@@ -282,6 +317,7 @@ PetscErrorCode ElastodynamicsCommit(Elastodynamics *m) {
   for (auto &iface : m->interfaces) iface.Commit();
   FreeFieldCommit(m->free_field);
   AttenuationCommit(m->attenuation);
+  PorePressureCommit(m->pore);
   PetscFunctionReturn(0);
 }
 

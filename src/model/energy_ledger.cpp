@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "slipwave/core/log_events.hpp"
+#include "slipwave/model/pore_pressure.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 namespace slipwave::model {
@@ -71,6 +72,14 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, EnergyL
   PetscCall(VecRestoreArrayRead(u, &ua));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 11, MPI_DOUBLE, MPI_SUM, m->comm));
 
+  PoreEnergy fluid;
+  if (m->pore) {
+    PetscCall(PorePressureEnergy(m->pore, h, v, a, m->f_pore, m->bc.free_mask, &fluid));
+    s[2] += fluid.storage;
+    s[5] -= fluid.held_power;
+    e->fluid        = true;
+    e->fluid_stored = fluid.storage;
+  }
   e->kinetic = s[0];
   e->strain  = s[1];
   if (!e->started) {
@@ -88,12 +97,15 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, EnergyL
     e->interface_work += h_mean * s[8];
     e->anelastic -= h_mean * s[9];
     e->contact_damped -= h_mean * s[10];
+    e->darcy += fluid.darcy;
+    e->fluid_inflow += fluid.inflow;
   }
   e->h_prev = h;
   e->shadow        = s[2];
-  e->balance_error = (e->shadow - e->shadow_start) - (e->input + e->external + e->reactions + e->interface_work - e->absorbed - e->damped - e->anelastic - e->contact_damped);
+  e->balance_error = (e->shadow - e->shadow_start) - (e->input + e->external + e->reactions + e->interface_work - e->absorbed - e->damped - e->anelastic - e->contact_damped) -
+                     (e->fluid_inflow - e->darcy);
   e->scale         = std::max({e->scale, std::fabs(e->shadow), std::fabs(e->input), std::fabs(e->external), std::fabs(e->absorbed), std::fabs(e->damped), std::fabs(e->anelastic),
-                               std::fabs(e->reactions), std::fabs(e->interface_work), std::fabs(e->contact_damped), e->kinetic + std::fabs(e->strain)});
+                               std::fabs(e->reactions), std::fabs(e->interface_work), std::fabs(e->contact_damped), e->kinetic + std::fabs(e->strain), e->darcy, std::fabs(e->fluid_stored)});
   PetscCall(PetscLogEventEnd(core::event_energy, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }

@@ -15,7 +15,9 @@ PetscErrorCode materialNamesGiven(std::vector<std::string> *names) {
   PetscCall(PetscOptionsGetAll(nullptr, &all));
   std::stringstream ss(all ? all : "");
   std::string       token;
-  const char       *properties[] = {"_rho", "_vp", "_vs", "_E", "_nu", "_damping_ratio", "_reference_frequency"};
+  // With the pore-fluid properties of saturated regions (model/pore_pressure.cpp).
+  const char       *properties[] = {"_rho", "_vp", "_vs", "_E", "_nu", "_damping_ratio", "_reference_frequency", "_saturated", "_porosity",
+                                    "_hydraulic_conductivity", "_fluid_bulk_modulus", "_grain_bulk_modulus", "_fluid_density"};
   while (ss >> token) {
     if (token.rfind("-material_", 0) != 0) continue;
     std::string rest = token.substr(std::strlen("-material_"));

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "slipwave/model/free_field.hpp"
+#include "slipwave/model/pore_pressure.hpp"
 #include "slipwave/physics/stable_time_step.hpp"
 
 namespace slipwave::model {
@@ -87,6 +88,13 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(m->mass, &rowabs));
   PetscCall(BulkGershgorinRowSums(m->dm, m->bulk, rowabs));
+  // Saturated regions: the rows of the undrained stiffness K + alpha^2 Q^T S^-1 Q.
+  if (m->pore) {
+    PetscReal omega_drained;
+    PetscCall(omegaMax(m, rowabs, &omega_drained));
+    step->dt_drained = omega_drained > 0 ? physics::centralDifferenceStableStep(omega_drained, m->rayleigh.beta) : 1e300;
+    PetscCall(PorePressureAddUndrainedRows(m->pore, m->dm, rowabs));
+  }
   // K is the bulk and the interface springs together (adding the rows, not taking the larger
   // of two frequencies).
   PetscReal omega_bulk = 0, omega_all = 0;
@@ -104,7 +112,7 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   if (dashpots) step->dt_bulk = std::min(step->dt_bulk, dt_rows);
   PetscCall(VecDestroy(&rowabs));
   double vp_max = 0;
-  for (const auto &info : m->materials) vp_max = std::max(vp_max, info.elastic.vp);
+  for (const auto &info : m->materials) vp_max = std::max({vp_max, info.elastic.vp, info.vp_undrained});
   step->dt_cfl   = m->bulk.minCellSize() / vp_max;
   step->dt_limit = step->dt_bulk;
   // The free-field columns are 1D chains of the side's cells, so their Gershgorin bound is
@@ -116,6 +124,13 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   step->governing = std::string(interfaces_matter ? "bulk stiffness and interface penalty springs" : "bulk stiffness") +
                     (m->rayleigh.beta > 0 ? " with stiffness-proportional damping" : "") + (dashpots ? " and contact dashpots" : "") + " (Gershgorin bound)";
   if (free_field_governs) step->governing = "free-field column (Gershgorin bound)";
+  // Saturated regions: the pore-pressure diffusion limits the step unless it is sub-stepped.
+  if (m->pore) {
+    step->dt_diffusion    = m->pore->dt_diffusion;
+    const bool diffusion  = !m->pore->subcycle && step->dt_diffusion < step->dt_limit;
+    step->governing       = diffusion ? std::string("pore-pressure diffusion (explicit, Gershgorin bound on S^-1 H)") : "undrained " + step->governing;
+    if (!m->pore->subcycle) step->dt_limit = std::min(step->dt_limit, step->dt_diffusion);
+  }
   PetscFunctionReturn(0);
 }
 

@@ -5,6 +5,8 @@
 //  - default.yaml, coarsened (interface with contact damping, constant-Q soil and block,
 //    gravity without the geostatic stage, so the block settles and the pairs' states change),
 //  - free_field_site.yaml (free-field columns, Rayleigh damping, incident SV wave),
+//  - a saturated box (pore pressure, drained top, P wave): the pressure update is a trial
+//    state too, and p at the end must be bit for bit unchanged as well,
 // each stepped to t = 0.1 s (0.5 s) twice: plainly, and with two extra RHS evaluations before every
 // step at a state the run never takes (t_{n+2}, u_n + 1 mm of noise). A pure RHS leaves the
 // second run bit for bit equal to the first (u, v, interface totals); an RHS that committed
@@ -12,6 +14,7 @@
 // (then refused to go back) and committed the memory at t_{n+2}. Also: the two probes at the
 // same (t, u) give the same acceleration bit for bit.
 #include "slipwave/model/elastodynamics.hpp"
+#include "slipwave/model/pore_pressure.hpp"
 #include "slipwave/model/stable_step.hpp"
 #include "slipwave/time/central_difference.hpp"
 
@@ -27,7 +30,7 @@ namespace {
 using namespace slipwave;
 
 struct Final {
-  Vec    u = nullptr, v = nullptr;
+  Vec    u = nullptr, v = nullptr, p = nullptr; // p: saturated scenes only
   double stored = 0, dissipated = 0;
   PetscInt steps = 0;
 };
@@ -90,6 +93,10 @@ PetscErrorCode runScene(const std::string &scene_options, PetscReal t_end, bool 
   PetscCall(VecDuplicate(v, &out->v));
   PetscCall(VecCopy(u, out->u));
   PetscCall(VecCopy(v, out->v));
+  if (m.pore) {
+    PetscCall(VecDuplicate(m.pore->p, &out->p));
+    PetscCall(VecCopy(m.pore->p, out->p));
+  }
   PetscCall(PetscRandomDestroy(&rnd));
   for (Vec *x : {&u, &v, &a_probe, &a_again, &u_probe}) PetscCall(VecDestroy(x));
   PetscCall(TSDestroy(&ts));
@@ -102,7 +109,12 @@ PetscErrorCode Run(bool) {
   PetscCall(time::CentralDifferenceRegister());
   // The free-field site's wave (Ricker, f0 = 2 Hz) reaches the surface after 0.3 s.
   const std::pair<std::string, PetscReal> scenes[] = {{"-options_file config/scenes/default.yaml -mesh_box_faces 60,30", 0.1},
-                                                      {"-options_file config/scenes/free_field_site.yaml", 0.5}};
+                                                      {"-options_file config/scenes/free_field_site.yaml", 0.5},
+                                                      {"-regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -material_soil_saturated "
+                                                       "-material_soil_porosity 0.4 -material_soil_hydraulic_conductivity 0.08 -mesh_box_faces 4,16 -mesh_box_upper 8,32 "
+                                                       "-bc_bottom_type absorbing -input_wave p -input_boundary bottom -input_stf ricker -input_f0 10 -input_t0 0.12 "
+                                                       "-input_amplitude 0.1 -bc_top_fluid drained",
+                                                       0.15}};
   for (const auto &[scene, t_end] : scenes) {
     Final plain, probed;
     PetscCall(runScene(scene, t_end, false, &plain));
@@ -116,7 +128,14 @@ PetscErrorCode Run(bool) {
     unit::check(u_equal && v_equal, scene + ": probe evaluations leave u and v at the end bit for bit unchanged");
     unit::check(plain.stored == probed.stored && plain.dissipated == probed.dissipated, scene + ": and the interface totals (stored " +
                                                                                              std::to_string(plain.stored) + " J)");
-    for (Vec *x : {&plain.u, &plain.v, &probed.u, &probed.v}) PetscCall(VecDestroy(x));
+    if (plain.p) {
+      PetscBool p_equal;
+      PetscReal p_norm;
+      PetscCall(VecEqual(plain.p, probed.p, &p_equal));
+      PetscCall(VecNorm(plain.p, NORM_INFINITY, &p_norm));
+      unit::check(p_equal && p_norm > 0, scene + ": and the pore pressure (max |p| " + std::to_string(p_norm) + " Pa)");
+    }
+    for (Vec *x : {&plain.u, &plain.v, &probed.u, &probed.v, &plain.p, &probed.p}) PetscCall(VecDestroy(x));
   }
   PetscFunctionReturn(0);
 }

@@ -22,6 +22,9 @@ public:
   // checkpoint: its rows up to restart_step are copied (the new folder is complete on its own)
   // and the run appends to them.
   PetscErrorCode Open(const std::string &dir, const std::string &previous, PetscInt restart_step);
+  // Before Open, in saturated scenes: the fluid columns (fluid_stored, darcy_dissipated,
+  // fluid_inflow_work) follow the others.
+  void SetFluid(bool fluid) { fluid_ = fluid; }
   void           Append(PetscInt step, PetscReal t, const model::EnergyLedger &ledger, const interface::InterfaceTotals &interfaces);
   // Writes the rows kept since the last flush: the file on disk then holds every row so far.
   void Flush();
@@ -30,6 +33,7 @@ public:
 private:
   FILE       *file_ = nullptr;
   std::string pending_; // rows not yet written
+  bool        fluid_ = false;
 };
 
 } // namespace slipwave::app

@@ -49,6 +49,8 @@ public:
   // DMPlex point of node a of cell c.
   PetscInt  cellVertex(PetscInt c, PetscInt a) const { return cell_vertices_[c * nen_ + a]; }
   PetscInt  cellRegion(PetscInt c) const { return cell_region_[c]; }
+  // Index of cell c's element matrices: cells with the same index share region and geometry.
+  PetscInt  cellMatrix(PetscInt c) const { return cell_matrix_[c]; }
   const double *cellCoordinates(PetscInt c) const { return &cell_coords_[c * nen_ * dim_]; }
   // Writes every node's coordinates into a local vector's array of the displacement layout
   // (node at offset o: entries o .. o+dim-1), so a node's place can be read like its u.

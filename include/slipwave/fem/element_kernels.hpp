@@ -50,6 +50,15 @@ double elementVolume(CellShape s, const double *coords);
 // Plane strain: zz = lambda*(exx + eyy), yz = xz = 0.
 void elementStressOperator(CellShape s, const double *coords, const LameParameters &m, double *S);
 
+// Biot u-p coupling (docs/saturated-soil.md): Q[a][b*dim+j] = integral of N_a dN_b/dx_j, so
+// (Q u_e)_a is the nodal weight of div u and Q^T p_e the nodal force of a pore pressure p
+// (the force on the skeleton is +alpha Q^T p). Q: n x (n*dim) row-major. Same Gauss rules as
+// the stiffness (exact on parallelogram cells and simplices).
+void elementCoupling(CellShape s, const double *coords, double *Q);
+// Darcy diffusion H[a][b] = integral of grad N_a . grad N_b (times the mobility kappa of the
+// region where the caller applies it). H: n x n row-major.
+void elementDiffusion(CellShape s, const double *coords, double *H);
+
 // rowabs[r] = sum_c |K[r][c]|: Gershgorin bound on the element's largest eigenvalue.
 void elementStiffnessRowAbsSum(CellShape s, const double *coords, const LameParameters &m, double *rowabs);
 

@@ -37,6 +37,10 @@ public:
   PetscErrorCode AddForces(Vec u, Vec f);
   // The trial state of the last AddForces becomes the committed state (no-op without one).
   void Commit();
+  // Saturated soil side: from now on AddForces reads the pore pressure at the pairs' soil
+  // nodes from p (a global vector with one value per node, node i of it being node i of the
+  // displacement: model/pore_pressure.hpp) and applies the law in effective stress.
+  PetscErrorCode SetPorePressure(Vec p);
   // f += contact damping forces of the pairs closed in the last AddForces' trial, from the
   // velocity v (the half-step velocity that the step's other damping terms use). No-op
   // without contact damping.
@@ -104,6 +108,8 @@ private:
   double              max_drift_ = 0;
   VecScatter          scatter_ = nullptr;
   Vec                 pair_u_ = nullptr, pair_f_ = nullptr;
+  VecScatter          pore_scatter_ = nullptr; // the soil nodes' pore pressure (saturated soil side), or null
+  Vec                 pore_source_ = nullptr, pair_p_ = nullptr;
 };
 
 } // namespace slipwave::interface

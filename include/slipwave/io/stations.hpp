@@ -31,6 +31,10 @@ public:
   bool           empty() const { return names_.empty(); }
   // Samples the global u, v, a at time t.
   PetscErrorCode Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a);
+  // Saturated scenes, after each Sample: the pore pressure (global vectors, one dof per vertex
+  // on a clone of dm) joins the row as columns p (total: hydrostatic + excess) and p_excess
+  // [Pa], compression positive.
+  PetscErrorCode SamplePressure(DM pdm, Vec p_total, Vec p_excess);
   // Collective: appends the rows sampled since the last flush to the station files.
   PetscErrorCode Flush(MPI_Comm comm, const std::string &dir);
   PetscErrorCode Destroy();
@@ -39,7 +43,7 @@ public:
   void saveRecords(std::vector<double> *out) const;
   void loadRecords(const double *in, size_t n);
   size_t localStations() const { return local_.size(); }
-  int    rowWidth() const { return 1 + 3 * (int)dim_; }
+  int    rowWidth() const { return 1 + 3 * (int)dim_ + (has_pressure_ ? 2 : 0); }
 
 private:
   struct Local {
@@ -55,6 +59,8 @@ private:
   std::vector<std::string> ambiguities_;
   Vec                      work_[3] = {nullptr, nullptr, nullptr};
   size_t                   flushed_rows_ = 0; // rows per station already in the files
+  Vec                      pressure_local_[2] = {nullptr, nullptr};
+  bool                     has_pressure_ = false;
 };
 
 } // namespace slipwave::io

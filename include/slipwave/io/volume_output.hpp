@@ -17,7 +17,12 @@ public:
   // previous: output steps (step, time) already in DIR/volume.h5 to keep (a restart), or null.
   PetscErrorCode Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir, const std::vector<std::pair<PetscInt, PetscReal>> *previous = nullptr);
   // initial_stress: 6 per local cell added to the stress of u (the geostatic state), or empty.
-  PetscErrorCode Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a, const std::vector<double> &initial_stress);
+  // p_total, p_excess: saturated scenes, one value per node in the same node order (global
+  // vectors of model/pore_pressure.hpp), written as the node fields pore_pressure and
+  // excess_pore_pressure [Pa]; else null. The stress written is then the effective stress
+  // (total = effective - alpha p I).
+  PetscErrorCode Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a, const std::vector<double> &initial_stress,
+                       Vec p_total = nullptr, Vec p_excess = nullptr);
   PetscErrorCode Close();
 
 private:

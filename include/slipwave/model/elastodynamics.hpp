@@ -25,6 +25,7 @@ struct FreeField;  // model/free_field.hpp
 struct LateralTie; // model/lateral_tie.hpp
 struct Attenuation; // model/attenuation.hpp
 struct Drm;         // model/drm.hpp
+struct PorePressure; // model/pore_pressure.hpp
 
 struct Elastodynamics {
   MPI_Comm                        comm = MPI_COMM_NULL;
@@ -53,6 +54,8 @@ struct Elastodynamics {
   LateralTie *tie        = nullptr; // tied lateral sides (-bc_<side>_type tied), or null
   Attenuation *attenuation = nullptr; // constant-Q damping of regions with a damping ratio, or null
   Drm        *drm        = nullptr; // Domain Reduction Method input (-input_method drm), or null
+  PorePressure *pore = nullptr; // pore pressure of saturated regions, or null (dry scenes)
+  Vec       f_pore = nullptr;   // + alpha Q^T p, the pore pressure's force on the skeleton (saturated scenes only)
 };
 
 PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);

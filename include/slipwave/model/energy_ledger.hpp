@@ -28,6 +28,12 @@ struct EnergyLedger {
   double interface_work = 0; // cumulative work of the interface forces on the bulk (minus what
                              // the interfaces store and dissipate)
   double contact_damped = 0; // cumulative energy taken by the interfaces' contact dashpots
+  // Saturated scenes (model/pore_pressure.hpp): the pore pressure's work on the skeleton is
+  // internal; the fluid's shadow storage energy F_{n+1/2} joins the stored energy.
+  bool   fluid = false;
+  double fluid_stored = 0;   // F_{n+1/2} ≈ ½ pᵀ S p, S = ∫N/M
+  double darcy = 0;          // cumulative Darcy (viscous) dissipation, h ½ p_n H (p_n + p_{n-1})
+  double fluid_inflow = 0;   // cumulative work of the prescribed boundary inflow, h p_n q
   double shadow    = 0; // W_{n+1/2}
   double shadow_start = 0;
   double balance_error = 0;

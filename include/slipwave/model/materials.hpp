@@ -19,6 +19,7 @@ struct RegionMaterialInfo {
   fem::RegionMaterial       fe;            // element moduli: unrelaxed ones in a damped region (model/attenuation.hpp)
   double                    damping_ratio = 0; // constant-Q damping ratio; 0: elastic
   double                    reference_frequency = 0; // where vp, vs hold in a damped region [Hz]; 0: the global choice
+  double                    vp_undrained = 0; // saturated region: P speed with the pore fluid locked in (model/pore_pressure.hpp); 0: dry
 };
 
 PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regions, std::vector<RegionMaterialInfo> *materials);

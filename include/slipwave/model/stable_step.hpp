@@ -21,6 +21,8 @@ struct StableStep {
   double dt_without_interfaces = 0; // the bulk alone, to report what the penalty costs [s]
   double dt_free_field = 1e300; // the free-field columns' own limit (normally above the bulk's) [s]
   double dt_without_stiffness_damping = 0; // the same bound with beta = 0, to report what Rayleigh costs [s]
+  double dt_drained = 1e300;  // saturated scenes: the bulk bound without the undrained stiffening alpha^2 Q^T S^-1 Q [s]
+  double dt_diffusion = 1e300; // saturated scenes: the explicit pore-pressure diffusion limit [s]
   std::string governing;     // which constraint sets dt_limit
 };
 

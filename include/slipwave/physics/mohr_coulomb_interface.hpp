@@ -44,6 +44,18 @@ struct InterfaceLaw {
         sigma_t(p.tensile_strength), H(p.G + p.E * std::tan(p.phi) * std::tan(p.psi)), inv_H(1.0 / H) {}
 };
 
+// The law in effective stress, for an interface whose soil side is saturated
+// (docs/saturated-soil.md): with the pore pressure p at the soil node (compression positive),
+// the yield condition and the tension cut-off act on the effective normal traction
+// sigma_N + p, while sigma_N, the traction the springs carry, stays the total one:
+// |sigma_T| <= c - (sigma_N + p) tan(phi) = (c - p tan(phi)) - sigma_N tan(phi), and
+// sigma_N + p <= sigma_t. Opening and contact stay mechanical (the jump).
+inline InterfaceLaw interfaceLawWithPorePressure(InterfaceLaw law, double p) {
+  law.c -= p * law.tan_phi;
+  law.sigma_t -= p;
+  return law;
+}
+
 enum class InterfaceStatus : std::uint8_t { Stick = 0, Slip = 1, Open = 2 };
 
 // "stick", "slip" or "open".
