@@ -282,6 +282,7 @@ PetscErrorCode ElastodynamicsCommit(Elastodynamics *m) {
   for (auto &iface : m->interfaces) iface.Commit();
   FreeFieldCommit(m->free_field);
   AttenuationCommit(m->attenuation);
+  DrmCommit(m->drm);
   PetscFunctionReturn(0);
 }
 

@@ -67,22 +67,43 @@ def beyond_critical_velocity(rho, vp, vs, angle_deg, v_in, dt, x, y, xr, zr):
     coefficients complex (the same 2 x 2 zero-traction solve as above, in complex numbers). The
     incident velocity samples v_in (every dt from t = 0, zero padded 8x) are synthesised with
     numpy's FFT; time dependence e^{i w t}."""
-    p = np.sin(np.radians(angle_deg)) / vs
-    qp, qs = -1j * np.sqrt(p**2 - 1 / vp**2), np.sqrt(1 / vs**2 - p**2)
-    mu, lam = rho * vs**2, rho * vp**2 - 2 * rho * vs**2
+    medium = lambda f: (np.full(np.shape(f), complex(rho)), np.full(np.shape(f), complex(vp)), np.full(np.shape(f), complex(vs)))
+    return complex_medium_velocity(medium, np.sin(np.radians(angle_deg)) / vs, "sv", v_in, dt, x, y, xr, zr)
 
-    def traction(d, s):
-        return np.array([mu * (d[0] * s[1] + d[1] * s[0]), lam * (d[0] * s[0] + d[1] * s[1]) + 2 * mu * d[1] * s[1]])
 
-    inc = (np.array([vs * qs, vs * p]), np.array([p, -qs]))
-    rp = (np.array([vp * p, vp * qp]), np.array([p, qp]))
-    rs = (np.array([-vs * qs, vs * p]), np.array([p, qs]))
-    R = np.linalg.solve(np.column_stack([traction(*rp), traction(*rs)]), -traction(*inc))
-    z, n = -y, 8 * len(v_in)
-    om = 2 * np.pi * np.fft.rfftfreq(n, dt)
+def complex_medium_velocity(medium, p, wave, v_in, dt, x, y, xr, zr):
+    """(v_x, v_y) of a plane P or SV wave of real horizontal slowness p in a half-space whose
+    density and speeds at frequency f are medium(f) = (rho*, vp*, vs*) (complex for a damped
+    medium: Rayleigh rho* = rho (1 - i alpha/w), moduli (1 + i w beta) M; constant Q moduli
+    M_U M(w)/M_U), synthesised per frequency as above: vertical slownesses q = sqrt(1/c*^2 - p^2)
+    with Im q <= 0 (decaying downward), polarisations c* (p, +-q) (complex "unit" vectors, as in
+    slipwave's plane_wave_layered.hpp), the reflection coefficients from zero traction with the
+    moduli mu* = rho* vs*^2, lambda* = rho* vp*^2 - 2 mu*."""
+    n = 8 * len(v_in)
+    f = np.fft.rfftfreq(n, dt)
+    om = 2 * np.pi * f
     V = np.fft.rfft(v_in, n)
-    out = np.zeros((2, len(om)), complex)
-    for k, (amp, (d, s)) in enumerate(((1.0, inc), (R[0], rp), (R[1], rs))):
-        delay = p * (x - xr) + (-qs * (z - zr) if k == 0 else s[1] * z + qs * zr)
-        out += amp * np.outer([d[0], -d[1]], np.exp(-1j * om * delay))
+    z = -y
+    out = np.zeros((2, len(f)), complex)
+    for j in range(len(f)):
+        rho, vp, vs = (complex(c) for c in medium(f[j]))
+        mu, lam = rho * vs**2, rho * vp**2 - 2 * rho * vs**2
+
+        def vertical(c):
+            q = np.sqrt(1 / c**2 - p**2 + 0j)
+            return -q if q.imag > 0 else q
+
+        qp, qs = vertical(vp), vertical(vs)
+
+        def traction(d, s):
+            return np.array([mu * (d[0] * s[1] + d[1] * s[0]), lam * (d[0] * s[0] + d[1] * s[1]) + 2 * mu * d[1] * s[1]])
+
+        inc = (np.array([vp * p, -vp * qp]), np.array([p, -qp])) if wave == "p" else (np.array([vs * qs, vs * p]), np.array([p, -qs]))
+        q_in = qp if wave == "p" else qs
+        rp = (np.array([vp * p, vp * qp]), np.array([p, qp]))
+        rs = (np.array([-vs * qs, vs * p]), np.array([p, qs]))
+        R = np.linalg.solve(np.column_stack([traction(*rp), traction(*rs)]), -traction(*inc))
+        for k, (amp, (d, s)) in enumerate(((1.0, inc), (R[0], rp), (R[1], rs))):
+            delay = p * (x - xr) + (-q_in * (z - zr) if k == 0 else s[1] * z + q_in * zr)
+            out[:, j] += amp * np.array([d[0], -d[1]]) * np.exp(-1j * om[j] * delay)
     return np.array([np.fft.irfft(V * out[c], n)[: len(v_in)] for c in (0, 1)])
