@@ -451,15 +451,19 @@ PetscErrorCode report(const Elastodynamics &m, Drm *d, const DrmOptions &o, cons
   d->report.push_back(buf);
   std::string layers;
   for (size_t j = 0; j < site.materials.size(); ++j) {
-    char one[160];
+    char one[200], q[64] = "";
     const auto &mat = site.materials[j];
+    const double xi = m.materials[site_regions[j]].damping_ratio;
+    if (xi > 0) std::snprintf(q, sizeof q, ", constant Q xi %g %%", 100 * xi);
     if (j < site.thickness.size())
-      std::snprintf(one, sizeof one, "%s%g m of '%s' (vs %g)", j ? ", " : "", site.thickness[j], m.mesh.regions[site_regions[j]].c_str(), mat.vs);
+      std::snprintf(one, sizeof one, "%s%g m of '%s' (vs %g%s)", j ? ", " : "", site.thickness[j], m.mesh.regions[site_regions[j]].c_str(), mat.vs, q);
     else
-      std::snprintf(one, sizeof one, "%shalf-space '%s' (vp %g, vs %g)", j ? " on " : "", m.mesh.regions[site_regions[j]].c_str(), mat.vp, mat.vs);
+      std::snprintf(one, sizeof one, "%shalf-space '%s' (vp %g, vs %g%s)", j ? " on " : "", m.mesh.regions[site_regions[j]].c_str(), mat.vp, mat.vs, q);
     layers += one;
   }
   d->report.push_back("    DRM free-field site (the mesh's first column): " + layers);
+  if (m.rayleigh.alpha > 0 || m.rayleigh.beta > 0 || m.attenuation)
+    d->report.push_back("    DRM damped as the model: the free field with complex moduli per frequency, the forces with the layer's damping terms (docs/drm.md)");
   PetscFunctionReturn(0);
 }
 
