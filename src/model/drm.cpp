@@ -197,8 +197,10 @@ physics::MediumDamping regionDamping(const Elastodynamics &m, PetscInt r) {
 
 // The layered site the mesh holds: the cells crossed by the vertical line through the
 // horizontal point lo + h/100 (the mesh's first column), gathered from every rank, sorted by
-// depth, equal neighbours merged. Returns the materials by region index.
-PetscErrorCode siteFromMesh(MPI_Comm comm, const Elastodynamics &m, double surface, const double lo[3], double h, physics::LayeredSite *site,
+// depth, equal neighbours merged. Returns the materials by region index, and in *surface
+// (given: the mesh's top) the top of that column: the site's free surface, below the mesh's
+// top where a structure stands on the ground (the default scene's block).
+PetscErrorCode siteFromMesh(MPI_Comm comm, const Elastodynamics &m, double *surface, const double lo[3], double h, physics::LayeredSite *site,
                             std::vector<PetscInt> *site_regions) {
   const fem::BulkOperator &bulk = m.bulk;
   const double             x0[2] = {lo[0] + h / 100, lo[1] + h / 100};
@@ -206,7 +208,7 @@ PetscErrorCode siteFromMesh(MPI_Comm comm, const Elastodynamics &m, double surfa
   PetscFunctionBeginUser;
   for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
     double zlo, zhi;
-    if (verticalCrossing(bulk, c, x0, &zlo, &zhi)) mine.insert(mine.end(), {surface - zhi, surface - zlo, (double)bulk.cellRegion(c)});
+    if (verticalCrossing(bulk, c, x0, &zlo, &zhi)) mine.insert(mine.end(), {*surface - zhi, *surface - zlo, (double)bulk.cellRegion(c)});
   }
   PetscMPIInt size, n = (PetscMPIInt)mine.size();
   PetscCallMPI(MPI_Comm_size(comm, &size));
@@ -219,6 +221,9 @@ PetscErrorCode siteFromMesh(MPI_Comm comm, const Elastodynamics &m, double surfa
   for (size_t i = 0; i < all.size(); i += 3) column.push_back({all[i], all[i + 1], all[i + 2]});
   std::sort(column.begin(), column.end());
   PetscCheck(!column.empty(), comm, PETSC_ERR_PLIB, "DRM: no cell found in the mesh's first column");
+  const double top = column.front()[0];
+  for (auto &cell : column) cell[0] -= top, cell[1] -= top;
+  *surface -= top;
   std::vector<double> tops;
   site_regions->clear();
   double bottom = 0;
@@ -501,7 +506,7 @@ PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
   physics::LayeredSite  site;
   std::vector<PetscInt> site_regions;
   if (plane) {
-    PetscCall(siteFromMesh(comm, m, d->surface, lo, h, &site, &site_regions));
+    PetscCall(siteFromMesh(comm, m, &d->surface, lo, h, &site, &site_regions));
     const std::string problem = d->field.setup(site, d->wave, d->angle);
     PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "-input_method drm: %s", problem.c_str());
   }
