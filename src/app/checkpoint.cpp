@@ -9,6 +9,7 @@
 #include "slipwave/app/checkpoint_seal.hpp"
 #include "slipwave/app/scene_options.hpp"
 #include "slipwave/model/attenuation.hpp"
+#include "slipwave/model/drm.hpp"
 #include "slipwave/model/free_field.hpp"
 #include "slipwave/time/central_difference.hpp"
 
@@ -112,6 +113,7 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
   }
   PetscCall(viewLocalArray(comm, samples, viewer));
   if (s.model->attenuation) PetscCall(viewLocalArray(comm, model::AttenuationState(s.model->attenuation), viewer));
+  if (s.model->drm) PetscCall(viewLocalArray(comm, model::DrmState(s.model->drm), viewer));
   // The free-field columns are replicated on every rank: rank 0's copy is the state.
   for (PetscInt k = 0; k < header[8]; ++k) {
     const std::vector<double> column = s.model->free_field->sides[k].column.state();
@@ -204,6 +206,12 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
     PetscCall(loadLocalArray(comm, model::AttenuationStateSize(s.model->attenuation), viewer, &memory));
     PetscCheck(model::AttenuationSetState(s.model->attenuation, memory), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                "-restart = %s: the attenuation memory does not fit this mesh; allowed: the scene options of the run that wrote it", path.c_str());
+  }
+  if (s.model->drm) {
+    std::vector<double> drm;
+    PetscCall(loadLocalArray(comm, model::DrmStateSize(s.model->drm), viewer, &drm));
+    PetscCheck(model::DrmSetState(s.model->drm, drm), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+               "-restart = %s: the DRM state does not fit this mesh; allowed: the scene options of the run that wrote it", path.c_str());
   }
   const PetscInt sides = s.model->free_field ? (PetscInt)s.model->free_field->sides.size() : 0;
   PetscCheck(header[8] == sides, comm, PETSC_ERR_USER_INPUT, "-restart = %s has %" PetscInt_FMT " free-field sides, this scene %" PetscInt_FMT "; allowed: the scene options of the run that wrote it",

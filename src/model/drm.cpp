@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "slipwave/core/option_choice.hpp"
+#include "slipwave/model/attenuation.hpp"
 #include "slipwave/model/drm_field_file.hpp"
 #include "slipwave/model/elastodynamics.hpp"
 #include "slipwave/physics/plane_wave_layered.hpp"
@@ -35,6 +36,18 @@ struct Drm {
   FieldFileHistories          file_histories;
   bool                        synthesized = false;
   std::vector<double>         u0;                         // dim per DRM node, at the current time
+  // Damping of the forces (docs/drm.md, "Damped sites"): the stiffness-proportional Rayleigh
+  // term beta K v0 with the solver's half-step velocity, and the constant-Q memory of each
+  // layer cell's rows, both from the committed state (the last accepted step), as the
+  // solver's own memory (model/attenuation.hpp) is.
+  double                      beta = 0;                   // Rayleigh's stiffness coefficient [s]
+  std::vector<double>         omega;                      // relaxation frequencies w_l [rad/s]; empty: no constant Q
+  std::vector<double>         cell_weight;                // per layer cell: its region's Y_l (omega.size() each)
+  std::vector<double>         u0_committed, v0;           // dim per DRM node: u0 at the committed time, the half-step velocity
+  std::vector<double>         memory_committed, memory_trial; // per layer cell row and mechanism
+  std::vector<double>         drive_committed, drive_trial;   // per layer cell row: its K_be u0_e or K_eb u0_b
+  bool                        started = false, has_trial = false;
+  double                      committed_time = 0, trial_time = 0;
   Vec                         f_local = nullptr, f_global = nullptr;
   std::vector<std::string>    report;
 };
@@ -162,10 +175,32 @@ bool verticalCrossing(const fem::BulkOperator &bulk, PetscInt c, const double *x
   return *hi > *lo;
 }
 
+// Regions a and b are one site medium: the same material and damping (a constant-Q region's
+// element moduli also depend on its own reference frequency, through its unrelaxed factor).
+bool sameMedium(const Elastodynamics &m, PetscInt a, PetscInt b) {
+  const physics::ElasticMaterial &x = m.materials[a].elastic, &y = m.materials[b].elastic;
+  const bool same_q = !m.attenuation || (m.materials[a].damping_ratio == m.materials[b].damping_ratio && m.attenuation->region_factor[a] == m.attenuation->region_factor[b]);
+  return x.rho == y.rho && x.vp == y.vp && x.vs == y.vs && same_q;
+}
+
+// How the discrete model damps region r: the global Rayleigh coefficients and the region's
+// fitted constant-Q body with the factor on its element moduli.
+physics::MediumDamping regionDamping(const Elastodynamics &m, PetscInt r) {
+  physics::MediumDamping d;
+  d.rayleigh = m.rayleigh;
+  if (m.attenuation) {
+    d.constant_q       = m.attenuation->region_models[r];
+    d.unrelaxed_factor = m.attenuation->region_factor[r];
+  }
+  return d;
+}
+
 // The layered site the mesh holds: the cells crossed by the vertical line through the
 // horizontal point lo + h/100 (the mesh's first column), gathered from every rank, sorted by
-// depth, equal neighbours merged. Returns the materials by region index.
-PetscErrorCode siteFromMesh(MPI_Comm comm, const Elastodynamics &m, double surface, const double lo[3], double h, physics::LayeredSite *site,
+// depth, equal neighbours merged. Returns the materials by region index, and in *surface
+// (given: the mesh's top) the top of that column: the site's free surface, below the mesh's
+// top where a structure stands on the ground (the default scene's block).
+PetscErrorCode siteFromMesh(MPI_Comm comm, const Elastodynamics &m, double *surface, const double lo[3], double h, physics::LayeredSite *site,
                             std::vector<PetscInt> *site_regions) {
   const fem::BulkOperator &bulk = m.bulk;
   const double             x0[2] = {lo[0] + h / 100, lo[1] + h / 100};
@@ -173,7 +208,7 @@ PetscErrorCode siteFromMesh(MPI_Comm comm, const Elastodynamics &m, double surfa
   PetscFunctionBeginUser;
   for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
     double zlo, zhi;
-    if (verticalCrossing(bulk, c, x0, &zlo, &zhi)) mine.insert(mine.end(), {surface - zhi, surface - zlo, (double)bulk.cellRegion(c)});
+    if (verticalCrossing(bulk, c, x0, &zlo, &zhi)) mine.insert(mine.end(), {*surface - zhi, *surface - zlo, (double)bulk.cellRegion(c)});
   }
   PetscMPIInt size, n = (PetscMPIInt)mine.size();
   PetscCallMPI(MPI_Comm_size(comm, &size));
@@ -186,6 +221,9 @@ PetscErrorCode siteFromMesh(MPI_Comm comm, const Elastodynamics &m, double surfa
   for (size_t i = 0; i < all.size(); i += 3) column.push_back({all[i], all[i + 1], all[i + 2]});
   std::sort(column.begin(), column.end());
   PetscCheck(!column.empty(), comm, PETSC_ERR_PLIB, "DRM: no cell found in the mesh's first column");
+  const double top = column.front()[0];
+  for (auto &cell : column) cell[0] -= top, cell[1] -= top;
+  *surface -= top;
   std::vector<double> tops;
   site_regions->clear();
   double bottom = 0;
@@ -194,20 +232,15 @@ PetscErrorCode siteFromMesh(MPI_Comm comm, const Elastodynamics &m, double surfa
                "-input_method drm: the mesh's first column has a gap or overlap at depth %g m; the free-field site must be horizontally layered", bottom);
     bottom = cell[1];
     const auto region = (PetscInt)cell[2];
-    const auto &mat   = m.materials[region].elastic;
-    const bool  same  = !site_regions->empty() && [&] {
-      const auto &prev = m.materials[site_regions->back()].elastic;
-      return prev.rho == mat.rho && prev.vp == mat.vp && prev.vs == mat.vs;
-    }();
-    if (!same) {
+    if (site_regions->empty() || !sameMedium(m, site_regions->back(), region)) {
       site_regions->push_back(region);
       tops.push_back(cell[0]);
     }
   }
-  site->materials.clear();
-  site->thickness.clear();
+  *site = physics::LayeredSite{};
   for (size_t j = 0; j < site_regions->size(); ++j) {
     site->materials.push_back(m.materials[(*site_regions)[j]].elastic);
+    site->damping.push_back(regionDamping(m, (*site_regions)[j]));
     if (j + 1 < site_regions->size()) site->thickness.push_back(tops[j + 1] - tops[j]);
   }
   PetscFunctionReturn(0);
@@ -291,9 +324,9 @@ PetscErrorCode classify(const Elastodynamics &m, const DrmOptions &o, const doub
 
 // The layer: this rank's exterior cells with a b node, their nodes (coordinates, radial
 // coordinate in node_delay for now, depth), and the global counts and extremes. With a site
-// (the plane wave) every layer cell must hold the site's material at its depth.
+// (the plane wave) every layer cell must hold the site's material and damping at its depth.
 PetscErrorCode collectLayer(const Elastodynamics &m, Drm *d, const std::vector<char> &interior, const std::vector<double> &b_flag, const physics::LayeredSite *site,
-                            PetscInt counts[3], double *deepest_out) {
+                            const std::vector<PetscInt> &site_regions, PetscInt counts[3], double *deepest_out) {
   const MPI_Comm comm = m.comm;
   const PetscInt dim = m.dim, vert = dim - 1, nen = m.bulk.nodesPerCell();
   PetscFunctionBeginUser;
@@ -308,10 +341,7 @@ PetscErrorCode collectLayer(const Elastodynamics &m, Drm *d, const std::vector<c
     double clo[3], chi[3];
     cellBounds(m.bulk, c, clo, chi);
     const double                   zc   = d->surface - 0.5 * (clo[vert] + chi[vert]);
-    if (site) {
-      const physics::ElasticMaterial want = site->materials[mediumAt(*site, zc)], have = m.materials[m.bulk.cellRegion(c)].elastic;
-      if (!(want.rho == have.rho && want.vp == have.vp && want.vs == have.vs)) foreign_depth = std::max(foreign_depth, zc);
-    }
+    if (site && !sameMedium(m, site_regions[mediumAt(*site, zc)], m.bulk.cellRegion(c))) foreign_depth = std::max(foreign_depth, zc);
     d->cells.push_back(c);
     ++counts[0];
     for (PetscInt a = 0; a < nen; ++a) {
@@ -337,7 +367,7 @@ PetscErrorCode collectLayer(const Elastodynamics &m, Drm *d, const std::vector<c
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, counts, 1, MPIU_INT, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &foreign_depth, 1, MPI_DOUBLE, MPI_MAX, comm));
   PetscCheck(foreign_depth < 0, comm, PETSC_ERR_USER_INPUT,
-             "-input_method drm: a DRM layer cell at depth %g m has a material other than the free-field site's there (the mesh's first column); allowed: a layer "
+             "-input_method drm: a DRM layer cell at depth %g m has a material or damping other than the free-field site's there (the mesh's first column); allowed: a layer "
              "in the horizontally layered soil, away from the structure",
              foreign_depth);
   PetscCheck(counts[0] > 0, comm, PETSC_ERR_USER_INPUT, "-input_method drm: the DRM layer is empty (no cell outside the interior touches it); check -drm_box / -drm_regions");
@@ -380,6 +410,26 @@ PetscErrorCode countNodes(const Elastodynamics &m, const Drm *d, const std::vect
   PetscFunctionReturn(0);
 }
 
+// The damped forces' state: zero memory, the free field at rest.
+void setupDamping(const Elastodynamics &m, Drm *d) {
+  const size_t rows = d->cells.size() * m.bulk.nodesPerCell() * m.dim;
+  d->beta           = m.rayleigh.beta;
+  if (m.attenuation) {
+    d->omega = m.attenuation->omega;
+    for (PetscInt c : d->cells) {
+      const std::vector<double> &y = m.attenuation->region_models[m.bulk.cellRegion(c)].weight;
+      if (y.empty()) d->cell_weight.insert(d->cell_weight.end(), d->omega.size(), 0.0); // an elastic region's cell
+      else d->cell_weight.insert(d->cell_weight.end(), y.begin(), y.end());
+    }
+  }
+  d->u0_committed.assign(d->u0.size(), 0.0);
+  d->v0.assign(d->u0.size(), 0.0);
+  d->memory_committed.assign(rows * d->omega.size(), 0.0);
+  d->memory_trial = d->memory_committed;
+  d->drive_committed.assign(d->omega.empty() ? 0 : rows, 0.0);
+  d->drive_trial = d->drive_committed;
+}
+
 // The run report's lines: the wave (or the file), the layer, the site.
 PetscErrorCode report(const Elastodynamics &m, Drm *d, const DrmOptions &o, const PetscInt counts[3], const physics::LayeredSite &site,
                       const std::vector<PetscInt> &site_regions) {
@@ -406,15 +456,19 @@ PetscErrorCode report(const Elastodynamics &m, Drm *d, const DrmOptions &o, cons
   d->report.push_back(buf);
   std::string layers;
   for (size_t j = 0; j < site.materials.size(); ++j) {
-    char one[160];
+    char one[200], q[64] = "";
     const auto &mat = site.materials[j];
+    const double xi = m.materials[site_regions[j]].damping_ratio;
+    if (xi > 0) std::snprintf(q, sizeof q, ", constant Q xi %g %%", 100 * xi);
     if (j < site.thickness.size())
-      std::snprintf(one, sizeof one, "%s%g m of '%s' (vs %g)", j ? ", " : "", site.thickness[j], m.mesh.regions[site_regions[j]].c_str(), mat.vs);
+      std::snprintf(one, sizeof one, "%s%g m of '%s' (vs %g%s)", j ? ", " : "", site.thickness[j], m.mesh.regions[site_regions[j]].c_str(), mat.vs, q);
     else
-      std::snprintf(one, sizeof one, "%shalf-space '%s' (vp %g, vs %g)", j ? " on " : "", m.mesh.regions[site_regions[j]].c_str(), mat.vp, mat.vs);
+      std::snprintf(one, sizeof one, "%shalf-space '%s' (vp %g, vs %g%s)", j ? " on " : "", m.mesh.regions[site_regions[j]].c_str(), mat.vp, mat.vs, q);
     layers += one;
   }
   d->report.push_back("    DRM free-field site (the mesh's first column): " + layers);
+  if (m.rayleigh.alpha > 0 || m.rayleigh.beta > 0 || m.attenuation)
+    d->report.push_back("    DRM damped as the model: the free field with complex moduli per frequency, the forces with the layer's damping terms (docs/drm.md)");
   PetscFunctionReturn(0);
 }
 
@@ -435,8 +489,6 @@ PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
   }
   PetscCheck(m.bc.input_wave == InputWave::None, comm, PETSC_ERR_USER_INPUT,
              "-input_wave = %s with -input_method drm; allowed: -input_wave none (DRM brings the wave in through its layer, -drm_wave)", inputWaveName(m.bc.input_wave));
-  PetscCheck(m.damping_ratio == 0 && !m.attenuation, comm, PETSC_ERR_USER_INPUT,
-             "-input_method drm with Rayleigh or constant-Q damping; allowed: undamped models (the DRM free field is elastic)");
   d->wave    = (physics::PlaneWaveType)o.wave;
   d->angle   = std::fabs(o.angle);
   d->azimuth = dim == 2 ? (o.angle < 0 ? 180 : 0) : o.azimuth;
@@ -454,7 +506,7 @@ PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
   physics::LayeredSite  site;
   std::vector<PetscInt> site_regions;
   if (plane) {
-    PetscCall(siteFromMesh(comm, m, d->surface, lo, h, &site, &site_regions));
+    PetscCall(siteFromMesh(comm, m, &d->surface, lo, h, &site, &site_regions));
     const std::string problem = d->field.setup(site, d->wave, d->angle);
     PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "-input_method drm: %s", problem.c_str());
   }
@@ -464,7 +516,7 @@ PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
   PetscCall(classify(m, o, lo, hi, h, &interior, &b_flag));
   PetscInt counts[3] = {0, 0, 0}; // layer cells, b nodes, e nodes
   double   deepest;
-  PetscCall(collectLayer(m, d, interior, b_flag, plane ? &site : nullptr, counts, &deepest));
+  PetscCall(collectLayer(m, d, interior, b_flag, plane ? &site : nullptr, site_regions, counts, &deepest));
   d->reference_depth = plane ? std::max(deepest, d->field.halfspaceDepth()) : 0;
   indexDepths(d, h);
   d->u0.assign(dim * d->node_offset.size(), 0.0);
@@ -474,6 +526,7 @@ PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
   PetscCall(DMCreateGlobalVector(m.dm, &d->f_global));
 
   PetscCall(countNodes(m, d, b_flag, &counts[1]));
+  setupDamping(m, d);
   PetscCall(report(m, d, o, counts, site, site_regions));
   *out = d;
   PetscFunctionReturn(0);
@@ -523,8 +576,15 @@ void planeWaveDisplacements(Drm *d, PetscInt dim, double t) {
 } // namespace
 
 PetscErrorCode DrmAddForce(Drm *d, const Elastodynamics &m, TS ts, PetscReal t, Vec f) {
+  constexpr int  kMaxMechanisms = 8;
   const PetscInt dim = m.dim, nen = m.bulk.nodesPerCell(), nd = nen * dim;
+  const size_t   L = d->omega.size();
   PetscFunctionBeginUser;
+  // Before the first commit the trial starts at t (a zero interval), like the solver's memory.
+  const double t_committed = d->started ? d->committed_time : t;
+  PetscCheck(t >= t_committed, PETSC_COMM_SELF, PETSC_ERR_ORDER, "DRM: force asked at t = %g s, before the committed state at %g s", (double)t, t_committed);
+  d->trial_time = t;
+  d->has_trial  = true;
   if (!d->file.empty()) {
     for (size_t k = 0; k < d->node_offset.size(); ++k)
       for (PetscInt i = 0; i < dim; ++i) d->u0[dim * k + i] = FieldFileDisplacement(d->file_histories, k, (int)i, t);
@@ -532,6 +592,13 @@ PetscErrorCode DrmAddForce(Drm *d, const Elastodynamics &m, TS ts, PetscReal t, 
     if (!d->synthesized) PetscCall(synthesize(d, ts));
     planeWaveDisplacements(d, dim, t);
   }
+  // The solver's stiffness-proportional damping uses v_{n+1/2} = (u_{n+1} - u_n)/h, so the free
+  // field's is the same difference of u0; at the first call (t_0, where the solver uses v_0)
+  // the free field is at rest.
+  if (d->beta > 0)
+    for (size_t k = 0; k < d->u0.size(); ++k) d->v0[k] = t > t_committed ? (d->u0[k] - d->u0_committed[k]) / (t - t_committed) : 0.0;
+  physics::MemoryUpdate upd[kMaxMechanisms];
+  for (size_t l = 0; l < L; ++l) upd[l] = physics::memoryUpdate(d->omega[l], t - t_committed);
   PetscScalar *fl;
   PetscCall(VecZeroEntries(d->f_local));
   PetscCall(VecGetArray(d->f_local, &fl));
@@ -541,13 +608,26 @@ PetscErrorCode DrmAddForce(Drm *d, const Elastodynamics &m, TS ts, PetscReal t, 
     const char   *is_b  = &d->cell_node_is_b[ci * nen];
     for (PetscInt a = 0; a < nen; ++a)
       for (PetscInt i = 0; i < dim; ++i) {
-        // P_b = -K_be u0_e on b rows, P_e = +K_eb u0_b on e rows.
-        double s = 0;
+        // P_b = -F_be u0_e on b rows, P_e = +F_eb u0_b on e rows, F the layer's internal force:
+        // K u0 + beta K v0 - (constant-Q memory driven by K u0).
+        double s = 0, sv = 0;
         for (PetscInt b = 0; b < nen; ++b) {
           if (is_b[a] == is_b[b]) continue;
-          for (PetscInt j = 0; j < dim; ++j) s += K[(a * dim + i) * nd + b * dim + j] * d->u0[dim * nodes[b] + j];
+          for (PetscInt j = 0; j < dim; ++j) {
+            s += K[(a * dim + i) * nd + b * dim + j] * d->u0[dim * nodes[b] + j];
+            sv += K[(a * dim + i) * nd + b * dim + j] * d->v0[dim * nodes[b] + j];
+          }
         }
-        fl[d->node_offset[nodes[a]] + i] += is_b[a] ? -s : s;
+        double        force = s + d->beta * sv;
+        const size_t  row   = ci * nd + a * dim + i;
+        const double *y     = L ? &d->cell_weight[ci * L] : nullptr;
+        for (size_t l = 0; l < L; ++l) {
+          const double z = upd[l].decay * d->memory_committed[row * L + l] + y[l] * (upd[l].end * s + upd[l].start * d->drive_committed[row]);
+          d->memory_trial[row * L + l] = z;
+          force -= z;
+        }
+        if (L) d->drive_trial[row] = s;
+        fl[d->node_offset[nodes[a]] + i] += is_b[a] ? -force : force;
       }
   }
   PetscCall(VecRestoreArray(d->f_local, &fl));
@@ -558,5 +638,36 @@ PetscErrorCode DrmAddForce(Drm *d, const Elastodynamics &m, TS ts, PetscReal t, 
 }
 
 std::vector<std::string> DrmReport(const Drm *d) { return d ? d->report : std::vector<std::string>{}; }
+
+void DrmCommit(Drm *d) {
+  if (!d || !d->has_trial) return;
+  d->memory_committed.swap(d->memory_trial);
+  d->drive_committed.swap(d->drive_trial);
+  d->u0_committed   = d->u0;
+  d->started        = true;
+  d->committed_time = d->trial_time;
+  d->has_trial      = false;
+}
+
+std::vector<double> DrmState(const Drm *d) {
+  std::vector<double> s = {d->started ? 1.0 : 0.0, d->committed_time};
+  for (const std::vector<double> *x : {&d->u0_committed, &d->memory_committed, &d->drive_committed}) s.insert(s.end(), x->begin(), x->end());
+  return s;
+}
+
+bool DrmSetState(Drm *d, const std::vector<double> &s) {
+  if ((PetscInt)s.size() != DrmStateSize(d)) return false;
+  d->started        = s[0] != 0;
+  d->committed_time = s[1];
+  d->has_trial      = false;
+  size_t o          = 2;
+  for (std::vector<double> *x : {&d->u0_committed, &d->memory_committed, &d->drive_committed}) {
+    std::copy(s.begin() + o, s.begin() + o + x->size(), x->begin());
+    o += x->size();
+  }
+  return true;
+}
+
+PetscInt DrmStateSize(const Drm *d) { return (PetscInt)(2 + d->u0_committed.size() + d->memory_committed.size() + d->drive_committed.size()); }
 
 } // namespace slipwave::model

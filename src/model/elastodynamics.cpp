@@ -318,6 +318,7 @@ PetscErrorCode ElastodynamicsCommit(Elastodynamics *m) {
   FreeFieldCommit(m->free_field);
   AttenuationCommit(m->attenuation);
   PorePressureCommit(m->pore);
+  DrmCommit(m->drm);
   PetscFunctionReturn(0);
 }
 

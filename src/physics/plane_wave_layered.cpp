@@ -39,6 +39,7 @@ void solveDense(std::vector<Complex> &A, std::vector<Complex> &b) {
 std::string PlaneWaveLayered::setup(const LayeredSite &site, PlaneWaveType wave, double angle_deg) {
   char buf[200];
   if (site.materials.size() != site.thickness.size() + 1) return "a layered site needs one material per layer plus the half-space";
+  if (!site.damping.empty() && site.damping.size() != site.materials.size()) return "a damped site needs one damping per material";
   for (const ElasticMaterial &m : site.materials) {
     const std::string problem = elasticMaterialProblem(m);
     if (!problem.empty()) return problem;
@@ -68,28 +69,39 @@ std::string PlaneWaveLayered::setup(const LayeredSite &site, PlaneWaveType wave,
   return "";
 }
 
-Complex PlaneWaveLayered::verticalSlowness(size_t j, bool s_wave) const {
-  const double c = s_wave ? site_.materials[j].vs : site_.materials[j].vp;
-  const double r = 1 / (c * c) - p_ * p_;
-  // Evanescent: q = -i sqrt(p^2 - 1/c^2), so e^{-i w q z} decays downward for w > 0.
-  return r >= 0 ? Complex(std::sqrt(r), 0) : Complex(0, -std::sqrt(-r));
+DampedMedium PlaneWaveLayered::medium(size_t j, double w) const {
+  if (site_.damping.empty()) {
+    const LameParameters lm = lame(site_.materials[j]);
+    return {site_.materials[j].rho, lm.lambda, lm.mu};
+  }
+  return dampedMedium(site_.materials[j], site_.damping[j], w);
 }
 
-PlaneWaveLayered::Wave PlaneWaveLayered::wave(size_t j, bool s_wave, bool down) const {
-  const ElasticMaterial &m   = site_.materials[j];
-  const LameParameters   lm  = lame(m);
-  const Complex          sz  = down ? verticalSlowness(j, s_wave) : -verticalSlowness(j, s_wave);
-  const double           sx  = p_;
-  Wave                   w{};
+Complex PlaneWaveLayered::verticalSlowness(size_t j, bool s_wave, double w) const {
+  const DampedMedium m = medium(j, w);
+  const Complex      c = s_wave ? m.vs() : m.vp();
+  const Complex      r = 1.0 / (c * c) - p_ * p_;
+  // The root with Im q <= 0, so e^{-i w q z} decays downward for w > 0. Elastic evanescent
+  // waves (r < 0 real) get q = -i sqrt(p^2 - 1/c^2); damped ones (Im r < 0) the principal root.
+  const Complex q = std::sqrt(r);
+  return q.imag() > 0 ? -q : q;
+}
+
+PlaneWaveLayered::Wave PlaneWaveLayered::wave(size_t j, bool s_wave, bool down, double w) const {
+  const DampedMedium m  = medium(j, w);
+  const Complex      sz = down ? verticalSlowness(j, s_wave, w) : -verticalSlowness(j, s_wave, w);
+  const double       sx = p_;
+  Wave               wv{};
   if (wave_ == PlaneWaveType::SH) {
-    w.d   = {0, 1, 0};
-    w.tau = {0, lm.mu * sz, 0};
-    return w;
+    wv.d   = {0, 1, 0};
+    wv.tau = {0, m.mu * sz, 0};
+    return wv;
   }
-  w.d          = s_wave ? std::array<Complex, 3>{-m.vs * sz, 0, m.vs * sx} : std::array<Complex, 3>{m.vp * sx, 0, m.vp * sz};
-  const Complex div = w.d[0] * sx + w.d[2] * sz; // d . s
-  w.tau        = {lm.mu * (w.d[0] * sz + w.d[2] * sx), 0, lm.lambda * div + 2 * lm.mu * w.d[2] * sz};
-  return w;
+  const Complex c = s_wave ? m.vs() : m.vp();
+  wv.d            = s_wave ? std::array<Complex, 3>{-c * sz, 0, c * sx} : std::array<Complex, 3>{c * sx, 0, c * sz};
+  const Complex div = wv.d[0] * sx + wv.d[2] * sz; // d . s
+  wv.tau          = {m.mu * (wv.d[0] * sz + wv.d[2] * sx), 0, m.lambda * div + 2.0 * m.mu * wv.d[2] * sz};
+  return wv;
 }
 
 std::vector<Complex> PlaneWaveLayered::amplitudes(double w) const {
@@ -104,13 +116,13 @@ std::vector<Complex> PlaneWaveLayered::amplitudes(double w) const {
   auto waveOf = [&](size_t medium, size_t k) { // k-th wave of a medium: down waves first
     const bool down = k < nw / 2;
     const bool s    = sh || (k % 2 == 1);
-    return wave(medium, s, down);
+    return wave(medium, s, down, w);
   };
   // Phase of wave k of layer j at depth z: e^{-i w s_z (z - z_ref)}, z_ref its top (down) or bottom (up).
   auto phase = [&](size_t j, size_t k, double z) {
     const bool    down = k < nw / 2;
     const bool    s    = sh || (k % 2 == 1);
-    const Complex sz   = down ? verticalSlowness(j, s) : -verticalSlowness(j, s);
+    const Complex sz   = down ? verticalSlowness(j, s, w) : -verticalSlowness(j, s, w);
     const double  zref = down ? top_[j] : top_[j + 1];
     return std::exp(Complex(0, -w) * sz * (z - zref));
   };
@@ -120,7 +132,7 @@ std::vector<Complex> PlaneWaveLayered::amplitudes(double w) const {
   for (size_t r = 0; r < ns; ++r) {
     if (N == 0) {
       for (size_t k = 0; k < nw / 2; ++k) A[r * n + k] = stateRow(waveOf(0, k), ns + r);
-      b[r] -= stateRow(wave(0, wave_ != PlaneWaveType::P, false), ns + r);
+      b[r] -= stateRow(wave(0, wave_ != PlaneWaveType::P, false, w), ns + r);
     } else
       for (size_t k = 0; k < nw; ++k) A[r * n + k] = stateRow(waveOf(0, k), ns + r) * phase(0, k, 0.0);
   }
@@ -133,7 +145,7 @@ std::vector<Complex> PlaneWaveLayered::amplitudes(double w) const {
       const size_t below     = halfspace ? nw / 2 : nw;
       for (size_t k = 0; k < below; ++k)
         A[row * n + (j + 1) * nw + k] = -stateRow(waveOf(j + 1, k), r) * (halfspace ? Complex(1) : phase(j + 1, k, top_[j + 1]));
-      if (halfspace) b[row] += stateRow(wave(N, wave_ != PlaneWaveType::P, false), r);
+      if (halfspace) b[row] += stateRow(wave(N, wave_ != PlaneWaveType::P, false, w), r);
     }
   solveDense(A, b);
   return b;
@@ -155,16 +167,16 @@ PlaneWaveLayered::State PlaneWaveLayered::stateAt(const std::vector<Complex> &am
   if (j < N) {
     for (size_t k = 0; k < nw; ++k) {
       const bool    down = k < nw / 2, s = sh || (k % 2 == 1);
-      const Complex sz   = down ? verticalSlowness(j, s) : -verticalSlowness(j, s);
-      add(wave(j, s, down), amp[j * nw + k] * std::exp(iw * sz * (z - (down ? top_[j] : top_[j + 1]))));
+      const Complex sz   = down ? verticalSlowness(j, s, w) : -verticalSlowness(j, s, w);
+      add(wave(j, s, down, w), amp[j * nw + k] * std::exp(iw * sz * (z - (down ? top_[j] : top_[j + 1]))));
     }
   } else {
     const double zt = top_[N];
     const bool   s_in = wave_ != PlaneWaveType::P;
-    add(wave(N, s_in, false), std::exp(iw * (-verticalSlowness(N, s_in)) * (z - zt)));
+    add(wave(N, s_in, false, w), std::exp(iw * (-verticalSlowness(N, s_in, w)) * (z - zt)));
     for (size_t k = 0; k < nw / 2; ++k) {
       const bool s = sh || k == 1;
-      add(wave(N, s, true), amp[N * nw + k] * std::exp(iw * verticalSlowness(N, s) * (z - zt)));
+      add(wave(N, s, true, w), amp[N * nw + k] * std::exp(iw * verticalSlowness(N, s, w) * (z - zt)));
     }
   }
   st.u[2] = -st.u[2]; // z down -> up
@@ -179,20 +191,20 @@ PlaneWaveHistories synthesizeHistories(const PlaneWaveLayered &field, const std:
   fft(input, false);
   // The incident wave has unit amplitude at the half-space top; at reference_depth its phase
   // is e^{i w q (zr - zN)} (up-going), so dividing by it puts v_in at the reference depth.
-  const Complex q_hs  = field.verticalSlowness(field.layerCount(), field.wave() != PlaneWaveType::P);
   const double  shift = reference_depth - field.halfspaceDepth();
   const size_t  nd    = depths.size();
   std::vector<std::vector<Complex>> out(3 * nd, std::vector<Complex>(n, 0.0));
   for (size_t j = 0; j <= n / 2; ++j) {
     const double               w   = 2 * M_PI * (double)j / ((double)n * dt);
     const std::vector<Complex> amp = field.amplitudes(w);
-    const Complex              ref = std::exp(Complex(0, -w) * q_hs * shift);
+    const Complex              q_hs = field.verticalSlowness(field.layerCount(), field.wave() != PlaneWaveType::P, w);
+    const Complex              ref  = std::exp(Complex(0, -w) * q_hs * shift);
     for (size_t d = 0; d < nd; ++d) {
       const PlaneWaveLayered::State st = field.stateAt(amp, w, depths[d]);
       for (size_t c = 0; c < 3; ++c) {
         const Complex y = input[j] * st.u[c] * ref;
         if (j == 0 || 2 * j == n) {
-          out[3 * d + c][j] = y.real(); // real input, real transfer at w = 0 and at Nyquist
+          out[3 * d + c][j] = y.real(); // real input: the transfer is real at w = 0; at Nyquist (complex when damped) its real part is kept
         } else {
           out[3 * d + c][j]     = y;
           out[3 * d + c][n - j] = std::conj(y);

@@ -67,22 +67,49 @@ def beyond_critical_velocity(rho, vp, vs, angle_deg, v_in, dt, x, y, xr, zr):
     coefficients complex (the same 2 x 2 zero-traction solve as above, in complex numbers). The
     incident velocity samples v_in (every dt from t = 0, zero padded 8x) are synthesised with
     numpy's FFT; time dependence e^{i w t}."""
-    p = np.sin(np.radians(angle_deg)) / vs
-    qp, qs = -1j * np.sqrt(p**2 - 1 / vp**2), np.sqrt(1 / vs**2 - p**2)
+    medium = lambda f: (np.full(np.shape(f), complex(rho)), np.full(np.shape(f), complex(vp)), np.full(np.shape(f), complex(vs)))
+    return complex_medium_velocity(medium, np.sin(np.radians(angle_deg)) / vs, "sv", v_in, dt, x, y, xr, zr)
+
+
+def complex_medium_velocity(medium, p, wave, v_in, dt, x, y, xr, zr):
+    """(v_x, v_y) of a plane P or SV wave of real horizontal slowness p in a half-space whose
+    density and speeds at frequency f are medium(f) = (rho*, vp*, vs*) (complex for a damped
+    medium: Rayleigh rho* = rho (1 - i alpha/w), moduli (1 + i w beta) M; constant Q moduli
+    M_U M(w)/M_U), synthesised per frequency as above: vertical slownesses q = sqrt(1/c*^2 - p^2)
+    with Im q <= 0 (decaying downward), polarisations c* (p, +-q) (complex "unit" vectors, as in
+    slipwave's plane_wave_layered.hpp), the reflection coefficients from zero traction with the
+    moduli mu* = rho* vs*^2, lambda* = rho* vp*^2 - 2 mu*. x, y may be arrays of points: the
+    result is then (2, points, samples). Any history works in place of the velocity (the
+    displacement gives the displacement)."""
+    n = 8 * len(v_in)
+    f = np.fft.rfftfreq(n, dt)
+    om = 2 * np.pi * f
+    media = [tuple(complex(c) for c in medium(fj)) for fj in f]
+    rho, vp, vs = (np.array([m[k] for m in media]) for k in range(3))
     mu, lam = rho * vs**2, rho * vp**2 - 2 * rho * vs**2
 
-    def traction(d, s):
-        return np.array([mu * (d[0] * s[1] + d[1] * s[0]), lam * (d[0] * s[0] + d[1] * s[1]) + 2 * mu * d[1] * s[1]])
+    def vertical(c):
+        q = np.sqrt(1 / c**2 - p**2 + 0j)
+        return np.where(q.imag > 0, -q, q)
 
-    inc = (np.array([vs * qs, vs * p]), np.array([p, -qs]))
-    rp = (np.array([vp * p, vp * qp]), np.array([p, qp]))
-    rs = (np.array([-vs * qs, vs * p]), np.array([p, qs]))
-    R = np.linalg.solve(np.column_stack([traction(*rp), traction(*rs)]), -traction(*inc))
-    z, n = -y, 8 * len(v_in)
-    om = 2 * np.pi * np.fft.rfftfreq(n, dt)
+    qp, qs = vertical(vp), vertical(vs)
+    one = np.ones_like(qp)
+
+    def traction(d, s):  # per frequency; d, s: (x, z) pairs of arrays
+        return np.stack([mu * (d[0] * s[1] + d[1] * s[0]), lam * (d[0] * s[0] + d[1] * s[1]) + 2 * mu * d[1] * s[1]], axis=-1)
+
+    inc = ((vp * p, -vp * qp), (p * one, -qp)) if wave == "p" else ((vs * qs, vs * p), (p * one, -qs))
+    q_in = qp if wave == "p" else qs
+    rp = ((vp * p, vp * qp), (p * one, qp))
+    rs = ((-vs * qs, vs * p), (p * one, qs))
+    R = np.linalg.solve(np.stack([traction(*rp), traction(*rs)], axis=-1), -traction(*inc)[..., None])[..., 0]
     V = np.fft.rfft(v_in, n)
-    out = np.zeros((2, len(om)), complex)
-    for k, (amp, (d, s)) in enumerate(((1.0, inc), (R[0], rp), (R[1], rs))):
-        delay = p * (x - xr) + (-qs * (z - zr) if k == 0 else s[1] * z + qs * zr)
-        out += amp * np.outer([d[0], -d[1]], np.exp(-1j * om * delay))
-    return np.array([np.fft.irfft(V * out[c], n)[: len(v_in)] for c in (0, 1)])
+    xs, zs = np.atleast_1d(np.asarray(x, float))[:, None], -np.atleast_1d(np.asarray(y, float))[:, None]
+    out = np.zeros((2, len(xs), len(f)), complex)
+    for k, (amp, (d, s)) in enumerate(((one, inc), (R[:, 0], rp), (R[:, 1], rs))):
+        delay = p * (xs - xr) + (-q_in * (zs - zr) if k == 0 else s[1] * zs + q_in * zr)
+        phase = amp * np.exp(-1j * om * delay)
+        out[0] += d[0] * phase
+        out[1] -= d[1] * phase
+    result = np.fft.irfft(V * out, n)[..., : len(v_in)]
+    return result if np.ndim(x) else result[:, 0]

@@ -56,7 +56,7 @@ void fftAgainstDft() {
 void halfspaceReflection(PlaneWaveType wave, double angle) {
   const ElasticMaterial m = rock;
   PlaneWaveLayered      f;
-  unit::check(f.setup({{}, {m}}, wave, angle).empty(), "half-space setup");
+  unit::check(f.setup({{}, {m}, {}}, wave, angle).empty(), "half-space setup");
   const double p = f.horizontalSlowness(), a = m.vp, b = m.vs;
   const double ci = std::sqrt(1 - p * p * a * a), cj = std::sqrt(1 - p * p * b * b);
   const double g = 1 / (b * b) - 2 * p * p, D = g * g + 4 * p * p * (ci / a) * (cj / b);
@@ -70,7 +70,7 @@ void halfspaceReflection(PlaneWaveType wave, double angle) {
   unit::near(std::abs(amp[1]), std::fabs(P ? PS : PP), 1e-12, 1e-14, what);
 }
 
-LayeredSite threeLayers() { return {{8, 12, 20}, {clay, soil, {2100, 900, 400}, rock}}; }
+LayeredSite threeLayers() { return {{8, 12, 20}, {clay, soil, {2100, 900, 400}, rock}, {}}; }
 
 void boundaryConditions(PlaneWaveType wave, double angle) {
   PlaneWaveLayered f;
@@ -105,7 +105,7 @@ void energyFlux(PlaneWaveType wave, double angle) {
   PlaneWaveLayered f;
   unit::check(f.setup(threeLayers(), wave, angle).empty(), "layered setup");
   const size_t  N  = f.layerCount();
-  const double  qP = f.verticalSlowness(N, false).real(), qS = f.verticalSlowness(N, true).real();
+  const double  qP = f.verticalSlowness(N, false, 0.0).real(), qS = f.verticalSlowness(N, true, 0.0).real();
   const double  fP = rock.rho * rock.vp * rock.vp * qP, fS = rock.rho * rock.vs * rock.vs * qS;
   const size_t  nw = wave == PlaneWaveType::SH ? 2 : 4;
   double        worst = 0;
@@ -124,8 +124,8 @@ void energyFlux(PlaneWaveType wave, double angle) {
 void oneLayerTransfer(PlaneWaveType wave, double angle) {
   const double     H = 30;
   PlaneWaveLayered f;
-  unit::check(f.setup({{H}, {soil, rock}}, wave, angle).empty(), "one-layer setup");
-  const Complex q1 = f.verticalSlowness(0, true), q2 = f.verticalSlowness(1, true);
+  unit::check(f.setup({{H}, {soil, rock}, {}}, wave, angle).empty(), "one-layer setup");
+  const Complex q1 = f.verticalSlowness(0, true, 0.0), q2 = f.verticalSlowness(1, true, 0.0);
   const double  ratio = (lame(soil).mu * q1.real()) / (lame(rock).mu * q2.real());
   double        worst = 0;
   for (double hz = 0.25; hz < 12; hz += 0.25) {
@@ -141,7 +141,7 @@ void oneLayerTransfer(PlaneWaveType wave, double angle) {
 
 void verticalRickerHistories() {
   PlaneWaveLayered f;
-  unit::check(f.setup({{}, {soil}}, PlaneWaveType::SV, 0).empty(), "half-space setup");
+  unit::check(f.setup({{}, {soil}, {}}, PlaneWaveType::SV, 0).empty(), "half-space setup");
   const RickerWavelet ricker{0.1, 4.0, 0.4};
   const double        dt = 1e-3, zr = 100;
   std::vector<double> v_in(2000);

@@ -24,8 +24,12 @@
 // TimeFunction options: wavelet or record) is that of the incident up-going wave at the
 // reference point: the upstream edge of the DRM nodes, at the deepest DRM node or the top of
 // the half-space if that is deeper; so no DRM node moves before t = 0 (causal).
-// The free field is elastic: Rayleigh or constant-Q damping and the base input (-input_wave)
-// are refused with -input_method drm.
+// Damped sites (docs/drm.md, "Damped sites"): the free field uses each medium's complex
+// density and moduli (physics/damped_medium.hpp); the forces use the layer's whole internal
+// force F u0 = K u0 + beta K v0 - (constant-Q memory driven by K u0), the memory of each
+// layer cell's rows updated exactly as the solver's (physics::memoryUpdate) from the last
+// committed step, v0 the free field's half-step velocity. The mass-proportional terms (alpha M,
+// lumped) couple no b and e nodes. The base input (-input_wave) is refused with drm.
 //
 // The forces are external work booked as input (they go into Elastodynamics::f_input).
 #pragma once
@@ -48,5 +52,11 @@ PetscErrorCode DrmDestroy(Drm **drm);
 PetscErrorCode DrmAddForce(Drm *drm, const Elastodynamics &model, TS ts, PetscReal t, Vec f);
 // Lines for the run report (empty without DRM).
 std::vector<std::string> DrmReport(const Drm *drm);
+// The trial of the last DrmAddForce (memory, u0) becomes the committed state (no-op without one).
+void DrmCommit(Drm *drm);
+// Committed state for checkpoints: [started, committed_time, u0 and memory of this rank].
+std::vector<double> DrmState(const Drm *drm);
+bool                DrmSetState(Drm *drm, const std::vector<double> &state);
+PetscInt            DrmStateSize(const Drm *drm);
 
 } // namespace slipwave::model

@@ -1,6 +1,8 @@
-// Exact plane P, SV or SH waves in a horizontally layered elastic half-space with a free
-// surface, in the frequency domain (time dependence e^{i w t}), for the Domain Reduction
-// Method's free field.
+// Exact plane P, SV or SH waves in a horizontally layered elastic or damped half-space with a
+// free surface, in the frequency domain (time dependence e^{i w t}), for the Domain Reduction
+// Method's free field. A damped medium (Rayleigh or constant Q) enters through its complex
+// density and moduli at each frequency (physics/damped_medium.hpp), as the discrete model
+// damps it.
 //
 // Geometry: depth z >= 0 downward from the free surface; layers 0 .. N-1 with thicknesses
 // h_j over the half-space (material N), which starts at depth z_N = sum h_j. A plane wave of
@@ -10,14 +12,19 @@
 //
 // Method: in each medium the field is the sum of down- and up-going P and S waves (SH: S only)
 // with vertical slowness q = sqrt(1/c^2 - p^2), or q = -i sqrt(p^2 - 1/c^2) where the wave
-// is evanescent. Down-going amplitudes are referenced at the layer's top, up-going ones at its
+// is evanescent; with damping c is complex and q the root with Im q <= 0 (e^{-i w q z}
+// decays downward), continuous with both elastic cases. p stays real: sin i over the
+// half-space's given (real) speed, so the field at x is the history at t - p x as in the
+// elastic case; a damped wave then decays vertically only. Down-going amplitudes are referenced at the layer's top, up-going ones at its
 // bottom, so no exponential ever exceeds 1 and thick or evanescent layers stay well conditioned
 // (the global-matrix form of the Thomson-Haskell propagator, Knopoff 1964). The free surface
 // (zero traction) and the continuity of displacement and traction at every interface give a
 // (4N+2) x (4N+2) linear system (SH: 2N+1) per frequency, solved by Gaussian elimination.
 //
 // Polarisations (x horizontal along propagation, z down): P d = vp (p, s_z) (along the
-// slowness), SV d = vs (-s_z, p), SH d = transverse; unit vectors for propagating waves.
+// slowness), SV d = vs (-s_z, p), SH d = transverse; unit vectors for propagating waves
+// (damped: complex vp, vs, with d.d = 1 unconjugated; at vertical incidence still (0, 1) and
+// (1, 0)).
 // The incident up-going wave (s_z = -q) thus moves +x for SV, upward and +x for P.
 // Displacements are returned as (radial x, transverse, up), up = -z.
 #pragma once
@@ -26,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "slipwave/physics/damped_medium.hpp"
 #include "slipwave/physics/elastic_material.hpp"
 
 namespace slipwave::physics {
@@ -35,14 +43,16 @@ enum class PlaneWaveType { P, SV, SH };
 struct LayeredSite {
   std::vector<double>          thickness;  // h_j [m] of the layers from the surface down
   std::vector<ElasticMaterial> materials;  // thickness.size() + 1: the layers, then the half-space
+  std::vector<MediumDamping>   damping;    // empty (elastic) or one per material
 };
 
 using Complex = std::complex<double>;
 
 class PlaneWaveLayered {
 public:
-  // "" when valid, else one sentence: materials valid, thicknesses > 0, 0 <= angle < 90 deg,
-  // and p not at (within 1e-9 relative) a grazing slowness 1/c of any layer's P or S wave.
+  // "" when valid, else one sentence: materials valid, thicknesses > 0, damping empty or one
+  // per material, 0 <= angle < 90 deg, and p not at (within 1e-9 relative) a grazing
+  // slowness 1/c of any layer's P or S wave.
   std::string setup(const LayeredSite &site, PlaneWaveType wave, double incidence_angle_deg);
 
   // Amplitudes of every wave at circular frequency w >= 0 for a unit incident amplitude at
@@ -60,14 +70,15 @@ public:
   double halfspaceDepth() const { return top_.back(); }
   size_t layerCount() const { return site_.thickness.size(); }
   PlaneWaveType wave() const { return wave_; }
-  // Vertical slowness of the P (or S) wave in medium j (N: the half-space).
-  Complex verticalSlowness(size_t j, bool s_wave) const;
+  // Vertical slowness of the P (or S) wave in medium j (N: the half-space) at frequency w.
+  Complex verticalSlowness(size_t j, bool s_wave, double w) const;
 
 private:
   struct Wave {
     std::array<Complex, 3> d, tau; // displacement (x, y, z down) and traction / (-i w) per unit amplitude
   };
-  Wave wave(size_t medium, bool s_wave, bool down) const;
+  DampedMedium medium(size_t j, double w) const;
+  Wave wave(size_t medium, bool s_wave, bool down, double w) const;
   size_t wavesPerMedium() const { return wave_ == PlaneWaveType::SH ? 2 : 4; }
 
   LayeredSite         site_;
