@@ -188,6 +188,8 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   if (any_saturated) {
     // Not yet: the free-field columns are dry.
     PetscCheck(!m->free_field, comm, PETSC_ERR_USER_INPUT, "-bc_<side>_type freefield with a saturated region (-material_<r>_saturated): not supported yet; allowed: absorbing or tied sides");
+    // Not yet: the DRM free field and its layer forces are those of a dry (one-phase) site.
+    PetscCheck(!m->drm, comm, PETSC_ERR_USER_INPUT, "-input_method drm with a saturated region (-material_<r>_saturated): not supported yet; allowed: -input_method base");
     PetscCall(PorePressureCreate(m->dm, m->bulk, m->mesh.boundaries, std::move(saturated), m->bc.gravity, m->bc.gravity_direction, &m->pore));
     PetscCall(PorePressureAddHydrostaticForce(m->pore, m->dm, m->bc.constant_force));
     // Interfaces on saturated soil: their fluid condition, and the law in effective stress.
