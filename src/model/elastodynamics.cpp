@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "slipwave/core/log_events.hpp"
+#include "slipwave/fem/cell_quality_check.hpp"
 #include "slipwave/model/attenuation.hpp"
 #include "slipwave/model/free_field.hpp"
 #include "slipwave/model/lateral_tie.hpp"
@@ -149,6 +150,7 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
     return m->bulk.Setup(m->dm, fe);
   };
   PetscCall(setupBulk());
+  PetscCall(fem::CellQualityCheck(m->dm, m->bulk));
   PetscCall(DMCreateLocalVector(m->dm, &m->u_local));
   PetscCall(VecDuplicate(m->u_local, &m->f_local));
   PetscCall(assembleMass(m));
