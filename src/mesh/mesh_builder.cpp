@@ -1,4 +1,5 @@
 #include "slipwave/mesh/mesh_builder.hpp"
+#include "slipwave/mesh/memory_estimate.hpp"
 #include "slipwave/mesh/mesh_options.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
 #include "slipwave/mesh/partition_metis.hpp"
@@ -127,7 +128,15 @@ PetscErrorCode labelBoxSides(DM dm, const BoxSpec &box, std::vector<std::string>
 }
 
 PetscErrorCode createBox(MPI_Comm comm, PetscInt dim, DM *dm, const BoxSpec *box, std::string *source) {
+  double cells = 1, vertices = 1;
+  std::string faces = "-mesh_box_faces = ";
   PetscFunctionBeginUser;
+  for (PetscInt d = 0; d < dim; ++d) {
+    cells *= box->faces[d];
+    vertices *= box->faces[d] + 1.0;
+    faces += (d ? "," : "") + std::to_string(box->faces[d]);
+  }
+  PetscCall(MemoryCheck(comm, cells, dim * vertices, faces.c_str()));
   PetscCall(DMPlexCreateBoxMesh(comm, dim, PETSC_FALSE, box->faces, box->lower, box->upper, nullptr, PETSC_TRUE, dm));
   char buf[128];
   if (dim == 2) std::snprintf(buf, sizeof buf, "box %" PetscInt_FMT " x %" PetscInt_FMT " quadrilaterals", box->faces[0], box->faces[1]);
@@ -275,6 +284,37 @@ PetscErrorCode removeVoidRegions(MPI_Comm comm, DM *dm, const std::vector<std::s
   PetscFunctionReturn(0);
 }
 
+// PETSc stops an unknown -petscpartitioner_type with a traceback, and this PETSc registers
+// parmetis and chaco without having them; refuse all but the partitioners that work here.
+PetscErrorCode checkPartitionerType(MPI_Comm comm) {
+  const char *const working[] = {kPartitionerMetis, "ptscotch", "simple", "gather"};
+  char              type[256] = "";
+  PetscBool         set       = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-petscpartitioner_type", type, sizeof type, &set));
+  std::string allowed;
+  bool        known = !set;
+  for (const char *name : working) {
+    known = known || std::strcmp(name, type) == 0;
+    allowed += (allowed.empty() ? "" : ", ") + std::string(name);
+  }
+  PetscCheck(known, comm, PETSC_ERR_USER_INPUT, "-petscpartitioner_type = %s; allowed: %s", type, allowed.c_str());
+  PetscFunctionReturn(0);
+}
+
+// The reader holds the whole mesh on rank 0; what follows (split, distribution, operators)
+// needs the estimate's memory.
+PetscErrorCode checkMemoryOfFile(MPI_Comm comm, DM serial, PetscInt dim, const std::string &file) {
+  PetscInt c_start, c_end, v_start, v_end;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetHeightStratum(serial, 0, &c_start, &c_end));
+  PetscCall(DMPlexGetDepthStratum(serial, 0, &v_start, &v_end));
+  double counts[2] = {(double)(c_end - c_start), (double)(v_end - v_start)};
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, counts, 2, MPI_DOUBLE, MPI_SUM, comm));
+  PetscCall(MemoryCheck(comm, counts[0], dim * counts[1], ("-mesh_file = " + file).c_str()));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
@@ -288,6 +328,7 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   if (!o.file.empty()) {
     PetscCall(createFromGmsh(comm, o.file.c_str(), &serial, desc->regions, &desc->boundaries));
     PetscCall(DMGetDimension(serial, &desc->dim));
+    PetscCall(checkMemoryOfFile(comm, serial, desc->dim, o.file));
     desc->source = o.file;
   } else {
     PetscCall(createBox(comm, desc->dim, &serial, &o.box, &desc->source));
@@ -310,6 +351,7 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   // program that builds a mesh has it); the user can still pick another with
   // -petscpartitioner_type.
   PetscCall(PartitionerRegisterMetis());
+  PetscCall(checkPartitionerType(comm));
   PetscCall(PetscPartitionerSetType(part, kPartitionerMetis));
   PetscCall(PetscPartitionerSetFromOptions(part));
   PetscPartitionerType part_type;
