@@ -23,6 +23,7 @@ enum class Kind {
   Int,        // every entry an integer in the range
   Names,      // every entry a safe file name (IsSafeFileName)
   File,       // a readable regular file (a directory, a device or an empty file is refused)
+  FileIfThere, // like File, but a missing file is left to the reader, whose message says more
   Choice      // one of the words in `allowed` before its first " ("
 };
 
@@ -97,7 +98,7 @@ const Rule kRules[] = {
   {"-input_amplitude",         Kind::Real, 1, 1, magnitude(1e3), "|v| <= 1e3 m/s"},
   {"-input_f0",                Kind::Real, 1, 1, aboveZero(1e4), "0 < f0 <= 1e4 Hz"},
   {"-input_t0",                Kind::Real, 1, 1, magnitude(1e7), "|t0| <= 1e7 s"},
-  {"-input_record",            Kind::File, 1, 1, kAny, "a readable .csv or .at2 file"},
+  {"-input_record",            Kind::FileIfThere, 1, 1, kAny, "a readable .csv or .at2 file"},
   {"-input_record_scale",      Kind::Real, 1, 1, magnitude(1e6), "a factor other than 0 with |factor| <= 1e6"},
   {"-input_record_pga",        Kind::Real, 1, 1, magnitude(10), "0 < pga <= 10 g"},
   // interfaces
@@ -126,7 +127,8 @@ const char *kindName(Kind k) {
   case Kind::RealOrAuto: return "number|auto";
   case Kind::Int: return "integer";
   case Kind::Names: return "name";
-  case Kind::File: return "file";
+  case Kind::File:
+  case Kind::FileIfThere: return "file";
   case Kind::Choice: return "choice";
   }
   return "";
@@ -173,9 +175,9 @@ std::string numberProblem(const Rule &rule, const std::string &entry) {
   return inRange(x, rule.range) ? "" : "bad";
 }
 
-std::string fileProblem(const std::string &path) {
+std::string fileProblem(const std::string &path, bool missing_ok) {
   struct stat st;
-  if (stat(path.c_str(), &st) != 0) return errno == ENOENT ? "" : "cannot open the file"; // missing: the reader says so
+  if (stat(path.c_str(), &st) != 0) return errno == ENOENT && missing_ok ? "" : "cannot open the file";
   if (S_ISDIR(st.st_mode)) return "is a directory";
   if (!S_ISREG(st.st_mode)) return "is not a regular file";
   if (access(path.c_str(), R_OK) != 0) return "cannot read the file (permission denied)";
@@ -221,8 +223,9 @@ PetscErrorCode checkOne(MPI_Comm comm, const std::string &option, const char *va
       PetscCheck(!bad, comm, PETSC_ERR_USER_INPUT, "%s = %s; allowed: %s", option.c_str(), value.c_str(), rule->allowed);
     }
     break;
-  case Kind::File: {
-    const std::string problem = fileProblem(value);
+  case Kind::File:
+  case Kind::FileIfThere: {
+    const std::string problem = fileProblem(value, rule->kind == Kind::FileIfThere);
     PetscCheck(problem.empty(), comm, PETSC_ERR_FILE_OPEN, "%s = %s: %s; allowed: %s", option.c_str(), value.c_str(), problem.c_str(), rule->allowed);
     break;
   }
