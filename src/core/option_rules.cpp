@@ -53,7 +53,7 @@ const Rule kRules[] = {
   // run control
   {"-ts_type",                 Kind::Choice, 1, 1, kAny, "cd (central difference, the only time stepper of slipwave)"},
   {"-ts_dt",                   Kind::Real, 1, 1, aboveZero(1e3), "0 < dt <= 1e3 s (and at most the stable limit the setup report prints)"},
-  {"-ts_max_time",             Kind::Real, 1, 1, aboveZero(1e7), "0 < t <= 1e7 s"},
+  {"-ts_max_time",             Kind::Real, 1, 1, aboveZero(1e12), "0 < t <= 1e12 s (a large value lets -ts_max_steps end the run)"},
   {"-ts_max_steps",            Kind::Int,  1, 1, closed(0, 1e9), "0 to 1e9 steps"},
   {"-time_step_safety",        Kind::Real, 1, 1, aboveZero(1), "0 < s <= 1"},
   {"-output_interval",         Kind::Real, 1, 1, aboveZero(1e7), "0 < interval <= 1e7 s"},
