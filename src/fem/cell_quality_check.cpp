@@ -60,18 +60,15 @@ std::string coordinates(const BulkOperator &bulk, PetscInt c, PetscInt dim) {
 
 } // namespace
 
-PetscErrorCode CellQualityCheck(DM dm, const BulkOperator &bulk) {
-  MPI_Comm   comm = PetscObjectComm((PetscObject)dm);
-  Thresholds t;
-  IS         numbering;
-  const PetscInt *global;
-  PetscMPIInt     rank;
+PetscErrorCode CellQualityCheck(DM dm, const BulkOperator &bulk, const std::vector<PetscInt> &serial_cell) {
+  MPI_Comm    comm = PetscObjectComm((PetscObject)dm);
+  Thresholds  t;
+  PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCall(readThresholds(comm, &t));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(DMPlexGetCellNumbering(dm, &numbering));
-  PetscCall(ISGetIndices(numbering, &global));
-  // The worst defect first (degenerate, inverted, distorted), then the lowest global cell.
+  // The worst defect first (degenerate, inverted, distorted), then the lowest cell number.
+  // The mesh is distributed without overlap: every local cell is this rank's own.
   struct {
     long key;
     int  rank;
@@ -79,19 +76,17 @@ PetscErrorCode CellQualityCheck(DM dm, const BulkOperator &bulk) {
   std::string message;
   long        distorted = 0;
   for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
-    if (global[c] < 0) continue; // a ghost cell, checked by its owner
     const CellShapeQuality q = cellShapeQuality(bulk.shape(), bulk.cellCoordinates(c));
     const CellDefect       d = cellDefect(q, t.max_aspect, t.min_jacobian_ratio);
     if (d == CellDefect::None || (d == CellDefect::Distorted && t.mode == kOff)) continue;
     distorted += d == CellDefect::Distorted;
     const int  rank_of_defect = d == CellDefect::Degenerate ? 0 : d == CellDefect::Inverted ? 1 : 2;
-    const long key            = rank_of_defect * (long)1e15 + global[c];
+    const long key            = rank_of_defect * (long)1e15 + serial_cell[c];
     if (key < first.key) {
       first.key = key;
-      message   = "cell " + std::to_string(global[c]) + " at " + coordinates(bulk, c, bulk.dimension()) + " " + describe(d, q, t);
+      message   = "cell " + std::to_string(serial_cell[c]) + " at " + coordinates(bulk, c, bulk.dimension()) + " " + describe(d, q, t);
     }
   }
-  PetscCall(ISRestoreIndices(numbering, &global));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_LONG_INT, MPI_MINLOC, comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &distorted, 1, MPI_LONG, MPI_SUM, comm));
   if (first.key == LONG_MAX) PetscFunctionReturn(0);

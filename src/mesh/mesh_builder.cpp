@@ -1,4 +1,7 @@
 #include "slipwave/mesh/mesh_builder.hpp"
+
+#include <petscsf.h>
+
 #include "slipwave/mesh/memory_estimate.hpp"
 #include "slipwave/mesh/mesh_options.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
@@ -302,6 +305,26 @@ PetscErrorCode checkPartitionerType(MPI_Comm comm) {
   PetscFunctionReturn(0);
 }
 
+// The migration SF's leaves are the distributed points, its roots the serial points (cells
+// first, in the serial mesh's cell order); without it (one rank) the numbers are unchanged.
+PetscErrorCode recordSerialCells(DM dm, PetscSF migration, std::vector<PetscInt> *serial_cell) {
+  PetscInt c_start, c_end;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
+  serial_cell->resize(c_end - c_start);
+  for (PetscInt c = c_start; c < c_end; ++c) (*serial_cell)[c - c_start] = c;
+  if (!migration) PetscFunctionReturn(0);
+  PetscInt           nleaves;
+  const PetscInt    *local;
+  const PetscSFNode *remote;
+  PetscCall(PetscSFGetGraph(migration, nullptr, &nleaves, &local, &remote));
+  for (PetscInt i = 0; i < nleaves; ++i) {
+    const PetscInt point = local ? local[i] : i;
+    if (point >= c_start && point < c_end) (*serial_cell)[point - c_start] = remote[i].index;
+  }
+  PetscFunctionReturn(0);
+}
+
 // The reader holds the whole mesh on rank 0; what follows (split, distribution, operators)
 // needs the estimate's memory.
 PetscErrorCode checkMemoryOfFile(MPI_Comm comm, DM serial, PetscInt dim, const std::string &file) {
@@ -357,13 +380,16 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   PetscPartitionerType part_type;
   PetscCall(PetscPartitionerGetType(part, &part_type));
   desc->partitioner = part_type;
-  PetscCall(DMPlexDistribute(serial, 0, nullptr, &dist));
+  PetscSF migration = nullptr;
+  PetscCall(DMPlexDistribute(serial, 0, &migration, &dist));
   if (dist) {
     PetscCall(DMDestroy(&serial));
     *dm = dist;
   } else {
     *dm = serial;
   }
+  PetscCall(recordSerialCells(*dm, migration, &desc->serial_cell));
+  PetscCall(PetscSFDestroy(&migration));
   PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));
   PetscFunctionReturn(0);
 }

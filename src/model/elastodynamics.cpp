@@ -150,7 +150,7 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
     return m->bulk.Setup(m->dm, fe);
   };
   PetscCall(setupBulk());
-  PetscCall(fem::CellQualityCheck(m->dm, m->bulk));
+  PetscCall(fem::CellQualityCheck(m->dm, m->bulk, m->mesh.serial_cell));
   PetscCall(DMCreateLocalVector(m->dm, &m->u_local));
   PetscCall(VecDuplicate(m->u_local, &m->f_local));
   PetscCall(assembleMass(m));
