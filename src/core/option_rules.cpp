@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace slipwave::core {
@@ -46,6 +47,7 @@ struct Rule {
   int         min_entries, max_entries;
   Range       range;
   const char *allowed;
+  int         entries_per_dimension = 0; // > 0: exactly this many per space dimension, checked once it is known
 };
 
 // clang-format off
@@ -61,21 +63,21 @@ const Rule kRules[] = {
   {"-energy_growth_limit",     Kind::Real, 1, 1, aboveZero(1e6), "0 < limit <= 1e6 (a multiple of the energy put in)"},
   {"-checkpoint_interval",     Kind::Int,  1, 1, closed(0, 1e9), "0 to 1e9 steps (0: never)"},
   {"-restart",                 Kind::File, 1, 1, kAny, "a checkpoint file written by -checkpoint_interval"},
-  {"-initial_velocity",        Kind::Real, 2, 3, magnitude(1e4), "vx,vy[,vz] with |v| <= 1e4 m/s"},
-  {"-initial_velocity_*",      Kind::Real, 2, 3, magnitude(1e4), "vx,vy[,vz] with |v| <= 1e4 m/s"},
+  {"-initial_velocity",        Kind::Real, 2, 3, magnitude(1e4), "vx,vy[,vz] with |v| <= 1e4 m/s", 1},
+  {"-initial_velocity_*",      Kind::Real, 2, 3, magnitude(1e4), "vx,vy[,vz] with |v| <= 1e4 m/s", 1},
   // mesh
   {"-mesh_file",               Kind::File, 1, 1, kAny, "a readable Gmsh .msh file"},
   {"-mesh_dim",                Kind::Int,  1, 1, closed(2, 3), "2 or 3"},
-  {"-mesh_box_faces",          Kind::Int,  2, 3, closed(1, 1e8), "nx,ny[,nz] cells, each 1 to 1e8"},
-  {"-mesh_box_lower",          Kind::Real, 2, 3, magnitude(1e8), "x,y[,z] with |x| <= 1e8 m"},
-  {"-mesh_box_upper",          Kind::Real, 2, 3, magnitude(1e8), "x,y[,z] with |x| <= 1e8 m"},
+  {"-mesh_box_faces",          Kind::Int,  2, 3, closed(1, 1e8), "nx,ny[,nz] cells, each 1 to 1e8", 1},
+  {"-mesh_box_lower",          Kind::Real, 2, 3, magnitude(1e8), "x,y[,z] with |x| <= 1e8 m", 1},
+  {"-mesh_box_upper",          Kind::Real, 2, 3, magnitude(1e8), "x,y[,z] with |x| <= 1e8 m", 1},
   {"-mesh_quality_max_aspect", Kind::Real, 1, 1, closed(1, 1e6), "1 <= aspect <= 1e6"},
   {"-mesh_quality_min_jacobian_ratio", Kind::Real, 1, 1, {0, 1, true, false}, "0 < ratio <= 1"},
   {"-regions",                 Kind::Names, 1, 64, kAny, kSafeFileNameRule},
   {"-void_regions",            Kind::Names, 1, 64, kAny, kSafeFileNameRule},
   {"-interfaces",              Kind::Names, 1, 64, kAny, kSafeFileNameRule},
   {"-interface_*_regions",     Kind::Names, 2, 2, kAny, "two region names soil,structure"},
-  {"-region_*_box",            Kind::Real, 1, 6, magnitude(1e8), "xmin,xmax,ymin,ymax[,zmin,zmax] with |x| <= 1e8 m (the mesh dimension sets the count)"},
+  {"-region_*_box",            Kind::Real, 1, 6, magnitude(1e8), "xmin,xmax,ymin,ymax[,zmin,zmax] with |x| <= 1e8 m (the mesh dimension sets the count)", 2},
   {"-petscpartitioner_metis_ufactor", Kind::Int, 1, 1, closed(-1, 1e6), "-1 (METIS' default) to 1e6 (1/1000)"},
   {"-petscpartitioner_metis_seed",    Kind::Int, 1, 1, closed(-1, 2147483647), "-1 (METIS' default) or a seed >= 0"},
   // materials and damping
@@ -93,8 +95,8 @@ const Rule kRules[] = {
   {"-attenuation_reference_frequency", Kind::Real, 1, 1, magnitude(1e6), "0 < f <= 1e6 Hz"},
   // loads and input motion
   {"-gravity",                 Kind::Real, 1, 1, closed(0, 1e3), "0 <= g <= 1e3 m/s^2"},
-  {"-gravity_direction",       Kind::Real, 2, 3, magnitude(1e6), "gx,gy[,gz], not all 0, |g| <= 1e6"},
-  {"-bc_*_traction",           Kind::Real, 2, 3, magnitude(1e12), "tx,ty[,tz] with |t| <= 1e12 Pa"},
+  {"-gravity_direction",       Kind::Real, 2, 3, magnitude(1e6), "gx,gy[,gz], not all 0, |g| <= 1e6", 1},
+  {"-bc_*_traction",           Kind::Real, 2, 3, magnitude(1e12), "tx,ty[,tz] with |t| <= 1e12 Pa", 1},
   {"-input_amplitude",         Kind::Real, 1, 1, magnitude(1e3), "|v| <= 1e3 m/s"},
   {"-input_f0",                Kind::Real, 1, 1, aboveZero(1e4), "0 < f0 <= 1e4 Hz"},
   {"-input_t0",                Kind::Real, 1, 1, magnitude(1e7), "|t0| <= 1e7 s"},
@@ -236,6 +238,15 @@ PetscErrorCode checkOne(MPI_Comm comm, const std::string &option, const char *va
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode checkCountForDimension(MPI_Comm comm, const std::string &option, const char *value, PetscInt dim) {
+  PetscFunctionBeginUser;
+  const Rule *rule = findRule(option);
+  if (!rule || rule->entries_per_dimension == 0 || !value) PetscFunctionReturn(0);
+  const int n = (int)entries(value).size(), want = rule->entries_per_dimension * (int)dim;
+  PetscCheck(n == want, comm, PETSC_ERR_USER_INPUT, "%s has %d values; allowed: %d in %" PetscInt_FMT "D (%s)", option.c_str(), n, want, dim, rule->allowed);
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 bool IsSafeFileName(const std::string &name) {
@@ -255,6 +266,22 @@ PetscErrorCode OptionsValidate(MPI_Comm comm) {
   for (PetscInt i = 0; i < n && !ierr; ++i) ierr = checkOne(comm, std::string("-") + names[i], values[i]);
   PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
   PetscCall(ierr);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionsValidateForDimension(MPI_Comm comm, PetscInt dim) {
+  PetscFunctionBeginUser;
+  // All options given, read or not: PetscOptionsGetAll has them with their values.
+  char *all = nullptr;
+  PetscCall(PetscOptionsGetAll(nullptr, &all));
+  std::istringstream tokens(all ? all : "");
+  std::vector<std::pair<std::string, std::string>> given;
+  for (std::string t; tokens >> t;) {
+    if (t.size() > 1 && t[0] == '-' && std::isalpha((unsigned char)t[1])) given.push_back({t, ""});
+    else if (!given.empty()) given.back().second = t;
+  }
+  PetscCall(PetscFree(all));
+  for (const auto &[option, value] : given) PetscCall(checkCountForDimension(comm, option, value.empty() ? nullptr : value.c_str(), dim));
   PetscFunctionReturn(0);
 }
 

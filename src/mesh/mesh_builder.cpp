@@ -2,6 +2,7 @@
 
 #include <petscsf.h>
 
+#include "slipwave/core/option_rules.hpp"
 #include "slipwave/mesh/memory_estimate.hpp"
 #include "slipwave/mesh/mesh_options.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
@@ -351,9 +352,11 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   if (!o.file.empty()) {
     PetscCall(createFromGmsh(comm, o.file.c_str(), &serial, desc->regions, &desc->boundaries));
     PetscCall(DMGetDimension(serial, &desc->dim));
+    PetscCall(core::OptionsValidateForDimension(comm, desc->dim));
     PetscCall(checkMemoryOfFile(comm, serial, desc->dim, o.file));
     desc->source = o.file;
   } else {
+    PetscCall(core::OptionsValidateForDimension(comm, desc->dim));
     PetscCall(createBox(comm, desc->dim, &serial, &o.box, &desc->source));
     PetscCall(labelBoxRegions(comm, serial, desc->regions, o.region_boxes, o.box));
     PetscCall(removeVoidRegions(comm, &serial, o.voids, &desc->regions, &o.region_boxes, o.box));

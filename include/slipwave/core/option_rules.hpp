@@ -17,6 +17,10 @@ namespace slipwave::core {
 // Stops with PETSC_ERR_USER_INPUT at the first option whose value breaks its rule.
 PetscErrorCode OptionsValidate(MPI_Comm comm);
 
+// The lists whose length is the space dimension (vectors, box corners, region boxes): once
+// the mesh's dimension is known, a third value in 2D stops the run instead of being ignored.
+PetscErrorCode OptionsValidateForDimension(MPI_Comm comm, PetscInt dim);
+
 // Prints the rule table (option, entries, allowed values) for -help.
 PetscErrorCode OptionsPrintRules(MPI_Comm comm);
 
