@@ -132,15 +132,14 @@ PetscErrorCode labelBoxSides(DM dm, const BoxSpec &box, std::vector<std::string>
 }
 
 PetscErrorCode createBox(MPI_Comm comm, PetscInt dim, DM *dm, const BoxSpec *box, std::string *source) {
-  double cells = 1, vertices = 1;
-  std::string faces = "-mesh_box_faces = ";
+  double      vertices = 1;
+  std::string faces    = "-mesh_box_faces = ";
   PetscFunctionBeginUser;
   for (PetscInt d = 0; d < dim; ++d) {
-    cells *= box->faces[d];
     vertices *= box->faces[d] + 1.0;
     faces += (d ? "," : "") + std::to_string(box->faces[d]);
   }
-  PetscCall(MemoryCheck(comm, cells, dim * vertices, faces.c_str()));
+  PetscCall(MemoryCheck(comm, vertices, dim, faces.c_str()));
   PetscCall(DMPlexCreateBoxMesh(comm, dim, PETSC_FALSE, box->faces, box->lower, box->upper, nullptr, PETSC_TRUE, dm));
   char buf[128];
   if (dim == 2) std::snprintf(buf, sizeof buf, "box %" PetscInt_FMT " x %" PetscInt_FMT " quadrilaterals", box->faces[0], box->faces[1]);
@@ -163,6 +162,7 @@ PetscErrorCode createFromGmsh(MPI_Comm comm, const char *file, DM *dm, const std
   }
   PetscCallMPI(MPI_Bcast(&readable, 1, MPI_INT, 0, comm));
   PetscCheck(readable, comm, PETSC_ERR_FILE_OPEN, "-mesh_file = %s: cannot open the file; allowed: a readable Gmsh .msh file (format 2.2 or 4.1)", file);
+  PetscCall(MemoryCheckGmshFile(comm, file));
   PetscBool has;
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-dm_plex_gmsh_use_regions", &has));
   if (!has) PetscCall(PetscOptionsSetValue(nullptr, "-dm_plex_gmsh_use_regions", "true"));
@@ -329,13 +329,12 @@ PetscErrorCode recordSerialCells(DM dm, PetscSF migration, std::vector<PetscInt>
 // The reader holds the whole mesh on rank 0; what follows (split, distribution, operators)
 // needs the estimate's memory.
 PetscErrorCode checkMemoryOfFile(MPI_Comm comm, DM serial, PetscInt dim, const std::string &file) {
-  PetscInt c_start, c_end, v_start, v_end;
+  PetscInt v_start, v_end;
   PetscFunctionBeginUser;
-  PetscCall(DMPlexGetHeightStratum(serial, 0, &c_start, &c_end));
   PetscCall(DMPlexGetDepthStratum(serial, 0, &v_start, &v_end));
-  double counts[2] = {(double)(c_end - c_start), (double)(v_end - v_start)};
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, counts, 2, MPI_DOUBLE, MPI_SUM, comm));
-  PetscCall(MemoryCheck(comm, counts[0], dim * counts[1], ("-mesh_file = " + file).c_str()));
+  double vertices = (double)(v_end - v_start);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &vertices, 1, MPI_DOUBLE, MPI_SUM, comm));
+  PetscCall(MemoryCheck(comm, vertices, dim, ("-mesh_file = " + file).c_str()));
   PetscFunctionReturn(0);
 }
 

@@ -59,6 +59,8 @@ gmsh_two_quads() { # $1 x of nodes 3 and 6, $2 the second element's node list
 gmsh_two_quads 2 "2 3 5 6" > "$tmp/bowtie.msh"
 gmsh_two_quads 1 "2 3 6 5" > "$tmp/zero_area.msh"
 gmsh_two_quads 101 "2 3 6 5" > "$tmp/slender.msh"
+printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n2000000000\n1 0 0 0\n' > "$tmp/huge_22.msh"
+printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 1\n$EndEntities\n$Nodes\n1 1000000000 1 1000000000\n' > "$tmp/huge_41.msh"
 # 151 stations at 2 coordinates each: 302 values, beyond the 300 -station_coordinates holds.
 stations151=$(seq 1 151 | awk '{printf "%s0.5,%g", (NR > 1 ? "," : ""), 0.5 + 0.5 * $1}')
 

@@ -14,7 +14,12 @@ namespace slipwave::mesh {
 // the serial mesh that exists beside the distributed one during setup.
 constexpr double kBytesPerDof = 1024;
 
-// what: the option and value the mesh comes from, for the message.
-PetscErrorCode MemoryCheck(MPI_Comm comm, double cells, double dofs, const char *what);
+// nodes x dim degrees of freedom; what: the option and value the mesh comes from, for the
+// message.
+PetscErrorCode MemoryCheck(MPI_Comm comm, double nodes, PetscInt dim, const char *what);
+
+// The same for a Gmsh file, from the node count in its header, before the file is loaded
+// (ASCII files; a binary one is checked by the caller once loaded).
+PetscErrorCode MemoryCheckGmshFile(MPI_Comm comm, const char *file);
 
 } // namespace slipwave::mesh
