@@ -1,10 +1,6 @@
 // slipwave: explicit finite elements for seismic soil-structure interaction.
 #include <petscsys.h>
 
-#include <cstdio>
-#include <cstdlib>
-#include <string>
-
 #include "slipwave/core/errors.hpp"
 #include "slipwave/core/option_files.hpp"
 #include "slipwave/core/option_rules.hpp"
@@ -14,19 +10,8 @@
 static const char help[] = "slipwave: explicit elastodynamics on PETSc for seismic soil-structure interaction.\n"
                            "Options come from the command line and option files (-options_file scene.yaml).\n";
 
-// Before MPI starts, the launcher's rank variable says which process prints the one line.
-static bool launcherRankZero() {
-  for (const char *name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
-    if (const char *rank = std::getenv(name)) return std::atoi(rank) == 0;
-  return true;
-}
-
 int main(int argc, char **argv) {
-  const std::string file_problem = slipwave::core::OptionFilesCheck(argc, argv);
-  if (!file_problem.empty()) {
-    if (launcherRankZero()) std::fprintf(stderr, "slipwave: error: %s\n", file_problem.c_str());
-    return 1;
-  }
+  if (!slipwave::core::OptionFilesAcceptable(argc, argv, "slipwave")) return 1;
   PetscErrorCode ierr = PetscInitialize(&argc, &argv, nullptr, help);
   if (ierr) return 1;
   PetscBool has_help = PETSC_FALSE;

@@ -160,6 +160,13 @@ std::string checkRcFile(const std::string &path) {
   return "";
 }
 
+// Before MPI starts, the launcher's rank variable says which process prints the one line.
+bool launcherRankZero() {
+  for (const char *name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
+    if (const char *rank = std::getenv(name)) return std::atoi(rank) == 0;
+  return true;
+}
+
 } // namespace
 
 std::string OptionFilesCheck(int argc, const char *const *argv) {
@@ -179,6 +186,13 @@ std::string OptionFilesCheck(int argc, const char *const *argv) {
     if (!problem.empty()) return problem;
   }
   return "";
+}
+
+bool OptionFilesAcceptable(int argc, const char *const *argv, const char *program) {
+  const std::string problem = OptionFilesCheck(argc, argv);
+  if (problem.empty()) return true;
+  if (launcherRankZero()) std::fprintf(stderr, "%s: error: %s\n", program, problem.c_str());
+  return false;
 }
 
 } // namespace slipwave::core

@@ -16,4 +16,8 @@ namespace slipwave::core {
 
 std::string OptionFilesCheck(int argc, const char *const *argv);
 
+// For main, before PetscInitialize: false (after printing "<program>: error: <problem>" once,
+// from the launcher's rank 0) when OptionFilesCheck finds a problem.
+bool OptionFilesAcceptable(int argc, const char *const *argv, const char *program);
+
 } // namespace slipwave::core
