@@ -351,11 +351,11 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   if (!o.file.empty()) {
     PetscCall(createFromGmsh(comm, o.file.c_str(), &serial, desc->regions, &desc->boundaries));
     PetscCall(DMGetDimension(serial, &desc->dim));
-    PetscCall(core::OptionsValidateForDimension(comm, desc->dim));
+    PetscCall(core::OptionsValidateForDimension(comm, desc->dim, false));
     PetscCall(checkMemoryOfFile(comm, serial, desc->dim, o.file));
     desc->source = o.file;
   } else {
-    PetscCall(core::OptionsValidateForDimension(comm, desc->dim));
+    PetscCall(core::OptionsValidateForDimension(comm, desc->dim, true));
     PetscCall(createBox(comm, desc->dim, &serial, &o.box, &desc->source));
     PetscCall(labelBoxRegions(comm, serial, desc->regions, o.region_boxes, o.box));
     PetscCall(removeVoidRegions(comm, &serial, o.voids, &desc->regions, &o.region_boxes, o.box));

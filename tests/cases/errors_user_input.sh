@@ -61,6 +61,15 @@ gmsh_two_quads 1 "2 3 6 5" > "$tmp/zero_area.msh"
 gmsh_two_quads 101 "2 3 6 5" > "$tmp/slender.msh"
 printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n2000000000\n1 0 0 0\n' > "$tmp/huge_22.msh"
 printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 1\n$EndEntities\n$Nodes\n1 1000000000 1 1000000000\n' > "$tmp/huge_41.msh"
+# One hexahedron, the unit cube, in the physical group "soil", with node 7 (1,1,1) moved to
+# z = $1: -1 pushes it through the bottom face (inverted), and with all of z = 0 it is flat.
+gmsh_hex() {
+  printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n3 1 "soil"\n$EndPhysicalNames\n$Nodes\n8\n'
+  printf '1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0 0 %s\n6 1 0 %s\n7 1 1 %s\n8 0 1 %s\n$EndNodes\n' "$2" "$2" "$1" "$2"
+  printf '$Elements\n1\n1 5 2 1 1 1 2 3 4 5 6 7 8\n$EndElements\n'
+}
+gmsh_hex -1 1 > "$tmp/hex_inverted.msh"
+gmsh_hex 0 0 > "$tmp/hex_flat.msh"
 # 151 stations at 2 coordinates each: 302 values, beyond the 300 -station_coordinates holds.
 stations151=$(seq 1 151 | awk '{printf "%s0.5,%g", (NR > 1 ? "," : ""), 0.5 + 0.5 * $1}')
 

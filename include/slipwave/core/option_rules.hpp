@@ -19,7 +19,8 @@ PetscErrorCode OptionsValidate(MPI_Comm comm);
 
 // The lists whose length is the space dimension (vectors, box corners, region boxes): once
 // the mesh's dimension is known, a third value in 2D stops the run instead of being ignored.
-PetscErrorCode OptionsValidateForDimension(MPI_Comm comm, PetscInt dim);
+// box_mesh: the mesh is the built-in box (false: the -mesh_box_* options are not checked).
+PetscErrorCode OptionsValidateForDimension(MPI_Comm comm, PetscInt dim, bool box_mesh);
 
 // Prints the rule table (option, entries, allowed values) for -help.
 PetscErrorCode OptionsPrintRules(MPI_Comm comm);
