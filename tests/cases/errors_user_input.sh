@@ -37,6 +37,7 @@ printf -- '# attach gdb on error\n-on_error_attach_debugger gdb\n' > "$tmp/attac
 printf -- '-display evil.example:0\n' > "$tmp/display.opts"
 printf -- '-on_error_emacs evil.example\n' > "$tmp/emacs.opts"
 printf -- '-options_file %s/debugger.opts\n' "$tmp" > "$tmp/nested.opts"
+printf -- '-options_file %s/loop.opts\n' "$tmp" > "$tmp/loop.opts"
 printf 'dry_run: [\n' > "$tmp/broken.yaml"
 printf 'start_in_debugger: noxterm\n' > "$tmp/debugger.yaml"
 printf 'stop:\n  for_debugger: true\n' > "$tmp/nested_debugger.yaml"
