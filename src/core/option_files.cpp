@@ -36,6 +36,26 @@ bool endsWith(const std::string &s, const char *tail) {
   return s.size() >= n && s.compare(s.size() - n, n, tail) == 0;
 }
 
+// PETSc options that write a file named in their value, which may lie outside the output
+// folder: viewers ("-x_view ascii:FILE", "-log_view :FILE"), "-info FILE", and those whose
+// value is the file itself.
+bool writesFile(std::string name, const std::string &value) {
+  while (!name.empty() && name[0] == '-') name.erase(0, 1);
+  for (const char *p : {"log_trace", "history", "malloc_dump", "malloc_view", "log_all", "log_mpe"})
+    if (name == p) return !value.empty();
+  if (name == "info") return !value.empty() && value[0] != ':';
+  if (endsWith(name, "_view") || endsWith(name, "_monitor") || name.find("_view_") != std::string::npos || name.find("_monitor_") != std::string::npos) {
+    const size_t colon = value.find(':');
+    return colon != std::string::npos && colon + 1 < value.size() && value[colon + 1] != ':';
+  }
+  return false;
+}
+
+std::string refusedFile(const std::string &where, const std::string &option, const std::string &value) {
+  return where + ": " + option + " " + value +
+         " writes a file outside the output folder; allowed in an option file: viewers to standard output (give file viewers on the command line)";
+}
+
 std::string refusedProgram(const std::string &where, const std::string &option) {
   return where + ": " + option + " runs a program; allowed in an option file: options that run no program (give debugger options on the command line)";
 }
@@ -82,6 +102,7 @@ std::string checkText(const std::string &where, const std::string &text, int dep
     if (t[0].size() < 2 || t[0][0] != '-') return at + ": '" + t[0] + "' is not an option name; " + grammar;
     if (t.size() > 2) return at + ": '" + t[2] + "' after the value of " + t[0] + "; " + grammar;
     if (runsProgram(t[0])) return refusedProgram(at, t[0]);
+    if (t.size() == 2 && writesFile(t[0], t[1])) return refusedFile(at, t[0], t[1]);
     if (t[0] == "-options_file" || t[0] == "-options_file_yaml") {
       if (t.size() < 2) return at + ": " + t[0] + " needs a file name; allowed: " + t[0] + " <file>";
       const std::string problem = checkFile(at + ": " + t[0], t[1], depth + 1);
@@ -99,8 +120,12 @@ std::string checkYamlNode(yaml_document_t *doc, yaml_node_t *node, const std::st
     if (!key || key->type != YAML_SCALAR_NODE) continue;
     const std::string name = (const char *)key->data.scalar.value;
     const std::string full = prefix.empty() ? name : prefix + "_" + name;
-    if (runsProgram(name) || runsProgram(full)) return refusedProgram(where + ":" + std::to_string(key->start_mark.line + 1), "-" + full);
-    const std::string inner = checkYamlNode(doc, yaml_document_get_node(doc, p->value), full, where);
+    const std::string at = where + ":" + std::to_string(key->start_mark.line + 1);
+    if (runsProgram(name) || runsProgram(full)) return refusedProgram(at, "-" + full);
+    yaml_node_t *value = yaml_document_get_node(doc, p->value);
+    if (value && value->type == YAML_SCALAR_NODE && writesFile(full, (const char *)value->data.scalar.value))
+      return refusedFile(at, "-" + full, (const char *)value->data.scalar.value);
+    const std::string inner = checkYamlNode(doc, value, full, where);
     if (!inner.empty()) return inner;
   }
   return "";

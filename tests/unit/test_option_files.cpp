@@ -50,6 +50,10 @@ int main() {
   unit::check(contains(check(write("dbg.opts", "-debugger_pause 5\n")), "-debugger_pause runs a program"), "any *debugger* option is refused in a file");
   unit::check(contains(check(write("term.opts", "-debug_terminal \"xterm -e\"\n")), "-debug_terminal runs a program"), "-debug_terminal is refused in a file");
   unit::check(contains(check(write("xv.yaml", "x:\n  virtual: true\n")), "xv.yaml:2: -x_virtual runs a program"), "a nested YAML key is flattened as PETSc does");
+  unit::check(contains(check(write("log.opts", "-log_view :/etc/x\n")), "log.opts:1: -log_view :/etc/x writes a file"), "-log_view to a file is refused in a file");
+  unit::check(contains(check(write("ksp.yaml", "ksp:\n  view: ascii:../../x\n")), "ksp.yaml:2: -ksp_view ascii:../../x writes a file"), "a YAML viewer to a file is refused");
+  unit::check(check(write("stdout.opts", "-log_view\n-ksp_view ascii\n-ts_monitor\n-info :vec\n")).empty(), "viewers to standard output pass");
+  unit::check(contains(check(write("trace.opts", "-log_trace /tmp/t\n")), "-log_trace /tmp/t writes a file"), "-log_trace FILE is refused in a file");
   unit::check(contains(check(write("bad.yaml", "a: [1,\n")), "not valid YAML"), "broken YAML is refused");
   unit::check(contains(check(g_dir), "is a directory"), "a directory is refused");
   {

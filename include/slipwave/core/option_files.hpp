@@ -6,9 +6,9 @@
 // .petscrc files unless -skip_petscrc) and returns the problem as one line, or "" when PETSc
 // may read them.
 //
-// Options that run programs are refused in files but allowed on the command line: whoever
-// types the command chooses the program, while a scene file may come from someone else and
-// is read as data.
+// Options that run programs, and viewers and logs that write a file named in the option, are
+// refused in files but allowed on the command line: whoever types the command chooses the
+// program and the file, while a scene file may come from someone else and is read as data.
 #pragma once
 #include <string>
 
