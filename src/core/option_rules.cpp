@@ -166,15 +166,14 @@ bool inRange(double x, const Range &r) {
   return (r.lo_open ? x > r.lo : x >= r.lo) && (r.hi_open ? x < r.hi : x <= r.hi);
 }
 
-// Empty string: the value obeys the rule; otherwise the reason it does not (without the
-// "allowed" part, which the caller adds).
-std::string numberProblem(const Rule &rule, const std::string &entry) {
-  if (rule.kind == Kind::RealOrAuto && entry == "auto") return "";
+bool numberAllowed(const Rule &rule, const std::string &entry) {
+  if (rule.kind == Kind::RealOrAuto && entry == "auto") return true;
   double x = 0;
-  // A word PETSc cannot convert is left to its parser, which names the option already.
-  if (!fullNumber(entry, &x)) return "";
-  if (rule.kind == Kind::Int && std::isfinite(x) && x != std::floor(x)) return "";
-  return inRange(x, rule.range) ? "" : "bad";
+  // A word PETSc cannot convert (or a fraction for an integer) is left to its parser, whose
+  // one-line message names the option already.
+  if (!fullNumber(entry, &x)) return true;
+  if (rule.kind == Kind::Int && std::isfinite(x) && x != std::floor(x)) return true;
+  return inRange(x, rule.range);
 }
 
 std::string fileProblem(const std::string &path, bool missing_ok) {
@@ -221,7 +220,7 @@ PetscErrorCode checkOne(MPI_Comm comm, const std::string &option, const char *va
   case Kind::Names:
     PetscCheck(n >= rule->min_entries && n <= rule->max_entries, comm, PETSC_ERR_USER_INPUT, "%s has %d values; allowed: %s", option.c_str(), n, rule->allowed);
     for (const std::string &e : parts) {
-      const bool bad = rule->kind == Kind::Names ? !IsSafeFileName(e) : !numberProblem(*rule, e).empty();
+      const bool bad = rule->kind == Kind::Names ? !IsSafeFileName(e) : !numberAllowed(*rule, e);
       PetscCheck(!bad, comm, PETSC_ERR_USER_INPUT, "%s = %s; allowed: %s", option.c_str(), value.c_str(), rule->allowed);
     }
     break;
