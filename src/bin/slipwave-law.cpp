@@ -2,6 +2,7 @@
 // calibrate the interface parameters against a laboratory shear test.
 //   slipwave-law -path IN.csv [-output OUT.csv] -interface_E 1e9 -interface_G 1e9 ...
 #include "slipwave/core/errors.hpp"
+#include "slipwave/core/option_files.hpp"
 #include "slipwave/core/options_check.hpp"
 #include "slipwave/interface/interface_options.hpp"
 #include "slipwave/io/jump_history_csv.hpp"
@@ -102,6 +103,7 @@ PetscErrorCode run(MPI_Comm comm) {
 } // namespace
 
 int main(int argc, char **argv) {
+  if (!slipwave::core::OptionFilesAcceptable(argc, argv, "slipwave-law")) return 1;
   PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
   PetscErrorCode ierr = slipwave::core::ErrorsPushUserInputHandler("slipwave-law");
   if (!ierr) ierr = run(PETSC_COMM_WORLD);

@@ -2,6 +2,8 @@
 #include <petscsys.h>
 
 #include "slipwave/core/errors.hpp"
+#include "slipwave/core/option_files.hpp"
+#include "slipwave/core/option_rules.hpp"
 #include "slipwave/core/options_check.hpp"
 #include "slipwave/app/simulation.hpp"
 
@@ -9,10 +11,15 @@ static const char help[] = "slipwave: explicit elastodynamics on PETSc for seism
                            "Options come from the command line and option files (-options_file scene.yaml).\n";
 
 int main(int argc, char **argv) {
+  if (!slipwave::core::OptionFilesAcceptable(argc, argv, "slipwave")) return 1;
   PetscErrorCode ierr = PetscInitialize(&argc, &argv, nullptr, help);
   if (ierr) return 1;
+  PetscBool has_help = PETSC_FALSE;
   ierr = slipwave::core::ErrorsPushUserInputHandler("slipwave");
   if (!ierr) ierr = slipwave::core::OptionsApplyRenames(PETSC_COMM_WORLD);
+  if (!ierr) ierr = slipwave::core::OptionsValidate(PETSC_COMM_WORLD);
+  if (!ierr) ierr = PetscOptionsHasHelp(nullptr, &has_help);
+  if (!ierr && has_help) ierr = slipwave::core::OptionsPrintRules(PETSC_COMM_WORLD);
   if (!ierr) ierr = slipwave::app::SimulationRun(PETSC_COMM_WORLD);
   const PetscErrorCode fin = PetscFinalize();
   return (ierr || fin) ? 1 : 0;

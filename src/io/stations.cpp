@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -12,6 +13,7 @@
 
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/core/option_choice.hpp"
+#include "slipwave/core/option_rules.hpp"
 
 namespace slipwave::io {
 namespace {
@@ -34,14 +36,21 @@ PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, st
     if (lineno == 1 && cells.size() > 1 && cells[1].find_first_of("0123456789") == std::string::npos) continue; // header
     PetscCheck((PetscInt)cells.size() == dim + 1, comm, PETSC_ERR_USER_INPUT, "-station_file = %s, line %d: %zu columns; allowed: name,x,y%s", file, lineno,
                cells.size(), dim == 3 ? ",z" : "");
+    // The name becomes a file name (stations/<name>.csv).
+    PetscCheck(core::IsSafeFileName(cells[0]), comm, PETSC_ERR_USER_INPUT, "-station_file = %s, line %d: station name '%s'; allowed: %s", file, lineno,
+               cells[0].c_str(), core::kSafeFileNameRule);
+    PetscCheck(std::find(names->begin(), names->end(), cells[0]) == names->end(), comm, PETSC_ERR_USER_INPUT,
+               "-station_file = %s, line %d: station name '%s' is used twice; allowed: distinct names", file, lineno, cells[0].c_str());
     names->push_back(cells[0]);
     for (PetscInt d = 0; d < dim; ++d) {
       char        *end;
       const double x = std::strtod(cells[1 + d].c_str(), &end);
-      PetscCheck(end != cells[1 + d].c_str(), comm, PETSC_ERR_USER_INPUT, "-station_file = %s, line %d: '%s' is not a number", file, lineno, cells[1 + d].c_str());
+      PetscCheck(end != cells[1 + d].c_str() && *end == '\0' && std::isfinite(x), comm, PETSC_ERR_USER_INPUT,
+                 "-station_file = %s, line %d: '%s' is not a finite number; allowed: coordinates x,y%s [m]", file, lineno, cells[1 + d].c_str(), dim == 3 ? ",z" : "");
       coords->push_back(x);
     }
   }
+  PetscCheck(!names->empty(), comm, PETSC_ERR_USER_INPUT, "-station_file = %s: no station rows; allowed: a CSV file with rows name,x,y%s", file, dim == 3 ? ",z" : "");
   PetscFunctionReturn(0);
 }
 

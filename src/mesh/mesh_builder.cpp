@@ -1,4 +1,9 @@
 #include "slipwave/mesh/mesh_builder.hpp"
+
+#include <petscsf.h>
+
+#include "slipwave/core/option_rules.hpp"
+#include "slipwave/mesh/memory_estimate.hpp"
 #include "slipwave/mesh/mesh_options.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
 #include "slipwave/mesh/partition_metis.hpp"
@@ -127,7 +132,14 @@ PetscErrorCode labelBoxSides(DM dm, const BoxSpec &box, std::vector<std::string>
 }
 
 PetscErrorCode createBox(MPI_Comm comm, PetscInt dim, DM *dm, const BoxSpec *box, std::string *source) {
+  double      vertices = 1;
+  std::string faces    = "-mesh_box_faces = ";
   PetscFunctionBeginUser;
+  for (PetscInt d = 0; d < dim; ++d) {
+    vertices *= box->faces[d] + 1.0;
+    faces += (d ? "," : "") + std::to_string(box->faces[d]);
+  }
+  PetscCall(MemoryCheck(comm, vertices, dim, faces.c_str()));
   PetscCall(DMPlexCreateBoxMesh(comm, dim, PETSC_FALSE, box->faces, box->lower, box->upper, nullptr, PETSC_TRUE, dm));
   char buf[128];
   if (dim == 2) std::snprintf(buf, sizeof buf, "box %" PetscInt_FMT " x %" PetscInt_FMT " quadrilaterals", box->faces[0], box->faces[1]);
@@ -150,6 +162,7 @@ PetscErrorCode createFromGmsh(MPI_Comm comm, const char *file, DM *dm, const std
   }
   PetscCallMPI(MPI_Bcast(&readable, 1, MPI_INT, 0, comm));
   PetscCheck(readable, comm, PETSC_ERR_FILE_OPEN, "-mesh_file = %s: cannot open the file; allowed: a readable Gmsh .msh file (format 2.2 or 4.1)", file);
+  PetscCall(MemoryCheckGmshFile(comm, file));
   PetscBool has;
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-dm_plex_gmsh_use_regions", &has));
   if (!has) PetscCall(PetscOptionsSetValue(nullptr, "-dm_plex_gmsh_use_regions", "true"));
@@ -275,6 +288,56 @@ PetscErrorCode removeVoidRegions(MPI_Comm comm, DM *dm, const std::vector<std::s
   PetscFunctionReturn(0);
 }
 
+// PETSc stops an unknown -petscpartitioner_type with a traceback, and this PETSc registers
+// parmetis and chaco without having them; refuse all but the partitioners that work here.
+PetscErrorCode checkPartitionerType(MPI_Comm comm) {
+  const char *const working[] = {kPartitionerMetis, "ptscotch", "simple", "gather"};
+  char              type[256] = "";
+  PetscBool         set       = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-petscpartitioner_type", type, sizeof type, &set));
+  std::string allowed;
+  bool        known = !set;
+  for (const char *name : working) {
+    known = known || std::strcmp(name, type) == 0;
+    allowed += (allowed.empty() ? "" : ", ") + std::string(name);
+  }
+  PetscCheck(known, comm, PETSC_ERR_USER_INPUT, "-petscpartitioner_type = %s; allowed: %s", type, allowed.c_str());
+  PetscFunctionReturn(0);
+}
+
+// The migration SF's leaves are the distributed points, its roots the serial points (cells
+// first, in the serial mesh's cell order); without it (one rank) the numbers are unchanged.
+PetscErrorCode recordSerialCells(DM dm, PetscSF migration, std::vector<PetscInt> *serial_cell) {
+  PetscInt c_start, c_end;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
+  serial_cell->resize(c_end - c_start);
+  for (PetscInt c = c_start; c < c_end; ++c) (*serial_cell)[c - c_start] = c;
+  if (!migration) PetscFunctionReturn(0);
+  PetscInt           nleaves;
+  const PetscInt    *local;
+  const PetscSFNode *remote;
+  PetscCall(PetscSFGetGraph(migration, nullptr, &nleaves, &local, &remote));
+  for (PetscInt i = 0; i < nleaves; ++i) {
+    const PetscInt point = local ? local[i] : i;
+    if (point >= c_start && point < c_end) (*serial_cell)[point - c_start] = remote[i].index;
+  }
+  PetscFunctionReturn(0);
+}
+
+// The reader holds the whole mesh on rank 0; what follows (split, distribution, operators)
+// needs the estimate's memory.
+PetscErrorCode checkMemoryOfFile(MPI_Comm comm, DM serial, PetscInt dim, const std::string &file) {
+  PetscInt v_start, v_end;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetDepthStratum(serial, 0, &v_start, &v_end));
+  double vertices = (double)(v_end - v_start);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &vertices, 1, MPI_DOUBLE, MPI_SUM, comm));
+  PetscCall(MemoryCheck(comm, vertices, dim, ("-mesh_file = " + file).c_str()));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
@@ -288,8 +351,11 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   if (!o.file.empty()) {
     PetscCall(createFromGmsh(comm, o.file.c_str(), &serial, desc->regions, &desc->boundaries));
     PetscCall(DMGetDimension(serial, &desc->dim));
+    PetscCall(core::OptionsValidateForDimension(comm, desc->dim, false));
+    PetscCall(checkMemoryOfFile(comm, serial, desc->dim, o.file));
     desc->source = o.file;
   } else {
+    PetscCall(core::OptionsValidateForDimension(comm, desc->dim, true));
     PetscCall(createBox(comm, desc->dim, &serial, &o.box, &desc->source));
     PetscCall(labelBoxRegions(comm, serial, desc->regions, o.region_boxes, o.box));
     PetscCall(removeVoidRegions(comm, &serial, o.voids, &desc->regions, &o.region_boxes, o.box));
@@ -310,18 +376,22 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   // program that builds a mesh has it); the user can still pick another with
   // -petscpartitioner_type.
   PetscCall(PartitionerRegisterMetis());
+  PetscCall(checkPartitionerType(comm));
   PetscCall(PetscPartitionerSetType(part, kPartitionerMetis));
   PetscCall(PetscPartitionerSetFromOptions(part));
   PetscPartitionerType part_type;
   PetscCall(PetscPartitionerGetType(part, &part_type));
   desc->partitioner = part_type;
-  PetscCall(DMPlexDistribute(serial, 0, nullptr, &dist));
+  PetscSF migration = nullptr;
+  PetscCall(DMPlexDistribute(serial, 0, &migration, &dist));
   if (dist) {
     PetscCall(DMDestroy(&serial));
     *dm = dist;
   } else {
     *dm = serial;
   }
+  PetscCall(recordSerialCells(*dm, migration, &desc->serial_cell));
+  PetscCall(PetscSFDestroy(&migration));
   PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));
   PetscFunctionReturn(0);
 }

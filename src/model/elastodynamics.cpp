@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "slipwave/core/log_events.hpp"
+#include "slipwave/fem/cell_quality_check.hpp"
 #include "slipwave/model/attenuation.hpp"
 #include "slipwave/model/body_force.hpp"
 #include "slipwave/model/drm.hpp"
@@ -157,6 +158,7 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
     return m->bulk.Setup(m->dm, fe);
   };
   PetscCall(setupBulk());
+  PetscCall(fem::CellQualityCheck(m->dm, m->bulk, m->mesh.serial_cell));
   PetscCall(DMCreateLocalVector(m->dm, &m->u_local));
   PetscCall(VecDuplicate(m->u_local, &m->f_local));
   PetscCall(assembleMass(m));

@@ -8,13 +8,17 @@
 # src/app/simulation.cpp, src/app/initial_conditions.cpp, src/core/options_check.cpp,
 # src/model/elastodynamics.cpp); the stable limit 0.00204124 s is the Gershgorin bound the dry
 # run of the control reports.
+# Each case runs in its own empty working directory with -output_dir inside it: afterwards
+# nothing may exist there but the output folder, the input directory must be unchanged, the
+# exit must be a plain non-zero status (no signal: no abort, no uncaught exception), and no
+# PETSc traceback may appear on either stream.
 set -u
 BUILD=${BUILD:-build}
-bin="$BUILD/slipwave"
+bin="$(cd "$(dirname "$BUILD/slipwave")" && pwd)/slipwave"
 [ -x "$bin" ] || { echo "missing $bin: run make build-only"; exit 1; }
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+tmp=$(mktemp -d); runs=$(mktemp -d); trap 'rm -rf "$tmp" "$runs"' EXIT
 base="-mesh_box_faces 1,100 -mesh_box_upper 1,100 -regions soil -bc_bottom_type absorbing -input_wave sv -input_boundary bottom -input_stf ricker
- -constrain_components y -ts_max_time 0.1 -output_fields false -dry_run -output_dir $tmp/out"
+ -constrain_components y -ts_max_time 0.1 -output_fields false -dry_run -output_dir out"
 soil="-material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200"
 printf 'garbage\nthis is not a mesh\n' > "$tmp/garbage.msh"
 printf 'time,acceleration\n0,0\n0.01,0.5\n0.02,0.5\n0.03,0\n' > "$tmp/good.csv"
@@ -23,32 +27,90 @@ printf 'time,acceleration\n0,0\n0.01,0.5\n0.02,abc\n' > "$tmp/bad.csv"
 printf 'time_s,acceleration_g\n0,0\n0.01,0.05\n0.02,0\n' > "$tmp/in_g.csv"
 printf 'time_s,acceleration_cm/s^2\n0,0\n0.01,50\n0.02,0\n' > "$tmp/in_cm.csv"
 printf 'header 1\nheader 2\nheader 3\nNPTS=    5, DT=   .0100 SEC\n 0.0 0.01 0.02\n' > "$tmp/short.at2"
+# Option files: PETSc's format is one '-option [value]' per line.
+printf -- '-dry_run\n' > "$tmp/good.opts"
+head -c 64 "$bin" > "$tmp/binary.opts"
+printf 'dry_run true\n' > "$tmp/malformed.opts"
+printf -- '-ts_max_time 0.1 0.2\n' > "$tmp/extra_token.opts"
+printf -- '-start_in_debugger noxterm\n' > "$tmp/debugger.opts"
+printf -- '# attach gdb on error\n-on_error_attach_debugger gdb\n' > "$tmp/attach.opts"
+printf -- '-display evil.example:0\n' > "$tmp/display.opts"
+printf -- '-on_error_emacs evil.example\n' > "$tmp/emacs.opts"
+printf -- '-options_file %s/debugger.opts\n' "$tmp" > "$tmp/nested.opts"
+printf -- '-options_file %s/loop.opts\n' "$tmp" > "$tmp/loop.opts"
+printf -- '-log_view :../escaped.txt\n' > "$tmp/log_view.opts"
+printf 'dry_run: [\n' > "$tmp/broken.yaml"
+printf 'start_in_debugger: noxterm\n' > "$tmp/debugger.yaml"
+printf 'stop:\n  for_debugger: true\n' > "$tmp/nested_debugger.yaml"
+mkdir "$tmp/adir"
+: > "$tmp/empty.csv"
+printf 'name,x,y\n../../x,0.5,50\n' > "$tmp/st_dotdot.csv"
+printf 'name,x,y\nS1,0.5,50abc\n' > "$tmp/st_trailing.csv"
+printf 'name,x,y\nS1,0.5,inf\n' > "$tmp/st_inf.csv"
+printf 'name,x,y\nS1,0.5,50\nS1,0.5,60\n' > "$tmp/st_twice.csv"
+printf 'name,x,y\n' > "$tmp/st_header_only.csv"
+# Gmsh 2.2 meshes of two quadrilaterals in the physical group "soil": nodes 1-3 along y = 0,
+# 4-6 along y = 1. bowtie: the second cell's last two nodes swapped (a folded map);
+# zero_area: nodes 3 and 6 moved onto 2 and 5 (the second cell has no area); slender: the
+# second cell 100 m long and 1 m high (aspect 100 > the default limit 50).
+gmsh_two_quads() { # $1 x of nodes 3 and 6, $2 the second element's node list
+  printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n2 1 "soil"\n$EndPhysicalNames\n'
+  printf '$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 %s 0 0\n4 0 1 0\n5 1 1 0\n6 %s 1 0\n$EndNodes\n' "$1" "$1"
+  printf '$Elements\n2\n1 3 2 1 1 1 2 5 4\n2 3 2 1 1 %s\n$EndElements\n' "$2"
+}
+gmsh_two_quads 2 "2 3 5 6" > "$tmp/bowtie.msh"
+gmsh_two_quads 1 "2 3 6 5" > "$tmp/zero_area.msh"
+gmsh_two_quads 101 "2 3 6 5" > "$tmp/slender.msh"
+printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n2000000000\n1 0 0 0\n' > "$tmp/huge_22.msh"
+printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 1\n$EndEntities\n$Nodes\n1 1000000000 1 1000000000\n' > "$tmp/huge_41.msh"
+# One hexahedron, the unit cube, in the physical group "soil", with node 7 (1,1,1) moved to
+# z = $1: -1 pushes it through the bottom face (inverted), and with all of z = 0 it is flat.
+gmsh_hex() {
+  printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n3 1 "soil"\n$EndPhysicalNames\n$Nodes\n8\n'
+  printf '1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0 0 %s\n6 1 0 %s\n7 1 1 %s\n8 0 1 %s\n$EndNodes\n' "$2" "$2" "$1" "$2"
+  printf '$Elements\n1\n1 5 2 1 1 1 2 3 4 5 6 7 8\n$EndElements\n'
+}
+gmsh_hex -1 1 > "$tmp/hex_inverted.msh"
+gmsh_hex 0 0 > "$tmp/hex_flat.msh"
+# 151 stations at 2 coordinates each: 302 values, beyond the 300 -station_coordinates holds.
+stations151=$(seq 1 151 | awk '{printf "%s0.5,%g", (NR > 1 ? "," : ""), 0.5 + 0.5 * $1}')
 
-control=$("$bin" $base $soil 2>&1) || { echo "FAIL: the control run (base options + valid material) exits non-zero:"; echo "$control"; exit 1; }
+control=$(cd "$runs" && "$bin" $base $soil 2>&1) || { echo "FAIL: the control run (base options + valid material) exits non-zero:"; echo "$control"; exit 1; }
 grep -q "stable step: 2.0412e-03 s" <<<"$control" || { echo "FAIL: the control's stable step changed; update dt_above_stable_limit:"; echo "$control"; exit 1; }
 echo "ok: control run succeeds"
+rm -rf "$runs/out"
+inputs_before=$(cd "$tmp" && find . | sort)
 
 fail=0; n=0
 while IFS= read -r line; do
   [[ -z "${line// }" || "$line" == \#* ]] && continue
   IFS='|' read -r name args regex <<<"$line"
   name=$(xargs <<<"$name"); args=$(xargs <<<"$args"); regex=$(sed -e 's/^ *//' -e 's/ *$//' <<<"$regex")
-  args=${args//@SOIL@/$soil}; args=${args//@TMP@/$tmp}
+  args=${args//@SOIL@/$soil}; args=${args//@TMP@/$tmp}; args=${args//@STATIONS151@/$stations151}
   n=$((n + 1))
-  err=$("$bin" $base $args 2>&1 >"$tmp/stdout"); rc=$?
+  cwd="$runs/$n"; mkdir "$cwd"
+  err=$(cd "$cwd" && "$bin" $base $args 2>&1 >"$runs/stdout"); rc=$?
   lines=$(printf '%s' "$err" | grep -c '')
+  stray=$(cd "$cwd" && find . -mindepth 1 -not -path './out' -not -path './out/*')
+  inputs_after=$(cd "$tmp" && find . | sort)
   if [ $rc -eq 0 ]; then
     echo "FAIL: $name: exit 0 (expected an error)"; fail=1
+  elif [ $rc -ge 128 ]; then
+    echo "FAIL: $name: killed by signal $((rc - 128)) (abort or crash):"; echo "$err" | head -4 | sed 's/^/    /'; fail=1
+  elif [ -n "$stray" ]; then
+    echo "FAIL: $name: wrote outside -output_dir: $stray"; fail=1
+  elif [ "$inputs_after" != "$inputs_before" ]; then
+    echo "FAIL: $name: changed the input directory:"; diff <(echo "$inputs_before") <(echo "$inputs_after") | sed 's/^/    /'; fail=1
   elif [ "$lines" -ne 1 ]; then
     echo "FAIL: $name: $lines stderr lines (expected exactly one):"; echo "$err" | head -8 | sed 's/^/    /'; fail=1
   elif ! grep -Eq "^slipwave: error: $regex" <<<"$err"; then
     echo "FAIL: $name: stderr does not match /^slipwave: error: $regex/:"; echo "    $err"; fail=1
-  elif grep -q 'PETSC ERROR' "$tmp/stdout"; then
+  elif grep -q 'PETSC ERROR\|terminate called' "$runs/stdout"; then
     echo "FAIL: $name: PETSc traceback on stdout"; fail=1
   else
     echo "ok: $name: $err"
   fi
 done < tests/errors/cases.txt
-[ $n -ge 25 ] || { echo "FAIL: only $n cases read from tests/errors/cases.txt"; fail=1; }
+[ $n -ge 80 ] || { echo "FAIL: only $n cases read from tests/errors/cases.txt"; fail=1; }
 echo "$n cases"
 exit $fail

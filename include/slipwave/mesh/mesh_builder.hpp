@@ -24,6 +24,9 @@ struct MeshDescription {
   std::string              source;     // "box NxM" or the file name, for the report
   std::string              partitioner; // the PetscPartitioner type that distributed the mesh
   std::vector<InterfaceSpec> interfaces; // split along these before distribution
+  // Per local cell: its number in the serial mesh (the file's order of cells, or the box's),
+  // so messages name a cell the same way on any number of ranks.
+  std::vector<PetscInt> serial_cell;
 };
 
 // Reads the -mesh_* and -regions options, creates, labels and distributes the mesh.

@@ -1,0 +1,20 @@
+// The mesh check run once after the bulk operator is set up, before the mass and the
+// stiffness are assembled: an inverted or degenerate cell stops the run, and a distorted
+// one too unless -mesh_quality_check warn (or off) is given. The message names the first
+// such cell (0-based number in the serial mesh: the order of the file's cells, or the box's;
+// the same on any number of ranks) and its node coordinates.
+// Options: -mesh_quality_check error|warn|off (default error; what a distorted cell does),
+//          -mesh_quality_max_aspect (default 50), -mesh_quality_min_jacobian_ratio (default 0.1).
+#pragma once
+#include <petscdmplex.h>
+
+#include <vector>
+
+#include "slipwave/fem/bulk_operator.hpp"
+
+namespace slipwave::fem {
+
+// serial_cell: MeshDescription::serial_cell.
+PetscErrorCode CellQualityCheck(DM dm, const BulkOperator &bulk, const std::vector<PetscInt> &serial_cell);
+
+} // namespace slipwave::fem
