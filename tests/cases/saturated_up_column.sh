@@ -16,7 +16,7 @@ for MODE in "" "-pore_pressure_subcycle false"; do
 MAT="-material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -material_soil_saturated -material_soil_porosity 0.4 -material_soil_hydraulic_conductivity 0.04"
 $SW -regions soil $MAT -mesh_box_faces 1,50 -mesh_box_upper 1,50 -constrain_components x -bc_bottom_type velocity -bc_bottom_components y -bc_bottom_stf ricker \
   -bc_bottom_f0 10 -bc_bottom_t0 0.12 -bc_bottom_amplitude 0.1 -bc_top_fluid drained -ts_max_time 0.4 -station_coordinates 0,50,0,25,0,10 \
-  -station_names top,d25,d40 -output_dir "$WORK" -output_fields 0 -progress_interval 100 $MODE | grep -E "pore pressure step|sub-cycled|done"
+  -station_names top,d25,d40 -output_dir "$WORK" -output_overwrite -output_fields 0 -progress_interval 100 $MODE | grep -E "pore pressure step|sub-cycled|done"
 $PY tests/tools/up_column.py compare "$WORK" --stations top,d25,d40 --depths 0,25,40 --height 50 --rho 2000 --vp 400 --porosity 0.4 \
   --hydraulic-conductivity 0.04 --f0 10 --t0 0.12 --amplitude 0.1 --t-end 0.4
 done
