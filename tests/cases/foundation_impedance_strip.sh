@@ -26,28 +26,10 @@
 # 0.072 (at a0 = 2; 0.05 below 1.9), rocking B/4 0.156, B/8 0.096, extrapolated 0.043.
 set -eu
 . tests/tools/lib.sh
-# run NAME WIDTH DEPTH H SPONGE_LAYER LOAD: the footing centred on the surface of a
-# WIDTH x DEPTH soil box (inside the sponge layers, each SPONGE_LAYER thick), faces of H.
-run() {
-  W=$2; D=$3; s=$5
-  opts="-regions sp0,sp1,sp2,sp3,soil,air,footing -region_soil_box $((4 * s)),$((W - 4 * s)),$((4 * s)),$D"
-  i=0
-  for xi in 0.25 0.15 0.08 0.03; do
-    opts="$opts -material_sp${i}_rho 2000 -material_sp${i}_vp 200 -material_sp${i}_vs 100 -material_sp${i}_damping_ratio $xi"
-    [ $i = 0 ] || opts="$opts -region_sp${i}_box $((i * s)),$((W - i * s)),$((i * s)),$D"
-    i=$((i + 1))
-  done
-  $SW $opts -mesh_box_faces "$($PY -c "print(f'{round($W / $4)},{round(($D + 1) / $4)}')")" -mesh_box_upper $W,$((D + 1)) \
-    -region_air_box 0,$W,$D,$((D + 1)) -region_footing_box $((W / 2 - 2)),$((W / 2 + 2)),$D,$((D + 1)) -void_regions air \
-    -material_soil_rho 2000 -material_soil_vp 200 -material_soil_vs 100 -material_footing_rho 2000 -material_footing_vp 1000 \
-    -material_footing_vs 500 -bc_left_type absorbing -bc_right_type absorbing -bc_bottom_type absorbing \
-    -structure_load_region footing -structure_load_stf ricker -structure_load_f0 6 -structure_load_t0 0.25 $6 \
-    -ts_max_time 4 -output_fields 0 -progress_interval 1000000 \
-    -station_coordinates $((W / 2 - 2)),$D,$((W / 2)),$D,$((W / 2 + 2)),$D -station_names L,C,R -output_dir "$WORK/$1" > /dev/null
-}
-run vertical 80 40 0.5 6 "-structure_load_force 0,1e5"
-run rocking_h 40 20 0.5 3 "-structure_load_moment 1e5"
-run rocking_h2 40 20 0.25 3 "-structure_load_moment 1e5"
+. tests/tools/strip_footing.sh
+strip_footing_run vertical 80 40 0.5 6 "-structure_load_force 0,1e5"
+strip_footing_run rocking_h 40 20 0.5 3 "-structure_load_moment 1e5"
+strip_footing_run rocking_h2 40 20 0.25 3 "-structure_load_moment 1e5"
 $PY - "$WORK" <<'PY'
 import sys
 import numpy as np
@@ -63,9 +45,7 @@ ref = fr.reference(a0s, B, rho, vp, vs)
 
 
 def measured(run, mode, x0):
-    f, P, Ux, Uy, Th = fr.spectra(f"{work}/{run}", 1e5, 6.0, 0.25, x0 - B, x0 + B)
-    w = 2 * np.pi * f[1:]
-    P, Ux, Uy, Th = P[1:], Ux[1:], Uy[1:], Th[1:]
+    w, P, Ux, Uy, Th = fr.load_run(f"{work}/{run}", x0, B)
     K = fr.vertical_impedance(w, P, Uy, m) if mode == "vertical" else fr.apparent_rocking(w, P, Ux, Th, m, I_c, e)
     return fr.at(a0s, w * B / vs, K)
 

@@ -41,6 +41,13 @@ def spectra(run, amplitude, f0, t0, x_left, x_right, pad=4):
     return f, fft(amplitude * ricker(t, f0, t0)), fft(C["u_x"]), fft(C["u_y"]), fft(theta)
 
 
+def load_run(run, x0, B, amplitude=1e5, f0=6.0, t0=0.25):
+    """w [rad/s] and the spectra of spectra() (without w = 0) of a run of
+    tests/tools/strip_footing.sh, footing centred at x0."""
+    f, P, Ux, Uy, Th = spectra(run, amplitude, f0, t0, x0 - B, x0 + B)
+    return 2 * np.pi * f[1:], P[1:], Ux[1:], Uy[1:], Th[1:]
+
+
 def rigid_block(rho, width, height):
     """Mass, moment of inertia about the centre of mass and its height above the base, per
     unit length, of a rectangular footing."""
