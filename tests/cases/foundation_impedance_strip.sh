@@ -1,7 +1,7 @@
 # Dynamic impedance of a rigid strip footing on an elastic half-space (issue 12): slipwave's
 # forced vibration against the reference tests/tools/strip_impedance.py (subdivision method,
-# welded contact as here; it checks itself against the static rocking stiffness, the
-# high-frequency dashpots and its own convergence: `python3 tests/tools/strip_impedance.py`),
+# welded contact as here; run first, it checks itself against the static rocking stiffness,
+# the high-frequency dashpots and its own convergence in N and in the wavenumber integral),
 # vertical and rocking over a0 = w B / vs = 0.2 .. 2 (step 0.1), complex relative error of the
 # soil's impedance within 10 % (issue 12's bound) at every a0.
 # Model: footing 4 m x 1 m (B = 2 m, rho 2000, vs 500 m/s: 25 x the soil's G) welded on soil
@@ -26,6 +26,7 @@
 # 0.072 (at a0 = 2; 0.05 below 1.9), rocking B/4 0.156, B/8 0.096, extrapolated 0.043.
 set -eu
 . tests/tools/lib.sh
+$PY tests/tools/strip_impedance.py
 . tests/tools/strip_footing.sh
 strip_footing_run vertical 80 40 0.5 6 "-structure_load_force 0,1e5"
 strip_footing_run rocking_h 40 20 0.5 3 "-structure_load_moment 1e5"

@@ -23,11 +23,12 @@ The flexibility matrix is inverted, the rigid-body motion imposed, and the resul
 and moment give K (3 x 3: horizontal, vertical, rocking about the base's centre).
 
 Contact: "welded" (both traction components under the footing, as in slipwave, where the
-footing is one with the soil; Luco & Westmann 1972, J. Appl. Mech. 39, "Dynamic response of a
-rigid footing bonded to an elastic half space", and Gazetas 1975 take the strip bonded) or
-"relaxed" (no shear for vertical and rocking, no normal traction for horizontal motion:
-Karasudhi, Keer & Lee 1968; the assumption of Luco 1974 for the disc). Welded contact
-couples horizontal motion and rocking (K_xr).
+footing is one with the soil; Gazetas 1975 takes the strip "perfectly bonded", and so, by
+its title, does Luco & Westmann 1972, "Dynamic response of a rigid footing bonded to an
+elastic half space") or "relaxed" (no shear for vertical and rocking, no normal traction for
+horizontal motion: the assumption of Luco 1974, Nucl. Eng. Des. 31, for the disc). Welded
+contact couples horizontal motion and rocking (K_xr); at nu = 1/3 it stiffens rocking by
+3.5 % and the translations by about 1 % over relaxed contact (printed by the self-check).
 
 Conventions: z down (a vertical force and displacement are positive down), rocking theta
 with u_z = theta x (the edge at +B goes down), moment M = int q_z x dx. Dimensionless
@@ -166,6 +167,9 @@ def self_check():
     # (1) Static limit of rocking, relaxed contact: K_r = pi G B^2 / (2 (1 - nu)) (exact).
     K = impedance_matrix(0.01, n=48, contact="relaxed")
     report("rocking, relaxed, a0 = 0.01: Re K_rr / K_r", K[2, 2].real / Kr, 1.0, 0.01)
+    Kw = impedance_matrix(0.01, n=48)
+    print(f"welded / relaxed contact at a0 = 0.01: rocking {Kw[2, 2].real / K[2, 2].real:.4f}, vertical {abs(Kw[1, 1] / K[1, 1]):.4f}, "
+          f"horizontal {abs(Kw[0, 0] / K[0, 0]):.4f}; coupling K_xr / (B sqrt(|K_xx| K_rr)) = {abs(Kw[0, 2]) / (B * np.sqrt(abs(Kw[0, 0]) * Kw[2, 2].real)):.3f}")
     # (2) Convergence in N and in the wavenumber integration at a0 = 1 and 2 (welded).
     for a0 in (1.0, 2.0):
         K48 = impedance_matrix(a0, n=48)
