@@ -28,16 +28,31 @@ import numpy as np
 from scipy.special import sici
 
 
-def _integrals(x, omega, vp, vs, mu, k_max, nk):
-    """u_z(x, w), u_x(x, w) per unit force for complex w (arrays over w), x > 0."""
-    nu = 1 - 0.5 / (1 - (vs / vp) ** 2)  # Poisson's ratio from vp/vs
-    k = np.linspace(0.0, k_max, nk)[None, :]
-    w = omega[:, None]
-    ka2, kb2 = (w / vp) ** 2, (w / vs) ** 2
+def surface_kernels(k, omega, vp, vs, mu):
+    """The surface flexibility in the wavenumber domain (module docstring), broadcast over k
+    and w (complex k allowed: numpy's principal square roots are the decaying, outgoing
+    branches for Re k, Im k >= 0): U_z (vertical load -> u_z, cosine transform), U_x
+    (horizontal load -> u_x, cosine transform; U_z with the P and S roots swapped,
+    by the symmetry of the traction problem) and V_x (vertical load -> u_x, sine transform; by
+    reciprocity a horizontal load gives u_z with -V_x)."""
+    ka2, kb2 = (omega / vp) ** 2, (omega / vs) ** 2
     nua, nub = np.sqrt(k * k - ka2 + 0j), np.sqrt(k * k - kb2 + 0j)
     R = (2 * k * k - kb2) ** 2 - 4 * k * k * nua * nub
     Uz = -kb2 * nua / (mu * R)
+    Ux = -kb2 * nub / (mu * R)
     Vx = k * (2 * k * k - kb2 - 2 * nua * nub) / (mu * R)
+    return Uz, Ux, Vx
+
+
+def poisson_ratio(vp, vs):
+    return 1 - 0.5 / (1 - (vs / vp) ** 2)
+
+
+def _integrals(x, omega, vp, vs, mu, k_max, nk):
+    """u_z(x, w), u_x(x, w) per unit force for complex w (arrays over w), x > 0."""
+    nu = poisson_ratio(vp, vs)
+    k = np.linspace(0.0, k_max, nk)[None, :]
+    Uz, _, Vx = surface_kernels(k, omega[:, None], vp, vs, mu)
     wk = np.full(nk, k_max / (nk - 1))
     wk[0] = wk[-1] = 0.5 * k_max / (nk - 1)
     uz = (wk * Uz * np.cos(k * x)).sum(axis=1) / np.pi
