@@ -23,7 +23,7 @@ constexpr size_t kMaxDirLength = 3800;
 // run_report.cpp, checkpoint.cpp, stations.cpp, field_writer.cpp).
 bool isRunFile(const std::string &name) {
   static const char *const exact[] = {"energy.csv", "run_info.json", "checkpoint.bin", "checkpoint.bin.tmp", "volume.h5", "volume.xmf",
-                                      ".volume.xmf.partial", "stations.h5", "stations"};
+                                      ".volume.xmf.partial", "stations.h5", ".stations.h5.spare", ".stations.h5.partial", "stations"};
   for (const char *e : exact)
     if (name == e) return true;
   auto ends = [&](const char *tail) { const std::string t = tail; return name.size() > t.size() && name.compare(name.size() - t.size(), t.size(), t) == 0; };

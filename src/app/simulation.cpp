@@ -110,11 +110,11 @@ PetscErrorCode appendEnergyRow(Run *r, PetscInt step, PetscReal t) {
   PetscFunctionReturn(0);
 }
 
-// At every output time, a SIGTERM and the end: the rows sampled so far go to disk.
-PetscErrorCode flushSeries(Run *r) {
+// At every output time and a SIGTERM (last): the rows sampled so far go to disk.
+PetscErrorCode flushSeries(Run *r, bool last) {
   PetscFunctionBeginUser;
   r->energy_csv.Flush();
-  PetscCall(r->stations.Flush(r->model.comm, r->opt.output_dir));
+  PetscCall(r->stations.Flush(r->model.comm, r->opt.output_dir, last));
   PetscFunctionReturn(0);
 }
 
@@ -124,7 +124,7 @@ PetscErrorCode stopIfRequested(Run *r, PetscInt step, PetscReal t) {
   PetscFunctionBeginUser;
   PetscCall(StopRequested(r->model.comm, &requested));
   if (!requested) PetscFunctionReturn(0);
-  PetscCall(flushSeries(r));
+  PetscCall(flushSeries(r, true));
   SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT, "stopped by SIGTERM after step %" PetscInt_FMT ", t = %g s; stations and energy.csv hold every step up to it, the fields every output time up to it (%s)",
           step, (double)t, r->opt.output_dir);
 }
@@ -176,7 +176,7 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   PetscCall(appendEnergyRow(r, step, t));
   bool due;
   PetscCall(r->frames.WriteIfDue(r->model, step, t, last, u, v, a, &due));
-  if (due) PetscCall(flushSeries(r));
+  if (due) PetscCall(flushSeries(r, false));
   PetscCall(checkpointIfDue(r, ts, step));
   PetscCall(printProgressIfDue(r, step, t, h, last));
   PetscCall(stopIfRequested(r, step, t));
@@ -272,7 +272,7 @@ PetscErrorCode openOutputs(Run *r, TS ts) {
 PetscErrorCode closeOutputs(Run *r) {
   PetscFunctionBeginUser;
   r->energy_csv.Close();
-  PetscCall(r->stations.Flush(r->model.comm, r->opt.output_dir));
+  PetscCall(r->stations.Flush(r->model.comm, r->opt.output_dir, true));
   PetscCall(r->frames.Close());
   PetscFunctionReturn(0);
 }

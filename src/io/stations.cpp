@@ -2,7 +2,10 @@
 
 #include <hdf5.h>
 
+#include <fcntl.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <climits>
 #include <cmath>
 #include <cstdio>
@@ -225,6 +228,9 @@ const char *const kDatasets[6] = {"time", "displacement", "velocity", "accelerat
 // touch few chunks.
 constexpr hsize_t kChunkRows = 256;
 
+// stations.h5's copy one flush behind (see Flush); app/output_dir.cpp lists it as a run file.
+const char *const kSpareName = ".stations.h5.spare";
+
 // A new, empty, extendible dataset: [0] or [0, width], growing along the first dimension.
 hid_t createExtendible(hid_t group, const char *name, int width) {
   const int     rank     = width == 0 ? 1 : 2;
@@ -259,11 +265,51 @@ herr_t appendRows(hid_t dset, const std::vector<double> &rows, int width) {
   return status;
 }
 
+// Appends rows (per station, row-major, row values each) to the station groups of an HDF5 file,
+// created with its groups and empty extendible datasets first if create.
+PetscErrorCode appendRowsToFile(const std::string &path, bool create, const std::vector<std::string> &names, const std::vector<std::vector<double>> &rows, int row, int dim,
+                                bool pressure) {
+  PetscFunctionBeginUser;
+  hid_t file = create ? H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT) : H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", path.c_str());
+  herr_t status = 0;
+  for (size_t s = 0; s < names.size() && status >= 0; ++s) {
+    hid_t        group = create ? H5Gcreate2(file, names[s].c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : H5Gopen2(file, names[s].c_str(), H5P_DEFAULT);
+    const size_t nt    = rows[s].size() / row;
+    for (int q = 0; q < (pressure ? 6 : 4) && status >= 0; ++q) {
+      const int           width = q == 0 || q >= 4 ? 0 : dim;
+      std::vector<double> buf(nt * std::max(width, 1));
+      for (size_t r = 0; r < nt; ++r)
+        for (int k = 0; k < std::max(width, 1); ++k) buf[r * std::max(width, 1) + k] = rows[s][r * row + (q == 0 ? 0 : q >= 4 ? 1 + 3 * dim + (q - 4) : 1 + (q - 1) * dim + k)];
+      hid_t dset = create ? createExtendible(group, kDatasets[q], width) : H5Dopen2(group, kDatasets[q], H5P_DEFAULT);
+      status     = dset < 0 ? (herr_t)-1 : appendRows(dset, buf, width);
+      if (dset >= 0) H5Dclose(dset);
+    }
+    H5Gclose(group);
+  }
+  const herr_t closed = H5Fclose(file);
+  PetscCheck(status >= 0 && closed >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot append to %s", path.c_str());
+  PetscFunctionReturn(0);
+}
+
+// Swaps the names of two files in one step (Linux renameat2 RENAME_EXCHANGE). Where the file
+// system cannot, three renames do it, with an instant in which only the spare names the rows.
+PetscErrorCode exchangeFiles(const std::string &a, const std::string &b) {
+  PetscFunctionBeginUser;
+  if (renameat2(AT_FDCWD, a.c_str(), AT_FDCWD, b.c_str(), RENAME_EXCHANGE) != 0) {
+    const std::string held = a + ".swap";
+    const bool        ok   = std::rename(b.c_str(), held.c_str()) == 0 && std::rename(a.c_str(), b.c_str()) == 0 && std::rename(held.c_str(), a.c_str()) == 0;
+    PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot replace %s: %s", b.c_str(), std::strerror(errno));
+  }
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 // Gathers the rows sampled since the last flush on rank 0, station by station, in station
-// order, and appends them to the CSV files and to stations.h5 (created at the first flush).
-PetscErrorCode Stations::Flush(MPI_Comm comm, const std::string &dir) {
+// order, and appends them to the CSV files and to stations.h5 (created at the first flush);
+// last: the run's final flush (the spare copy is removed).
+PetscErrorCode Stations::Flush(MPI_Comm comm, const std::string &dir, bool last) {
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   if (names_.empty()) PetscFunctionReturn(0);
@@ -309,27 +355,25 @@ PetscErrorCode Stations::Flush(MPI_Comm comm, const std::string &dir) {
     }
     PetscCheck(std::fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", path.c_str());
   }
-  // Opened and closed at every flush: a closed file is complete on disk, whatever happens next.
-  const std::string h5path = dir + "/stations.h5";
-  hid_t file = first ? H5Fcreate(h5path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT) : H5Fopen(h5path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", h5path.c_str());
-  herr_t status = 0;
-  for (size_t s = 0; s < names_.size() && status >= 0; ++s) {
-    hid_t group = first ? H5Gcreate2(file, names_[s].c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : H5Gopen2(file, names_[s].c_str(), H5P_DEFAULT);
-    const size_t nt = fresh[s].size() / row;
-    for (int q = 0; q < (has_pressure_ ? 6 : 4) && status >= 0; ++q) {
-      const int           width = q == 0 || q >= 4 ? 0 : (int)dim_;
-      std::vector<double> buf(nt * std::max(width, 1));
-      for (size_t r = 0; r < nt; ++r)
-        for (int k = 0; k < std::max(width, 1); ++k) buf[r * std::max(width, 1) + k] = fresh[s][r * row + (q == 0 ? 0 : q >= 4 ? 1 + 3 * dim_ + (q - 4) : 1 + (q - 1) * dim_ + k)];
-      hid_t dset = first ? createExtendible(group, kDatasets[q], width) : H5Dopen2(group, kDatasets[q], H5P_DEFAULT);
-      status     = dset < 0 ? (herr_t)-1 : appendRows(dset, buf, width);
-      if (dset >= 0) H5Dclose(dset);
-    }
-    H5Gclose(group);
+  // stations.h5 is never appended in place: an HDF5 file cut by a kill in the middle of a write
+  // can be unreadable as a whole. A spare copy, one flush behind, takes the last two flushes'
+  // rows and then trades names with stations.h5 in one atomic rename, so stations.h5 is always
+  // a file that was closed whole.
+  const std::string h5path = dir + "/stations.h5", spare = dir + "/" + kSpareName;
+  if (first) {
+    const std::string partial = dir + "/.stations.h5.partial";
+    PetscCall(appendRowsToFile(partial, true, names_, fresh, row, (int)dim_, has_pressure_));
+    PetscCheck(std::rename(partial.c_str(), h5path.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s: %s", h5path.c_str(), std::strerror(errno));
+    if (!last) PetscCall(appendRowsToFile(spare, true, names_, fresh, row, (int)dim_, has_pressure_));
+    previous_.assign(names_.size(), {});
+  } else {
+    std::vector<std::vector<double>> rows = previous_;
+    for (size_t s = 0; s < names_.size(); ++s) rows[s].insert(rows[s].end(), fresh[s].begin(), fresh[s].end());
+    PetscCall(appendRowsToFile(spare, false, names_, rows, row, (int)dim_, has_pressure_));
+    PetscCall(exchangeFiles(spare, h5path));
+    previous_ = std::move(fresh);
   }
-  const herr_t closed = H5Fclose(file);
-  PetscCheck(status >= 0 && closed >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot append to %s", h5path.c_str());
+  if (last) std::remove(spare.c_str());
   PetscFunctionReturn(0);
 }
 

@@ -8,7 +8,8 @@
 # - SIGKILL: the stations and energy.csv hold every step up to an output time: the last frame
 #   in volume.xmf, or the next one if the kill fell between that frame's index and the flush.
 # - SIGTERM on 2 ranks (mpiexec passes it on): the same, all ranks stopping after one step.
-# - All: stations.h5 opens (h5py), its datasets agree with the CSV files, every energy.csv row
+# - All: stations.h5 opens (h5py) (it is swapped whole, never appended in place; under SIGKILL it
+#   may end one output time earlier), its datasets agree with the CSV files, every energy.csv row
 #   is complete, volume.xmf passes scripts/check_output.py (every reference resolves to a
 #   dataset of its shape, no NaN), and every value equals the uninterrupted run's at the same
 #   step exactly (same operations in the same order: the kill changes nothing before it); on 2
@@ -47,6 +48,10 @@ def same(x, ref):
     """Bit for bit on one rank; on two, to 1e-9 of the largest value (round-off)."""
     return np.array_equal(x, ref) if run != "TERM2" else np.allclose(x, ref, rtol=0, atol=1e-9 * max(np.abs(ref).max(), 1e-300))
 
+import os
+# The spare copy of stations.h5 is removed by a run's last flush (the end, a SIGTERM).
+for folder in [full] + ([d] if sig == "TERM" else []):
+    assert not os.path.exists(f"{folder}/.stations.h5.spare"), f"{folder}: the spare stations.h5 was left behind"
 with open(f"{d}/energy.csv") as f:
     rows = list(csv.reader(f))
 header, body = rows[0], rows[1:]
@@ -68,11 +73,12 @@ else:
     n = int(re.search(r"after step (\d+)", open(f"{d}/../{run}.err").read()).group(1))
     assert steps[-1] == n and energy[-1, 1] >= frames[-1] * (1 - 1e-9), (steps[-1], n, frames[-1])
 
-def ends_right(times, what):
+def ends_right(times, what, one_earlier=False):
     """The series' last time: an allowed output time (KILL), or the stop step's (TERM)."""
     last = times[-1]
     if sig == "KILL":
-        assert any(abs(last - e) <= 1e-9 * e for e in ends), f"{what} ends at t = {last}, not at an output time in {ends}"
+        allowed = (frames[-2:-1] if one_earlier else []) + ends
+        assert any(abs(last - e) <= 1e-9 * e for e in allowed), f"{what} ends at t = {last}, not at an output time in {allowed}"
     else:
         assert len(times) == len(energy), f"{what}: {len(times)} rows, energy.csv {len(energy)}"
 
@@ -81,7 +87,9 @@ with h5py.File(f"{d}/stations.h5", "r") as h5, h5py.File(f"{full}/stations.h5", 
     for name in ("surface", "layer_base", "bedrock_base"):
         t = h5[name]["time"][:]
         table = np.loadtxt(f"{d}/stations/{name}.csv", delimiter=",", skiprows=1, ndmin=2)
-        ends_right(t, f"stations.h5/{name}")
+        # stations.h5 is swapped whole for its spare after the CSV rows are appended: a kill
+        # inside that swap's append leaves it at the output time before.
+        ends_right(t, f"stations.h5/{name}", one_earlier=True)
         ends_right(table[:, 0], f"stations/{name}.csv")
         m = min(len(t), len(energy), len(table))
         # energy.csv prints times to 10 digits, the stations to 17.

@@ -35,8 +35,9 @@ public:
   // on a clone of dm) joins the row as columns p (total: hydrostatic + excess) and p_excess
   // [Pa], compression positive.
   PetscErrorCode SamplePressure(DM pdm, Vec p_total, Vec p_excess);
-  // Collective: appends the rows sampled since the last flush to the station files.
-  PetscErrorCode Flush(MPI_Comm comm, const std::string &dir);
+  // Collective: appends the rows sampled since the last flush to the station files; last: the
+  // run's final flush.
+  PetscErrorCode Flush(MPI_Comm comm, const std::string &dir, bool last);
   PetscErrorCode Destroy();
   const std::vector<std::string> &names() const { return names_; }
   // Checkpoints: this rank's records, station after station (each the same length).
@@ -59,6 +60,7 @@ private:
   std::vector<std::string> ambiguities_;
   Vec                      work_[3] = {nullptr, nullptr, nullptr};
   size_t                   flushed_rows_ = 0; // rows per station already in the files
+  std::vector<std::vector<double>> previous_;  // rank 0: the last flush's rows, not yet in the spare stations.h5
   Vec                      pressure_local_[2] = {nullptr, nullptr};
   bool                     has_pressure_ = false;
 };
