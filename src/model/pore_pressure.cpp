@@ -518,6 +518,8 @@ PetscInt PorePressureSubsteps(const PorePressure *pp, double h) {
   return pp->subcycle && h > 0 ? std::max<PetscInt>(1, (PetscInt)std::ceil(h / (0.9 * pp->dt_diffusion))) : 1;
 }
 
+PetscErrorCode PorePressureDiffuseStep(PorePressure *pp, PetscReal h) { return diffuse(pp, h); }
+
 void PorePressureCommit(PorePressure *pp) {
   if (!pp) return;
   std::swap(pp->p, pp->p_trial);

@@ -96,6 +96,11 @@ PetscErrorCode PorePressureDestroy(PorePressure **pore);
 // skeleton f_pore = alpha Q^T p_trial (global, displacement layout, overwritten).
 PetscErrorCode PorePressureTrial(PorePressure *pore, DM dm, const PetscScalar *u_local, PetscReal t, Vec f_pore);
 void           PorePressureCommit(PorePressure *pore);
+// The diffusion part (p*, Hbar) of the coming step of size h from the committed p_n, as the
+// energy ledger computes it first in every step; a restart calls it with the checkpoint's
+// step (whose monitor, and so the ledger, it skips), so the continued run repeats the
+// uninterrupted one bit for bit (the RHS's own h = t_{n+1} - t_n differs by round-off).
+PetscErrorCode PorePressureDiffuseStep(PorePressure *pore, PetscReal h);
 // Adds alpha^2 (|Q|^T S^{-1} |Q| 1) to the Gershgorin rows of K (global, displacement layout):
 // the undrained stiffening the wave step must cover (rows of drained nodes do not stiffen).
 PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pore, DM dm, Vec rows);
