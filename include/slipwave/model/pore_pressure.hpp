@@ -72,6 +72,8 @@ struct PorePressure {
   Vec    p_total = nullptr;                      // p_h + p, refreshed by PorePressureTotal
   Vec    p_total_trial = nullptr;                // p_h + p_trial, what interfaces on saturated soil read
   bool   water_table = false;
+  Vec    at_water_table = nullptr;               // 1 at free nodes the water table drained because they lie on it
+                                                 // (not above): a noflow interface seals those of its soil side
   double water_table_elevation = 0;              // [m] along minus the gravity direction
 };
 
