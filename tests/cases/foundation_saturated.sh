@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Scene config/scenes/foundation_saturated.yaml (the default scene's block foundation on a
-# saturated sand layer, water table at the surface, El Centro at 0.3 g, tied sides), with a
+# saturated sand layer, water table at the surface, El Centro at 0.3 g, free-field sides), with a
 # noflow and with a drained interface. Coarsened to 2 m cells (the block 8 m wide, 4 cells, so
 # its edges lie on nodes) and shortened to the first 6 s (the strong motion's start, where the
 # block slides). Checks, with where each expected number comes from:
