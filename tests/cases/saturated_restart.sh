@@ -45,3 +45,27 @@ sys.exit(0 if worst == 0.0 else 1)
 PY
   echo "$ranks rank(s): restart at step $half of $steps: energy.csv and $(ls "$WORK/C$ranks"/stations/*.csv | wc -l) station files identical"
 done
+# The same with the scene config/scenes/foundation_saturated.yaml (coarsened as in
+# foundation_saturated.sh, 3 s): a noflow interface on saturated soil that sticks and slides
+# (it reads the pore pressure of the trial state), free-field sides and constant-Q damping.
+O="-options_file config/scenes/foundation_saturated.yaml -mesh_box_faces 60,30 -region_block_box -4,4,30,40 -ts_max_time 3 -output_interval 0.5 -progress_interval 100000"
+$SW $O -output_dir "$WORK/FC" > "$WORK/FC.log"
+steps=$(tail -1 "$WORK/FC/energy.csv" | cut -d, -f1)
+half=$((steps / 2))
+$SW $O -ts_max_steps $half -checkpoint_interval $half -output_dir "$WORK/FA" > "$WORK/FA.log"
+cp -r "$WORK/FA" "$WORK/FB"
+$SW $O -restart "$WORK/FB/checkpoint.bin" -output_dir "$WORK/FB" | grep -E "^restart|^done"
+cmp "$WORK/FB/energy.csv" "$WORK/FC/energy.csv"
+for f in "$WORK"/FC/stations/*.csv; do cmp "$f" "$WORK/FB/stations/$(basename "$f")"; done
+$PY - "$WORK/FB/interface_base.h5" "$WORK/FC/interface_base.h5" <<'PY'
+import sys
+import h5py
+import numpy as np
+with h5py.File(sys.argv[1]) as b, h5py.File(sys.argv[2]) as c:
+    steps = sorted(c["/fields/accumulated_slip"].keys())
+    slip = max(float(c["/fields/accumulated_slip/" + k][:].max()) for k in steps)
+    worst = max(float(np.abs(b[f"/fields/{f}/{k}"][:] - c[f"/fields/{f}/{k}"][:]).max()) for f in c["/fields"] for k in c["/fields/" + f])
+print(f"foundation_saturated: largest slip {slip * 1000:.1f} mm; interface frames, largest difference {worst}")
+sys.exit(0 if worst == 0.0 and slip > 0.01 else 1)
+PY
+echo "foundation_saturated restart at step $half of $steps: energy.csv, $(ls "$WORK"/FC/stations/*.csv | wc -l) station files and the interface output identical"
