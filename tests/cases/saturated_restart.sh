@@ -45,6 +45,19 @@ sys.exit(0 if worst == 0.0 else 1)
 PY
   echo "$ranks rank(s): restart at step $half of $steps: energy.csv and $(ls "$WORK/C$ranks"/stations/*.csv | wc -l) station files identical"
 done
+# The same with the diffusion sub-cycled (k = 0.3 m/s: 93 sub-steps per step), where the
+# restart's first step must repeat the diffusion part with the checkpoint's step, 1 rank.
+O="-options_file config/scenes/saturated_site.yaml -input_wave p -ts_max_time 0.8 -output_interval 0.2 -progress_interval 100000 -material_soil_hydraulic_conductivity 0.3"
+$SW $O -output_dir "$WORK/SC" > "$WORK/SC.log"
+grep "sub-cycled" "$WORK/SC.log"
+steps=$(tail -1 "$WORK/SC/energy.csv" | cut -d, -f1)
+half=$((steps / 2))
+$SW $O -ts_max_steps $half -checkpoint_interval $half -output_dir "$WORK/SA" > "$WORK/SA.log"
+cp -r "$WORK/SA" "$WORK/SB"
+$SW $O -restart "$WORK/SB/checkpoint.bin" -output_dir "$WORK/SB" | grep -E "^restart"
+cmp "$WORK/SB/energy.csv" "$WORK/SC/energy.csv"
+for f in "$WORK"/SC/stations/*.csv; do cmp "$f" "$WORK/SB/stations/$(basename "$f")"; done
+echo "sub-cycled restart: energy.csv and the station files identical"
 # The same with the scene config/scenes/foundation_saturated.yaml (coarsened as in
 # foundation_saturated.sh, 3 s): a noflow interface on saturated soil that sticks and slides
 # (it reads the pore pressure of the trial state), free-field sides and constant-Q damping.
