@@ -11,30 +11,34 @@
 #include "slipwave/model/attenuation.hpp"
 #include "slipwave/model/drm.hpp"
 #include "slipwave/model/free_field.hpp"
+#include "slipwave/model/pore_pressure.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 namespace slipwave::app {
 namespace {
 
 constexpr PetscInt kMagic   = 0x53574350; // "SWCP"
-constexpr PetscInt kVersion = 5; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
+constexpr PetscInt kVersion = 6; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
                                  // 4: state only (no RHS force parts, no attenuation trial);
-                                 // 5: the scene options after the header, a seal at the end
-constexpr PetscInt kHeader  = 9;
+                                 // 5: the scene options after the header, a seal at the end;
+                                 // 6: the pore pressure state and the ledger's fluid terms
+constexpr PetscInt kHeader  = 10;
 
 // The ledger as a flat array, in a fixed order.
 std::vector<double> ledgerArray(const model::EnergyLedger &e) {
   return {e.kinetic, e.strain,        e.input,        e.external,      e.reactions, e.absorbed,          e.damped, e.interface_work,
-          e.shadow,  e.shadow_start,  e.balance_error, e.scale,        e.h_prev,    e.started ? 1.0 : 0.0, e.anelastic, e.contact_damped};
+          e.shadow,  e.shadow_start,  e.balance_error, e.scale,        e.h_prev,    e.started ? 1.0 : 0.0, e.anelastic, e.contact_damped,
+          e.fluid_stored, e.darcy, e.fluid_inflow};
 }
 
 void ledgerFromArray(const double *a, model::EnergyLedger *e) {
   e->kinetic = a[0], e->strain = a[1], e->input = a[2], e->external = a[3], e->reactions = a[4], e->absorbed = a[5], e->damped = a[6];
   e->interface_work = a[7], e->shadow = a[8], e->shadow_start = a[9], e->balance_error = a[10], e->scale = a[11], e->h_prev = a[12];
   e->started = a[13] != 0, e->anelastic = a[14], e->contact_damped = a[15];
+  e->fluid_stored = a[16], e->darcy = a[17], e->fluid_inflow = a[18];
   e->external_gross = std::fabs(e->external); // not stored: the net work bounds it from below
 }
-constexpr PetscInt kLedgerSize = 16;
+constexpr PetscInt kLedgerSize = 19;
 
 std::vector<Vec> stateVectors(const CheckpointState &s) {
   Vec u, v, a;
@@ -43,6 +47,14 @@ std::vector<Vec> stateVectors(const CheckpointState &s) {
   // The force parts of the last RHS evaluation are not state: the next step recomputes them
   // before the ledger reads them (the monitor of the restart step itself is skipped).
   return {u, v, a, s.model->bc.constant_force};
+}
+
+// The committed pore pressure state of a saturated scene (model/pore_pressure.hpp): p_n,
+// alpha Q u_n (the reference of the next strain increment), H p_n (the first diffusion
+// sub-step of the next step) and the step before's mean H p (the ledger's Darcy term).
+std::vector<Vec> poreStateVectors(const CheckpointState &s) {
+  const model::PorePressure *pore = s.model->pore;
+  return pore ? std::vector<Vec>{pore->p, pore->Qu, pore->Hp, pore->Hbar_previous} : std::vector<Vec>{};
 }
 
 // A Vec holding `values` on this rank (its layout defines what a restart must reproduce).
@@ -92,7 +104,8 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
   std::vector<double> samples;
   s.stations->saveRecords(&samples);
   const PetscInt header[kHeader] = {kMagic, kVersion, size, s.model->dim, step, (PetscInt)s.model->interfaces.size(), (PetscInt)s.frame_times->size(),
-                                    (PetscInt)!s.model->initial_stress.empty(), s.model->free_field ? (PetscInt)s.model->free_field->sides.size() : 0};
+                                    (PetscInt)!s.model->initial_stress.empty(), s.model->free_field ? (PetscInt)s.model->free_field->sides.size() : 0,
+                                    (PetscInt)(s.model->pore != nullptr)};
   PetscCall(PetscViewerBinaryWrite(viewer, header, kHeader, PETSC_INT));
   std::string scene;
   PetscCall(SceneOptionsText(&scene));
@@ -103,6 +116,7 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
   for (double x : ledgerArray(*s.ledger)) scalars.push_back(x);
   for (PetscReal t : *s.frame_times) scalars.push_back(t);
   for (const auto &iface : s.model->interfaces) scalars.push_back(iface.maxDrift());
+  if (s.model->pore) scalars.push_back(s.model->pore->t);
   PetscCall(PetscViewerBinaryWrite(viewer, scalars.data(), (PetscInt)scalars.size(), PETSC_DOUBLE));
   for (Vec x : stateVectors(s)) PetscCall(VecView(x, viewer));
   if (!s.model->initial_stress.empty()) PetscCall(viewLocalArray(comm, s.model->initial_stress, viewer));
@@ -121,6 +135,7 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
     PetscCall(PetscViewerBinaryWrite(viewer, &n, 1, PETSC_INT));
     PetscCall(PetscViewerBinaryWrite(viewer, column.data(), n, PETSC_DOUBLE));
   }
+  for (Vec x : poreStateVectors(s)) PetscCall(VecView(x, viewer));
   PetscCall(PetscViewerDestroy(&viewer));
   if (rank == 0) PetscCheck(CheckpointSeal(tmp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot seal %s: %s", tmp.c_str(), std::strerror(errno));
   if (rank == 0) PetscCheck(std::rename(tmp.c_str(), path.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s", tmp.c_str(), path.c_str());
@@ -169,8 +184,10 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
   PetscCheck(header[3] == s.model->dim && header[5] == (PetscInt)s.model->interfaces.size(), comm, PETSC_ERR_USER_INPUT,
              "-restart = %s belongs to another scene (%" PetscInt_FMT "D, %" PetscInt_FMT " interfaces); allowed: the scene options of the run that wrote it",
              path.c_str(), header[3], header[5]);
+  PetscCheck(header[9] == (PetscInt)(s.model->pore != nullptr), comm, PETSC_ERR_USER_INPUT,
+             "-restart = %s belongs to another scene (saturated regions: %s); allowed: the scene options of the run that wrote it", path.c_str(), header[9] ? "yes" : "no");
   const PetscInt      nframes = header[6], ninterfaces = header[5];
-  std::vector<double> scalars(3 + kLedgerSize + nframes + ninterfaces);
+  std::vector<double> scalars(3 + kLedgerSize + nframes + ninterfaces + header[9]);
   PetscCall(PetscViewerBinaryRead(viewer, scalars.data(), (PetscInt)scalars.size(), nullptr, PETSC_DOUBLE));
   PetscCall(TSSetTime(s.ts, scalars[0]));
   PetscCall(TSSetTimeStep(s.ts, scalars[1]));
@@ -197,6 +214,7 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
     iface.setMaxDrift(scalars[3 + kLedgerSize + nframes + k]);
   }
   // Every station has one row per step taken so far (steps 0 .. step).
+  if (s.model->pore) s.stations->expectPressure();
   const PetscInt      samples = (header[4] + 1) * s.stations->rowWidth() * (PetscInt)s.stations->localStations();
   std::vector<double> records;
   PetscCall(loadLocalArray(comm, samples, viewer, &records));
@@ -223,6 +241,13 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
     PetscCall(PetscViewerBinaryRead(viewer, column.data(), n, nullptr, PETSC_DOUBLE));
     PetscCheck(s.model->free_field->sides[k].column.setState(column), comm, PETSC_ERR_USER_INPUT,
                "-restart = %s: free-field column %" PetscInt_FMT " does not fit this mesh; allowed: the scene options of the run that wrote it", path.c_str(), k);
+  }
+  for (Vec x : poreStateVectors(s)) PetscCall(VecLoad(x, viewer));
+  if (s.model->pore) {
+    // The pore pressure update's reference state is the restored one, not the first RHS's.
+    s.model->pore->t       = scalars[3 + kLedgerSize + nframes + ninterfaces];
+    s.model->pore->started = true;
+    PetscCall(model::PorePressureDiffuseStep(s.model->pore, scalars[1]));
   }
   PetscCall(PetscViewerDestroy(&viewer));
   PetscFunctionReturn(0);

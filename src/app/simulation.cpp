@@ -200,9 +200,6 @@ PetscErrorCode setUp(MPI_Comm comm, Run *r) {
   PetscCall(r->stations.Setup(r->model.dm, r->model.bulk, r->model.mesh));
   PetscCall(RegionVelocitiesRead(comm, r->model.dim, r->model.materials, &r->region_velocity));
   PetscCall(model::GeostaticOptionsRead(comm, &r->geostatic));
-  // Not yet: the checkpoint does not hold the pore pressure.
-  PetscCheck(!r->model.pore || !(r->opt.checkpoint_interval > 0 || r->opt.restart[0]), comm, PETSC_ERR_USER_INPUT,
-             "checkpoints (-checkpoint_interval, -restart) with a saturated region (-material_<r>_saturated): not supported yet; allowed: -checkpoint_interval 0 and no -restart");
   PetscFunctionReturn(0);
 }
 

@@ -297,9 +297,7 @@ PetscErrorCode addDashpotSide(PetscInt dim, const std::vector<BoundaryFace> &fac
   PetscCall(VecGetArray(sums->block_local, &ba));
   PetscCall(VecGetArray(sums->input_local, &ia));
   for (const BoundaryFace &f : faces) {
-    // A saturated region's dashpot matches its undrained P wave (the fluid moves with the skeleton).
-    physics::ElasticMaterial m = materials[f.region].elastic;
-    if (materials[f.region].vp_undrained > 0) m.vp = materials[f.region].vp_undrained;
+    const physics::ElasticMaterial m = boundaryElastic(materials[f.region]);
     for (PetscInt k = 0; k < f.nvert; ++k) {
       double   C[9];
       PetscInt off;

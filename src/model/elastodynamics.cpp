@@ -188,8 +188,10 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(VecZeroEntries(m->f_contact_damping));
   PetscCall(createInterfaces(m));
   if (any_saturated) {
-    // Not yet: the free-field columns are dry.
-    PetscCheck(!m->free_field, comm, PETSC_ERR_USER_INPUT, "-bc_<side>_type freefield with a saturated region (-material_<r>_saturated): not supported yet; allowed: absorbing or tied sides");
+    // The free-field columns have no pore pressure: exact for a vertically incident SV wave
+    // (pure shear, no volume change), not for a P wave, whose pore pressure drains.
+    PetscCheck(!m->free_field || m->bc.input_wave != InputWave::P, comm, PETSC_ERR_USER_INPUT,
+               "-bc_<side>_type freefield with a saturated region (-material_<r>_saturated) and -input_wave p: not supported (the free-field column has no pore pressure); allowed: -input_wave sv, or absorbing or tied sides");
     // Not yet: the DRM free field and its layer forces are those of a dry (one-phase) site.
     PetscCheck(!m->drm, comm, PETSC_ERR_USER_INPUT, "-input_method drm with a saturated region (-material_<r>_saturated): not supported yet; allowed: -input_method base");
     PetscCall(PorePressureCreate(m->dm, m->bulk, m->mesh.boundaries, std::move(saturated), m->bc.gravity, m->bc.gravity_direction, &m->pore));

@@ -99,7 +99,7 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
       term.segment = lo;
       term.weight  = f.weights[k];
       for (int d = 0; d < 3; ++d) term.normal[d] = f.normal[d];
-      physics::lysmerDashpot((int)dim, f.normal, f.weights[k], materials[f.region].elastic, term.C);
+      physics::lysmerDashpot((int)dim, f.normal, f.weights[k], boundaryElastic(materials[f.region]), term.C);
       side->terms.push_back(term);
     }
   }
@@ -114,7 +114,10 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
     PetscCheck(sameMaterial(a, b), comm, PETSC_ERR_USER_INPUT,
                "-bc_%s_type freefield: along '%s' between heights %g and %g the regions %s and %s differ; allowed: horizontally layered materials along a free-field side",
                name.c_str(), name.c_str(), heights[e], heights[e + 1], a.region.c_str(), b.region.c_str());
-    seg_mat[e] = a.elastic;
+    // A saturated segment's vertical chain carries the undrained P modulus: exact for the
+    // vertically incident SV wave (no volume change, no pore pressure), which is why only it
+    // drives free-field sides of saturated sites (model/elastodynamics.cpp).
+    seg_mat[e] = boundaryElastic(a);
   }
   const std::string problem = side->column.setup((int)dim, heights, seg_mat, rayleigh.alpha, rayleigh.beta);
   PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "-bc_%s_type freefield: %s", name.c_str(), problem.c_str());

@@ -185,8 +185,12 @@ PetscErrorCode GeostaticStage(Elastodynamics *m, const GeostaticOptions &o, doub
         PetscCall(iface.CountOffLinearStick(&off));
         report->pairs_off_stick += off;
       }
-      relax = report->pairs_off_stick > 0;
-      if (relax) report->fallback = std::to_string(report->pairs_off_stick) + " interface pairs would slip, open or reach the tension cut-off";
+      relax = report->pairs_off_stick > 0 || report->static_ratio >= o.tolerance;
+      if (report->pairs_off_stick > 0) report->fallback = std::to_string(report->pairs_off_stick) + " interface pairs would slip, open or reach the tension cut-off";
+      // A pair that starts on its tension plateau and ends on the stick branch: an interface
+      // on saturated soil under a water table starts (sigma_N0 = 0) in effective tension, so
+      // its zero-jump force is the plateau's -p, not the stick springs' (which K assumes).
+      else if (relax) report->fallback = "the static solution is not in equilibrium (an interface pair starts on its tension plateau)";
     }
   }
   double   ratio = report->static_ratio;

@@ -387,7 +387,8 @@ PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const st
         double z = 0;
         for (PetscInt d = 0; d < pp->dim; ++d) z -= x[a * pp->dim + d] * gravity_direction[d];
         ph[pp->cell_p[i * pp->nen + a]]    = rho_f * gravity * std::max(0.0, elevation - z);
-        above[pp->cell_p[i * pp->nen + a]] = z >= elevation ? 1.0 : 0.0;
+        // 2 on the table (within round-off of its elevation), 1 above it.
+        above[pp->cell_p[i * pp->nen + a]] = z >= elevation ? (z <= elevation + 1e-9 * std::max(1.0, std::fabs(elevation)) ? 2.0 : 1.0) : 0.0;
       }
     }
     PetscCall(VecRestoreArray(pp->q_local, &above));
@@ -395,6 +396,22 @@ PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const st
     PetscCall(DMLocalToGlobal(pp->pdm, pp->p_local, INSERT_VALUES, pp->p_hydrostatic));
     PetscCall(VecDuplicate(pp->p, &above_global));
     PetscCall(DMLocalToGlobal(pp->pdm, pp->q_local, INSERT_VALUES, above_global));
+    {
+      // Nodes on the table that no fluid boundary drained already: a noflow interface may
+      // seal them again (PorePressureInterfaceFluid).
+      PetscInt           n;
+      PetscScalar       *at;
+      const PetscScalar *ab, *mask;
+      PetscCall(VecDuplicate(pp->p, &pp->at_water_table));
+      PetscCall(VecGetLocalSize(pp->p, &n));
+      PetscCall(VecGetArray(pp->at_water_table, &at));
+      PetscCall(VecGetArrayRead(above_global, &ab));
+      PetscCall(VecGetArrayRead(pp->free_mask, &mask));
+      for (PetscInt i = 0; i < n; ++i) at[i] = PetscRealPart(ab[i]) > 1.5 && PetscRealPart(mask[i]) > 0 ? 1.0 : 0.0;
+      PetscCall(VecRestoreArrayRead(pp->free_mask, &mask));
+      PetscCall(VecRestoreArrayRead(above_global, &ab));
+      PetscCall(VecRestoreArray(pp->at_water_table, &at));
+    }
     PetscCall(PorePressureDrainNodes(pp, above_global));
     PetscCall(VecDestroy(&above_global));
     pp->drained.push_back("the water table and above");
@@ -440,7 +457,7 @@ PetscErrorCode PorePressureDestroy(PorePressure **pore) {
   PetscFunctionBeginUser;
   if (!*pore) PetscFunctionReturn(0);
   PorePressure *pp = *pore;
-  for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial, &pp->p_hydrostatic, &pp->p_total, &pp->p_total_trial,
+  for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial, &pp->p_hydrostatic, &pp->p_total, &pp->p_total_trial, &pp->at_water_table,
                  &pp->p_local, &pp->q_local})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&pp->pdm));
@@ -517,6 +534,8 @@ PetscInt PorePressureSubsteps(const PorePressure *pp, double h) {
   // The sub-steps take the bulk's default fraction (0.9) of the diffusion limit.
   return pp->subcycle && h > 0 ? std::max<PetscInt>(1, (PetscInt)std::ceil(h / (0.9 * pp->dt_diffusion))) : 1;
 }
+
+PetscErrorCode PorePressureDiffuseStep(PorePressure *pp, PetscReal h) { return diffuse(pp, h); }
 
 void PorePressureCommit(PorePressure *pp) {
   if (!pp) return;

@@ -64,15 +64,42 @@ PetscErrorCode PorePressureInterfaceFluid(PorePressure *pp, MPI_Comm comm, const
   PetscCall(core::OptionsChoice(PetscOptionsObject, "-fluid", "pore fluid on the soil side of the interface: noflow (default), drained (excess pore pressure 0)",
                                 kInterfaceFluid, 2, &condition, nullptr));
   PetscOptionsEnd();
-  if (condition == 0) PetscFunctionReturn(0);
-  pp->drained.push_back("interface " + name);
   Vec marker;
   PetscCall(VecDuplicate(pp->p, &marker));
   PetscCall(VecZeroEntries(marker));
   for (PetscInt dof : soil_dofs) PetscCall(VecSetValue(marker, dof / pp->dim, 1.0, INSERT_VALUES));
   PetscCall(VecAssemblyBegin(marker));
   PetscCall(VecAssemblyEnd(marker));
-  PetscCall(PorePressureDrainNodes(pp, marker));
+  if (condition == 1) {
+    pp->drained.push_back("interface " + name);
+    PetscCall(PorePressureDrainNodes(pp, marker));
+  } else if (pp->at_water_table) {
+    // noflow: the structure seals the soil surface it rests on, so soil nodes that the water
+    // table drained only because they lie on it (a footing on a water table at the surface)
+    // keep their excess pore pressure. Fluid boundaries (-bc_<b>_fluid drained) still win.
+    PetscInt           n, sealed = 0;
+    PetscScalar       *mask, *inv;
+    const PetscScalar *mk, *at, *S;
+    PetscCall(VecGetLocalSize(marker, &n));
+    PetscCall(VecGetArrayRead(marker, &mk));
+    PetscCall(VecGetArrayRead(pp->at_water_table, &at));
+    PetscCall(VecGetArrayRead(pp->storage, &S));
+    PetscCall(VecGetArray(pp->free_mask, &mask));
+    PetscCall(VecGetArray(pp->inv_storage, &inv));
+    for (PetscInt i = 0; i < n; ++i)
+      if (PetscRealPart(mk[i]) > 0 && PetscRealPart(at[i]) > 0) {
+        mask[i] = 1.0;
+        inv[i]  = 1.0 / S[i];
+        ++sealed;
+      }
+    PetscCall(VecRestoreArray(pp->inv_storage, &inv));
+    PetscCall(VecRestoreArray(pp->free_mask, &mask));
+    PetscCall(VecRestoreArrayRead(pp->storage, &S));
+    PetscCall(VecRestoreArrayRead(pp->at_water_table, &at));
+    PetscCall(VecRestoreArrayRead(marker, &mk));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &sealed, 1, MPIU_INT, MPI_SUM, comm));
+    if (sealed) pp->drained.push_back("(not the " + std::to_string(sealed) + " soil nodes of interface " + name + " on the water table: noflow seals them)");
+  }
   PetscCall(VecDestroy(&marker));
   PetscFunctionReturn(0);
 }

@@ -6,7 +6,7 @@
 #   2400*9.81*6 = 141264 Pa within 1 %; it slides (> 1 cm) and rocks (some pair opens).
 # (default.yaml: tests/cases/default_scene.sh; site_response_2d: mpi_ranks.sh, output_files.sh;
 # sliding_block, two_bar_impact and free_field_site: their interface_ and free_field_ tests;
-# saturated_site: saturated_site_scene.sh.)
+# saturated_site: saturated_site_scene.sh; foundation_saturated: foundation_saturated.sh.)
 set -eu
 . tests/tools/lib.sh
 $SW -options_file config/scenes/column_1d.yaml -output_dir "$WORK/column" > "$WORK/column.log"

@@ -43,6 +43,8 @@ public:
   // Checkpoints: this rank's records, station after station (each the same length).
   void saveRecords(std::vector<double> *out) const;
   void loadRecords(const double *in, size_t n);
+  // A restart of a saturated scene: the records to load have the pore pressure columns.
+  void expectPressure() { has_pressure_ = true; }
   size_t localStations() const { return local_.size(); }
   int    rowWidth() const { return 1 + 3 * (int)dim_ + (has_pressure_ ? 2 : 0); }
 

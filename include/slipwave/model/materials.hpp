@@ -22,6 +22,14 @@ struct RegionMaterialInfo {
   double                    vp_undrained = 0; // saturated region: P speed with the pore fluid locked in (model/pore_pressure.hpp); 0: dry
 };
 
+// What a boundary of the region sees (absorbing dashpots, free-field columns): a saturated
+// region's P wave is the undrained one (the fluid moves with the skeleton).
+inline physics::ElasticMaterial boundaryElastic(const RegionMaterialInfo &m) {
+  physics::ElasticMaterial e = m.elastic;
+  if (m.vp_undrained > 0) e.vp = m.vp_undrained;
+  return e;
+}
+
 PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regions, std::vector<RegionMaterialInfo> *materials);
 
 } // namespace slipwave::model

@@ -72,6 +72,8 @@ struct PorePressure {
   Vec    p_total = nullptr;                      // p_h + p, refreshed by PorePressureTotal
   Vec    p_total_trial = nullptr;                // p_h + p_trial, what interfaces on saturated soil read
   bool   water_table = false;
+  Vec    at_water_table = nullptr;               // 1 at free nodes the water table drained because they lie on it
+                                                 // (not above): a noflow interface seals those of its soil side
   double water_table_elevation = 0;              // [m] along minus the gravity direction
 };
 
@@ -96,6 +98,11 @@ PetscErrorCode PorePressureDestroy(PorePressure **pore);
 // skeleton f_pore = alpha Q^T p_trial (global, displacement layout, overwritten).
 PetscErrorCode PorePressureTrial(PorePressure *pore, DM dm, const PetscScalar *u_local, PetscReal t, Vec f_pore);
 void           PorePressureCommit(PorePressure *pore);
+// The diffusion part (p*, Hbar) of the coming step of size h from the committed p_n, as the
+// energy ledger computes it first in every step; a restart calls it with the checkpoint's
+// step (whose monitor, and so the ledger, it skips), so the continued run repeats the
+// uninterrupted one bit for bit (the RHS's own h = t_{n+1} - t_n differs by round-off).
+PetscErrorCode PorePressureDiffuseStep(PorePressure *pore, PetscReal h);
 // Adds alpha^2 (|Q|^T S^{-1} |Q| 1) to the Gershgorin rows of K (global, displacement layout):
 // the undrained stiffening the wave step must cover (rows of drained nodes do not stiffen).
 PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pore, DM dm, Vec rows);
