@@ -3,7 +3,7 @@
 
 usage: /usr/bin/python3 scripts/scene_metrics.py OUT [--interface base] [--json FILE]
 
-From the interface output (interface_<name>.xmf/h5) and the stations of OUT:
+From the interface output (interface_<name>.xmf and its HDF5 files) and the stations of OUT:
   net_slip            net tangential offset at the end: the mean over the pairs of the
                       tangential jump (structure minus soil) at the last output step [m]
   accumulated_slip    the slip path, largest over the pairs at the end (sum of |slip

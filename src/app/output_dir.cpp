@@ -16,18 +16,21 @@ namespace fs = std::filesystem;
 namespace {
 
 // Longest folder name accepted: the longest file slipwave puts in it
-// (".interface_<name>.xmf.partial", stations/<name>.csv) must still fit PATH_MAX = 4096.
+// ("interface_<name>/.<step>.h5.partial", stations/<name>.csv) must still fit PATH_MAX = 4096.
 constexpr size_t kMaxDirLength = 3800;
 
 // True for a name slipwave writes into the output folder (see the writers: energy_csv.cpp,
 // run_report.cpp, checkpoint.cpp, stations.cpp, field_writer.cpp).
 bool isRunFile(const std::string &name) {
-  static const char *const exact[] = {"energy.csv", "run_info.json", "checkpoint.bin", "checkpoint.bin.tmp", "volume.h5", "volume.xmf",
-                                      ".volume.xmf.partial", "stations.h5", ".stations.h5.spare", ".stations.h5.partial", "stations"};
+  static const char *const exact[] = {"energy.csv", "run_info.json", "checkpoint.bin", "checkpoint.bin.tmp", "volume.h5", "volume.xmf", "volume",
+                                      ".volume.h5.partial", ".volume.xmf.partial", "stations.h5", ".stations.h5.spare", ".stations.h5.partial", "stations"};
   for (const char *e : exact)
     if (name == e) return true;
   auto ends = [&](const char *tail) { const std::string t = tail; return name.size() > t.size() && name.compare(name.size() - t.size(), t.size(), t) == 0; };
-  return (name.rfind("interface_", 0) == 0 && (ends(".h5") || ends(".xmf"))) || (name.rfind(".interface_", 0) == 0 && ends(".xmf.partial"));
+  // interface_<name>.h5/.xmf, its frame folder interface_<name> and their partial names.
+  const bool frames = name.find('.') == std::string::npos;
+  return (name.rfind("interface_", 0) == 0 && (ends(".h5") || ends(".xmf") || frames)) ||
+         (name.rfind(".interface_", 0) == 0 && (ends(".xmf.partial") || ends(".h5.partial")));
 }
 
 // The value as shown in a message: a very long one is cut, with its length.

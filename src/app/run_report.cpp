@@ -157,7 +157,9 @@ PetscErrorCode ReportEnd(const model::Elastodynamics &model, const model::Energy
   PetscCall(PetscPrintf(comm, "done: %" PetscInt_FMT " steps in %.2f s wall (%.3g s per step); energy balance error %.2e of the largest energy\n", steps, wall,
                         wall / std::max<PetscInt>(steps, 1), ledger.relativeError()));
   std::string listed;
-  for (const std::string &name : files) listed += (listed.empty() ? "" : ", ") + (name == "stations" ? std::string("stations/*.csv") : name);
+  // The run's folders (no '.' in their names): stations and the grids' frame files.
+  for (const std::string &name : files)
+    listed += (listed.empty() ? "" : ", ") + (name == "stations" ? std::string("stations/*.csv") : name.find('.') == std::string::npos ? name + "/*.h5" : name);
   PetscCall(PetscPrintf(comm, "output in %s/: %s%s\n", output_dir.c_str(), listed.empty() ? "nothing" : listed.c_str(),
                         listed.find(".xmf") != std::string::npos ? " (open the .xmf files in ParaView)" : ""));
   PetscFunctionReturn(0);

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <system_error>
+#include <vector>
 
 namespace slipwave::io {
 namespace {
@@ -52,10 +54,11 @@ std::string XmlEscaped(const std::string &text) {
   return out;
 }
 
-std::string StepDataset(PetscInt step) {
-  char name[32];
-  std::snprintf(name, sizeof name, "%06" PetscInt_FMT, step);
-  return name;
+// Where a file is written before it is complete: a hidden name beside its final one, so a
+// kill mid-write leaves the final name absent (or its earlier version) rather than torn.
+std::string PartialPath(const std::string &dir, const std::string &file) {
+  const std::filesystem::path path = std::filesystem::path(dir) / file;
+  return (path.parent_path() / ("." + path.filename().string() + ".partial")).string();
 }
 
 std::string Number(double value) {
@@ -139,8 +142,21 @@ PetscErrorCode FieldWriter::Open(MPI_Comm comm, const std::string &dir, const Gr
   PetscCall(CheckGrid(comm, grid, geometry, topology));
   dir_ = dir;
 
-  const std::string h5 = dir_ + "/" + grid_.name + ".h5";
-  PetscCall(PetscViewerHDF5Open(comm_, h5.c_str(), FILE_MODE_WRITE, &viewer_));
+  // A fresh series: frames of an earlier run in this folder must not outlive its index.
+  PetscCall(OnRootCollective(
+      comm,
+      [this](char *message, size_t size) {
+        std::error_code error;
+        const std::string frames = dir_ + "/" + grid_.name;
+        std::filesystem::remove_all(frames, error);
+        if (!error) std::filesystem::create_directory(frames, error);
+        if (error) std::snprintf(message, size, "cannot empty the frame folder '%s': %s", frames.c_str(), error.message().c_str());
+        return !error;
+      },
+      PETSC_ERR_FILE_OPEN));
+
+  const std::string mesh = grid_.name + ".h5";
+  PetscCall(PetscViewerHDF5Open(comm_, PartialPath(dir_, mesh).c_str(), FILE_MODE_WRITE, &viewer_));
   PetscCall(WriteRows(geometry, grid_.dim, Centering::Node, "geometry"));
   // A copy carries our dataset name and the row width, leaving the caller's IS untouched.
   IS rows = nullptr;
@@ -149,7 +165,7 @@ PetscErrorCode FieldWriter::Open(MPI_Comm comm, const std::string &dir, const Gr
   PetscCall(PetscObjectSetName(reinterpret_cast<PetscObject>(rows), "topology"));
   PetscCall(ISView(rows, viewer_));
   PetscCall(ISDestroy(&rows));
-  PetscCall(PetscViewerDestroy(&viewer_));
+  PetscCall(CloseAndPublish(mesh));
   PetscFunctionReturn(0);
 }
 
@@ -251,19 +267,15 @@ PetscErrorCode FieldWriter::WriteStep(PetscInt step, PetscReal time, const std::
   std::vector<FieldInfo> infos;
   PetscCall(FieldInfos(fields, &infos));
 
-  const std::string h5 = dir_ + "/" + grid_.name + ".h5";
-  const std::string dataset = StepDataset(step);
-  PetscCall(PetscViewerHDF5Open(comm_, h5.c_str(), FILE_MODE_APPEND, &viewer_));
+  const std::string frame = FrameFile(grid_.name, step);
+  PetscCall(PetscViewerHDF5Open(comm_, PartialPath(dir_, frame).c_str(), FILE_MODE_WRITE, &viewer_));
   PetscCall(PetscViewerHDF5SetBaseDimension2(viewer_, PETSC_TRUE)); // scalars as [rows, 1] like the others
   for (const FieldRef &field : fields) {
     PetscInt components = 0;
     PetscCall(VecGetBlockSize(field.values, &components));
-    PetscCall(PetscViewerHDF5PushGroup(viewer_, ("/fields/" + field.name).c_str()));
-    PetscCall(WriteRows(field.values, static_cast<int>(components), field.centering, dataset.c_str()));
-    PetscCall(PetscViewerHDF5PopGroup(viewer_));
+    PetscCall(WriteRows(field.values, static_cast<int>(components), field.centering, field.name.c_str()));
   }
-  // Closing the file flushes it and releases HDF5's lock, so readers can open it at once.
-  PetscCall(PetscViewerDestroy(&viewer_));
+  PetscCall(CloseAndPublish(frame));
 
   size_t set = 0;
   while (set < field_sets_.size() && !(field_sets_[set] == infos)) ++set;
@@ -282,7 +294,7 @@ PetscErrorCode FieldWriter::WriteIndex() const {
       [this](char *message, size_t size) {
         const std::string h5 = grid_.name + ".h5";
         const std::string xmf = dir_ + "/" + grid_.name + ".xmf";
-        const std::string partial = dir_ + "/." + grid_.name + ".xmf.partial";
+        const std::string partial = PartialPath(dir_, grid_.name + ".xmf");
         const std::string name = XmlEscaped(grid_.name);
         const std::string topology_type = grid_.cell_type;
         std::ofstream out(partial, std::ios::trunc);
@@ -291,7 +303,7 @@ PetscErrorCode FieldWriter::WriteIndex() const {
             << "  <Domain>\n"
             << "    <Grid Name=\"" << name << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
         for (const StepRecord &record : steps_) {
-          const std::string dataset = StepDataset(record.step);
+          const std::string frame = FrameFile(grid_.name, record.step);
           out << "      <Grid Name=\"" << name << "\" GridType=\"Uniform\">\n"
               << "        <Time Value=\"" << Number(record.time) << "\"/>\n"
               << "        <Topology TopologyType=\"" << topology_type << "\" NumberOfElements=\"" << num_cells_ << '"';
@@ -306,8 +318,7 @@ PetscErrorCode FieldWriter::WriteIndex() const {
             const bool node = field.centering == Centering::Node;
             out << "        <Attribute Name=\"" << XmlEscaped(field.name) << "\" AttributeType=\"" << AttributeType(field.components)
                 << "\" Center=\"" << (node ? "Node" : "Cell") << "\">\n";
-            DataItem(out, "          ", node ? num_nodes_ : num_cells_, field.components, false, h5,
-                     "/fields/" + field.name + "/" + dataset);
+            DataItem(out, "          ", node ? num_nodes_ : num_cells_, field.components, false, frame, "/" + field.name);
             out << "        </Attribute>\n";
           }
           out << "      </Grid>\n";
@@ -327,6 +338,73 @@ PetscErrorCode FieldWriter::WriteIndex() const {
         return true;
       },
       PETSC_ERR_FILE_WRITE));
+  PetscFunctionReturn(0);
+}
+
+std::string FieldWriter::FrameFile(const std::string &grid, PetscInt step) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%06" PetscInt_FMT ".h5", step);
+  return grid + "/" + name;
+}
+
+// Collective. Every rank has closed its part of the file before rank 0 renames it into place.
+PetscErrorCode FieldWriter::CloseAndPublish(const std::string &file) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerDestroy(&viewer_));
+  PetscCallMPI(MPI_Barrier(comm_));
+  PetscCall(OnRootCollective(
+      comm_,
+      [this, &file](char *message, size_t size) {
+        const std::string partial = PartialPath(dir_, file), target = dir_ + "/" + file;
+        if (std::rename(partial.c_str(), target.c_str()) == 0) return true;
+        std::snprintf(message, size, "cannot rename '%s' to '%s': %s", partial.c_str(), target.c_str(), std::strerror(errno));
+        return false;
+      },
+      PETSC_ERR_FILE_WRITE));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldWriter::CopySeries(MPI_Comm comm, const std::string &from, const std::string &dir, const std::string &grid, PetscInt steps,
+                                       bool *kept) {
+  int complete = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(OnRootCollective(
+      comm,
+      [&](char *message, size_t size) {
+        namespace fs = std::filesystem;
+        std::error_code error;
+        std::vector<std::string> files = {grid + ".h5"};
+        for (PetscInt step = 0; step < steps; ++step) files.push_back(FrameFile(grid, step));
+        const bool same = fs::equivalent(from, dir, error);
+        complete = 1;
+        for (const std::string &file : files) complete = complete && fs::is_regular_file(fs::path(from) / file, error);
+        if (same || !complete) return true;
+        fs::remove_all(fs::path(dir) / grid, error);
+        fs::create_directories(fs::path(dir) / grid, error);
+        for (const std::string &file : files) {
+          // A hard link costs nothing and is safe: frames are never changed in place, only
+          // replaced by a rename. Another file system needs a copy. Either goes through a
+          // partial name, so a kill during the copy leaves no torn file under a final name.
+          const std::string partial = PartialPath(dir, file);
+          fs::remove(partial, error);
+          error.clear();
+          fs::create_hard_link(fs::path(from) / file, partial, error);
+          if (error) {
+            error.clear();
+            fs::copy_file(fs::path(from) / file, partial, fs::copy_options::overwrite_existing, error);
+          }
+          if (!error) fs::rename(partial, fs::path(dir) / file, error);
+          if (error) {
+            std::snprintf(message, size, "cannot copy '%s/%s' into '%s': %s", from.c_str(), file.c_str(), dir.c_str(), error.message().c_str());
+            return false;
+          }
+        }
+        return true;
+      },
+      PETSC_ERR_FILE_WRITE));
+  PetscCallMPI(MPI_Bcast(&complete, 1, MPI_INT, 0, comm));
+  *kept = complete != 0;
   PetscFunctionReturn(0);
 }
 

@@ -37,13 +37,13 @@ for n in 2 3; do
 done
 $PY - "$WORK" <<'PY'
 import sys
-import h5py
 import numpy as np
+sys.path.insert(0, "tests/tools")
+from frames import Frames
 work = sys.argv[1]
 def geostatic_state(d):
-    with h5py.File(f"{work}/{d}/volume.h5") as f:
-        xyz, cells = f["/geometry"][:], f["/topology"][:]
-        stress = f["/fields/stress/000000"][:]
+    f = Frames(f"{work}/{d}")
+    xyz, cells, stress = f.geometry, f.topology, f.field("stress", 0)
     centroid = xyz[cells].mean(axis=1)
     order = np.lexsort((centroid[:, 1], centroid[:, 0]))
     return centroid[order], stress[order]

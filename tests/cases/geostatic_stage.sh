@@ -26,23 +26,23 @@ $SW -mesh_box_faces 2,20 -mesh_box_upper 1,10 -regions soil $soil -output_dir "$
 $SW $footing -output_dir "$WORK/footing" | grep "geostatic stage: static solve.*every interface pair in stick"
 $PY - "$WORK" <<'PY'
 import sys
-import h5py
 import numpy as np
+sys.path.insert(0, "tests/tools")
+from frames import Frames
 work = sys.argv[1]
 ok = True
-with h5py.File(f"{work}/column/volume.h5") as f:
-    xyz, cells = f["/geometry"][:], f["/topology"][:]
-    s0 = f["/fields/stress/000000"][:]
-    steps = sorted(f["/fields/displacement"].keys())
-    drift = max(np.abs(f["/fields/displacement/" + k][:]).max() for k in steps)
+f = Frames(f"{work}/column")
+xyz, cells = f.geometry, f.topology
+s0 = f.field("stress", 0)
+drift = max(np.abs(u).max() for u in f.series("displacement"))
 y = xyz[cells][:, :, 1].mean(axis=1)
 exact = -2000 * 9.81 * (10 - y)
 err = np.max(np.abs(s0[:, 4] - exact)) / (2000 * 9.81 * 10)
 print(f"column: sigma_yy error {err:.2e} of rho g H (bound 1e-10); largest |u| in the dynamic stage {drift:.2e} m (bound 1.4e-12)")
 ok &= err <= 1e-10 and drift <= 1.4e-12
-with h5py.File(f"{work}/footing/interface_base.h5") as f:
-    x = f["/geometry"][:, 0]
-    sn = f["/fields/sigma_N/000000"][:, 0]
+f = Frames(f"{work}/footing", "interface_base")
+x = f.geometry[:, 0]
+sn = f.field("sigma_N", 0)[:, 0]
 order = np.argsort(x)
 x, sn = x[order], sn[order]
 mean = np.trapz(sn, x) / (x[-1] - x[0])
@@ -69,13 +69,14 @@ $SW $footing -interface_base_phi 1 -output_dir "$WORK/slipping" | tee "$WORK/sli
 grep -q "geostatic stage: static solve .* interface pairs would slip, open or reach the tension cut-off, so relaxation follows: at rest" "$WORK/slipping.log"
 $PY - "$WORK" <<'PY'
 import sys
-import h5py
 import numpy as np
+sys.path.insert(0, "tests/tools")
+from frames import Frames
 work = sys.argv[1]
-with h5py.File(f"{work}/slipping/interface_base.h5") as f:
-    x = f["/geometry"][:, 0]
-    sn = f["/fields/sigma_N/000000"][:, 0]
-    st = np.linalg.norm(f["/fields/sigma_T/000000"][:], axis=1)
+f = Frames(f"{work}/slipping", "interface_base")
+x = f.geometry[:, 0]
+sn = f.field("sigma_N", 0)[:, 0]
+st = np.linalg.norm(f.field("sigma_T", 0), axis=1)
 limit = -sn * np.tan(np.radians(1.0))
 excess = np.max(st - limit) / np.max(np.abs(sn))
 on_yield = int(np.sum(st >= limit * (1 - 1e-6)))

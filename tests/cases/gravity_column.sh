@@ -10,15 +10,14 @@ set -eu
 $SW -mesh_box_faces 1,20 -mesh_box_upper 1,10 -regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 \
   -bc_bottom_type fixed -constrain_components x -gravity 9.81 -damping_ratio 0.3 -damping_frequencies 5,20 -ts_max_time 1.0 \
   -output_interval 0.5 -progress_interval 100 -output_dir "$WORK"
-$PY - "$WORK/volume.h5" <<'PY'
+$PY - "$WORK" <<'PY'
 import sys
-import h5py
 import numpy as np
-with h5py.File(sys.argv[1]) as f:
-    xyz = f["/geometry"][:]
-    cells = f["/topology"][:]
-    steps = sorted(f["/fields/stress"].keys())
-    stress = f["/fields/stress/" + steps[-1]][:]
+sys.path.insert(0, "tests/tools")
+from frames import Frames
+f = Frames(sys.argv[1])
+xyz, cells = f.geometry, f.topology
+stress = f.field("stress", -1)
 y = xyz[cells][:, :, 1].mean(axis=1)
 syy = stress[:, 4]  # row-major 3x3: index 4 is yy
 exact = -2000 * 9.81 * (10 - y)

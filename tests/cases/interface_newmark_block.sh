@@ -32,6 +32,6 @@ with open(sys.argv[1], "w") as f:
 PY
 $SW -options_file config/scenes/sliding_block.yaml -bc_bottom_record "$WORK/pulse.csv" -output_dir "$WORK/out" > "$WORK/run.log"
 cat "$WORK/run.log"
-$PY tests/tools/interface_checks.py newmark --interface-h5 "$WORK/out/interface_slide.h5" --base "$WORK/out/stations/base.csv" \
+$PY tests/tools/interface_checks.py newmark --out-dir "$WORK/out" --interface slide --base "$WORK/out/stations/base.csv" \
   --block "$WORK/out/stations/mid.csv" --energy "$WORK/out/energy.csv" --A 0.4 --N 0.2 --tp 0.2 --sigma-n 23544 --area 1 \
   --t-settled 0.45 --tol 0.02 --stuck-tol 1e-2

@@ -6,8 +6,9 @@
 # Expected:
 # - N's folder is complete on its own: volume.xmf and interface_base.xmf pass
 #   scripts/check_output.py (every reference resolves to a dataset of its shape there, no NaN)
-#   with all 9 frames (t = 0, 0.1, ..., 0.8), and energy.csv and the station files equal C's
-#   byte for byte (the continued state is bit-identical, restart.sh).
+#   with all 9 frames (t = 0, 0.1, ..., 0.8) also once A's HDF5 files are removed, the frames,
+#   energy.csv and the station files equal C's bit for bit (the continued state is
+#   bit-identical, restart.sh).
 # - A changed material, or an added scene option, is refused in one line naming the option and
 #   both values.
 # - A checkpoint cut short, or with one byte changed, is refused in one line (its seal).
@@ -19,7 +20,23 @@ steps=$(tail -1 "$WORK/C/energy.csv" | cut -d, -f1)
 half=$((steps / 2))
 $SW $O -ts_max_steps $half -checkpoint_interval $half -output_dir "$WORK/A" > "$WORK/A.log"
 $SW $O -restart "$WORK/A/checkpoint.bin" -output_dir "$WORK/N" | grep -E "^restart|^done"
+# The earlier frames are N's own (hard links or copies): A's HDF5 files removed, N still holds
+# all 9 frames, equal to the uninterrupted run's bit for bit (the state continues bit-identical).
+rm -rf "$WORK/A/volume" "$WORK/A/volume.h5" "$WORK/A/interface_base" "$WORK/A/interface_base.h5"
 for grid in volume interface_base; do $PY scripts/check_output.py "$WORK/N" --grid $grid --expect-steps 9; done
+$PY - "$WORK" <<'PY'
+import sys
+import numpy as np
+sys.path.insert(0, "tests/tools")
+from frames import Frames
+w = sys.argv[1]
+for grid in ("volume", "interface_base"):
+    n, c = Frames(f"{w}/N", grid), Frames(f"{w}/C", grid)
+    assert n.times == c.times, (grid, n.times, c.times)
+    for field in c.field_names(0):
+        assert all(np.array_equal(x, y) for x, y in zip(n.series(field), c.series(field))), (grid, field)
+print("ok: the new folder's frames equal the uninterrupted run's")
+PY
 cmp "$WORK/N/energy.csv" "$WORK/C/energy.csv"
 for s in block_top block_base_left block_base_right free_field bedrock; do cmp "$WORK/N/stations/$s.csv" "$WORK/C/stations/$s.csv"; done
 $PY - "$WORK" <<'PY'

@@ -15,16 +15,16 @@ $SW -options_file config/scenes/foundation_3d.yaml -output_dir "$WORK/f3d" > "$W
 $CHECK energy "$WORK/f3d/energy.csv" --max-error 1e-9
 $PY scripts/check_output.py "$WORK/f3d"
 $PY scripts/check_output.py "$WORK/f3d" --grid interface_base
-$PY - "$WORK/f3d/interface_base.h5" <<'PY'
+$PY - "$WORK/f3d" <<'PY'
 import sys
-import h5py
 import numpy as np
-with h5py.File(sys.argv[1]) as f:
-    xyz = f["/geometry"][:]
-    steps = sorted(f["/fields/status"].keys())
-    sn = f["/fields/sigma_N/" + steps[0]][:, 0]
-    slip = max(f["/fields/accumulated_slip/" + k][:].max() for k in steps)
-    opened = sum(int(np.any(f["/fields/status/" + k][:] == 2)) for k in steps)
+sys.path.insert(0, "tests/tools")
+from frames import Frames
+f = Frames(sys.argv[1], "interface_base")
+xyz = f.geometry
+sn = f.field("sigma_N", 0)[:, 0]
+slip = max(s.max() for s in f.series("accumulated_slip"))
+opened = sum(int(np.any(s == 2)) for s in f.series("status"))
 edge_x = np.isclose(np.abs(xyz[:, 0]), 2.0)
 edge_y = np.isclose(np.abs(xyz[:, 1]), 2.0)
 w = np.where(edge_x & edge_y, 0.25, np.where(edge_x | edge_y, 0.5, 1.0))

@@ -1,15 +1,14 @@
 #!/usr/bin/python3
 """Checks of slipwave's contact-interface output, used by tests/cases/interface_{bar_impact,lift_drop,hard_cases,mpi}.sh.
 
-Reads output_dir/interface_NAME.h5 (+ .xmf for the frame times), energy.csv and the station
+Reads the interface frames of output_dir (through interface_NAME.xmf), energy.csv and the station
 CSVs. Each subcommand prints what it measured and exits 1 when a bound is violated.
 """
 import argparse
-import re
 import sys
 
-import h5py
 import numpy as np
+from frames import Frames
 
 
 def read_csv(path):
@@ -18,15 +17,9 @@ def read_csv(path):
 
 def interface_frames(out_dir, name, field):
     """Frame times and values [frame, pair id, component] of one interface field, in the
-    order of the XDMF temporal collection (each frame names its own dataset)."""
-    xmf = open(f"{out_dir}/interface_{name}.xmf").read()
-    times, values = [], []
-    with h5py.File(f"{out_dir}/interface_{name}.h5", "r") as h5:
-        for grid in re.findall(r'<Grid Name="interface_[^"]*" GridType="Uniform">(.*?)</Grid>', xmf, re.S):
-            times.append(float(re.search(r'<Time Value="([^"]+)"', grid).group(1)))
-            path = re.search(rf'<Attribute Name="{field}".*?:(/fields/{field}/\d+)</DataItem>', grid, re.S).group(1)
-            values.append(np.array(h5[path]))
-    return np.array(times), np.array(values)
+    order of the XDMF temporal collection."""
+    frames = Frames(out_dir, f"interface_{name}")
+    return np.array(frames.times), np.array(frames.series(field))
 
 
 def stored_total(d):

@@ -15,11 +15,9 @@ def read_csv(path):
     return np.genfromtxt(path, delimiter=",", names=True)
 
 
-def last_field(h5path, field):
-    import h5py
-    with h5py.File(h5path, "r") as f:
-        grp = f["fields/" + field]
-        return np.asarray(grp[max(grp, key=int)][...])
+def last_field(out_dir, grid, field):
+    from frames import Frames
+    return Frames(out_dir, grid).field(field, -1)
 
 
 def newmark(args):
@@ -31,7 +29,7 @@ def newmark(args):
     V = A * g * tp
     expected = V * V / (2 * g * N) * (1 - N / A)
     ok = True
-    slip = last_field(args.interface_h5, "accumulated_slip").ravel()
+    slip = last_field(args.out_dir, f"interface_{args.interface}", "accumulated_slip").ravel()
     rel = np.abs(slip - expected) / expected
     print(f"newmark: expected permanent slip {expected:.6e} m; interface accumulated_slip {slip.min():.6e}..{slip.max():.6e} m, "
           f"largest relative error {rel.max():.3e} (bound {args.tol:.1e})")
@@ -108,7 +106,8 @@ def main():
     p = argparse.ArgumentParser(description=__doc__)
     sub = p.add_subparsers(dest="cmd", required=True)
     n = sub.add_parser("newmark")
-    n.add_argument("--interface-h5", required=True)
+    n.add_argument("--out-dir", required=True, help="output folder holding interface_NAME.xmf")
+    n.add_argument("--interface", required=True, help="interface NAME")
     n.add_argument("--base", required=True, help="station CSV on the base")
     n.add_argument("--block", required=True, help="station CSV in the block")
     n.add_argument("--energy")

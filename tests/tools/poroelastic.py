@@ -130,19 +130,19 @@ def checkerboard(a):
     points per wavelength carries: (h k)^2 / 4 <= (2 pi / 10)^2 / 4 = 0.1, times the share of
     the mixed derivative). Cells within `margin` cells of the grid edges are left out (corners
     of absorbing boundaries); every field frame after the first is checked."""
-    import h5py
-    f = h5py.File(f"{a.dir}/volume.h5", "r")
-    g = f["geometry"][()]
+    from frames import Frames
+    f = Frames(a.dir)
+    g = f.geometry
     I = np.rint((g[:, 0] - g[:, 0].min()) / a.h).astype(int)
     J = np.rint((g[:, 1] - g[:, 1].min()) / a.h).astype(int)
     x0, x1, y0, y1 = (float(v) for v in a.box.split(","))
     i0, i1 = int(round(x0 / a.h)) + a.margin, int(round(x1 / a.h)) - a.margin
     j0, j1 = int(round(y0 / a.h)) + a.margin, int(round(y1 / a.h)) - a.margin
     worst = 0.0
-    frames = sorted(f["fields/pore_pressure"].keys())[1:]
-    for k in frames:
+    frames = f.series("pore_pressure")[1:]
+    for p in frames:
         P = np.zeros((I.max() + 1, J.max() + 1))
-        P[I, J] = f["fields/pore_pressure/" + k][()][:, 0]
+        P[I, J] = p[:, 0]
         W = P[i0:i1 + 1, j0:j1 + 1]
         c = (W[:-1, :-1] - W[1:, :-1] - W[:-1, 1:] + W[1:, 1:]) / 4
         worst = max(worst, np.max(np.abs(c)) / np.max(np.abs(W)))
@@ -157,13 +157,12 @@ def geostatic(a):
     effective stress with hydrostatic pore water), within round-off of the static solve; the
     stations' total p is rho_f g (z_w - y)+, and over the dynamic stage nothing moves and the
     excess pore pressure stays zero."""
-    import h5py
+    from frames import Frames
     g = 9.81
-    f = h5py.File(f"{a.dir}/volume.h5", "r")
-    xyz = f["geometry"][()]
-    cells = f["topology"][()]
+    f = Frames(a.dir)
+    xyz, cells = f.geometry, f.topology
     yc = xyz[cells][:, :, 1].mean(axis=1)
-    syy = f["fields/stress/000000"][()][:, 4]
+    syy = f.field("stress", 0)[:, 4]
     # Layers: (top elevation, bottom elevation, density) from the top down.
     layers = [tuple(float(v) for v in l.split(":")) for l in a.layers.split(",")]
 

@@ -2,9 +2,10 @@
 // polyline grid named "interface" in 2D, three output steps each, on any number of ranks
 // (rows split evenly, so with 2 ranks the hex's only cell lives on rank 0 and rank 1 writes
 // no cell rows). Reads the HDF5 back with VecLoad
-// and checks the padding of 2D data and the symmetric tensors expanded to 3x3.
+// and checks the padding of 2D data, the symmetric tensors expanded to 3x3, and that only
+// final names are left (every file written under a partial name is renamed when complete).
 //   test_field_writer [-output_dir DIR]   (default build/tests/field_writer)
-// writes DIR/quad2d/volume.{h5,xmf}, DIR/hex3d/volume.{h5,xmf}, DIR/line2d/interface.{h5,xmf};
+// writes DIR/quad2d/volume.{h5,xmf} + volume/0000NN.h5, DIR/hex3d/volume..., DIR/line2d/interface...;
 // tests/cases/field_writer_parallel.sh checks them with scripts/check_output.py.
 #include "slipwave/io/field_writer.hpp"
 
@@ -12,6 +13,8 @@
 
 #include <petscviewerhdf5.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -161,20 +164,20 @@ PetscErrorCode WriteAndCheck(const Mesh &mesh, const std::string &dir) {
     for (int k = 0; k < 3; ++k) geometry_ok = geometry_ok && data[n * 3 + k] == (k < dim ? mesh.coordinates[n * dim + k] : 0.0);
   unit::check(geometry_ok, mesh.label + ": /geometry holds x y z per node" + (dim == 2 ? " (z = 0)" : ""));
 
-  PetscCall(ReadAll(h5, "/fields/displacement", "000010", &data));
+  PetscCall(ReadAll(stem + "/000010.h5", "/", "displacement", &data));
   bool vector_ok = data.size() == static_cast<size_t>(num_nodes * 3);
   for (PetscInt n = 0; n < num_nodes && vector_ok; ++n)
     for (int k = 0; k < 3; ++k) vector_ok = vector_ok && data[n * 3 + k] == (k < dim ? NodeValue(10, n, k) : 0.0);
   unit::check(vector_ok, mesh.label + ": node vector written with 3 components" + (dim == 2 ? " (z = 0)" : ""));
 
-  PetscCall(ReadAll(h5, "/fields/pressure", "000020", &data));
+  PetscCall(ReadAll(stem + "/000020.h5", "/", "pressure", &data));
   bool scalar_ok = data.size() == static_cast<size_t>(num_nodes);
   for (PetscInt n = 0; n < num_nodes && scalar_ok; ++n) scalar_ok = data[n] == NodeValue(20, n, 0);
   unit::check(scalar_ok, mesh.label + ": node scalar written");
 
   // Ours xx,yy,zz,xy,yz,xz (k = 0..5) written as the row-major 3x3 xx,xy,xz / xy,yy,yz / xz,yz,zz.
   const PetscInt ours_at[9] = {0, 3, 5, 3, 1, 4, 5, 4, 2};
-  PetscCall(ReadAll(h5, "/fields/stress", "000020", &data));
+  PetscCall(ReadAll(stem + "/000020.h5", "/", "stress", &data));
   bool tensor_ok = data.size() == static_cast<size_t>(num_cells * 9);
   for (PetscInt c = 0; c < num_cells && tensor_ok; ++c)
     for (int j = 0; j < 9; ++j) tensor_ok = tensor_ok && data[c * 9 + j] == CellValue(20, c, ours_at[j]);
@@ -190,7 +193,14 @@ PetscErrorCode WriteAndCheck(const Mesh &mesh, const std::string &dir) {
     size_t times = 0;
     for (size_t at = xmf.find("<Time Value="); at != std::string::npos; at = xmf.find("<Time Value=", at + 1)) ++times;
     unit::check(times == 3, mesh.label + ": index lists 3 steps (" + std::to_string(times) + ")");
-    unit::check(xmf.find(mesh.layout.name + ".h5:/fields/stress/000020") != std::string::npos &&
+    std::vector<std::string> files;
+    for (const auto &entry : std::filesystem::recursive_directory_iterator(dir)) files.push_back(entry.path().lexically_relative(dir).string());
+    std::sort(files.begin(), files.end());
+    const std::string name = mesh.layout.name;
+    std::vector<std::string> expected = {name, name + "/000000.h5", name + "/000010.h5", name + "/000020.h5", name + ".h5", name + ".xmf"};
+    std::sort(expected.begin(), expected.end());
+    unit::check(files == expected, mesh.label + ": the folder holds the mesh file, 3 frame files and the index, no partial file");
+    unit::check(xmf.find(">" + mesh.layout.name + "/000020.h5:/stress<") != std::string::npos &&
                     xmf.find("AttributeType=\"Tensor\" Center=\"Cell\"") != std::string::npos,
                 mesh.label + ": index points at the step 20 stress as a cell Tensor");
   }

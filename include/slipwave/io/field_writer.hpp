@@ -3,15 +3,20 @@
 // with its default XDMF3 readers and with the legacy "XDMF Reader" (PETSc's
 // petsc_gen_xdmf.py output opens only with the latter).
 //
-// HDF5 layout of DIR/<name>.h5 (every dataset is [rows, components]):
-//   /geometry               float64 [nodes, 3]   (2D coordinates padded with z = 0)
-//   /topology               int     [cells, nodes_per_cell]  global node numbers
-//   /fields/<field>/<step>  float64 [nodes or cells, 1 | 3 | 9]; step zero-padded to 6 digits
+// Files (every dataset is [rows, components]), so that a run killed at any moment leaves
+// only complete HDF5 files (HDF5 without SWMR is not crash-consistent: a kill inside an
+// in-place append can make the whole file unreadable):
+//   DIR/<name>.h5                 /geometry float64 [nodes, 3] (2D coordinates padded with z = 0)
+//                                 /topology int [cells, nodes_per_cell] global node numbers
+//   DIR/<name>/<step>.h5          /<field> float64 [nodes or cells, 1 | 3 | 9]; step zero-padded
+//                                 to 6 digits; one file per output step
+//   DIR/<name>.xmf                the XDMF index, file names relative to DIR
+// Each HDF5 file is written once, under a hidden partial name (".<file>.partial" in the same
+// folder), and renamed into place when complete; the index is replaced (same way) after that,
+// so it names only complete files. A run in progress can be opened in ParaView.
 // Components as written: 1 scalar; 3 vector (2-component vectors padded with z = 0);
 // 9 symmetric tensor as full row-major 3x3 (XDMF "Tensor"): XDMF "Tensor6" is mislabelled
 // by ParaView 5.11's default reader (see field_writer.cpp).
-// The HDF5 file is closed after every step and DIR/<name>.xmf is then replaced atomically,
-// so a run in progress can be opened in ParaView.
 #pragma once
 #include <petscis.h>
 #include <petscvec.h>
@@ -49,18 +54,27 @@ class FieldWriter {
 
   // Collective. Creates DIR if needed, writes the geometry (global Vec, node i at entries
   // [i*dim, i*dim+dim)) and the topology (IS of global node numbers, nodes_per_cell per
-  // cell) once, replacing any earlier DIR/<name>.h5.
+  // cell) once, replacing any earlier DIR/<name>.h5 and emptying DIR/<name>/.
   PetscErrorCode Open(MPI_Comm comm, const std::string &dir, const GridLayout &grid, Vec geometry, IS topology);
   // Collective. Writes the fields of this output step, then rank 0 rewrites DIR/<name>.xmf
   // listing all steps so far. Steps and times must increase from call to call.
   PetscErrorCode WriteStep(PetscInt step, PetscReal time, const std::vector<FieldRef> &fields);
-  // Collective. After a restart: reopens DIR/<name>.h5 as written by an earlier Open/WriteStep
-  // run, keeping its geometry, topology and the output steps listed in `previous` (step, time),
+  // Collective. After a restart: continues the series in DIR written by an earlier
+  // Open/WriteStep run, keeping its geometry, topology and the output steps listed in `previous` (step, time),
   // all with the fields of `layout` (only their names, centering and block sizes are used).
   PetscErrorCode Resume(MPI_Comm comm, const std::string &dir, const GridLayout &grid, Vec geometry, IS topology,
                         const std::vector<std::pair<PetscInt, PetscReal>> &previous, const std::vector<FieldRef> &layout);
   // Collective. Frees the work vectors; the files stay complete as after the last step.
   PetscErrorCode Close();
+
+  // The frame file of `step` of grid `grid`, relative to DIR: "<grid>/<step, 6 digits>.h5".
+  static std::string FrameFile(const std::string &grid, PetscInt step);
+  // Collective. Puts the mesh file and frame files 0..steps-1 of grid `grid` from folder
+  // `from` into `dir` (hard links, else copies; nothing to do when they are the same folder),
+  // for a restart into another folder. kept: whether `from` held all of them (else nothing is
+  // copied and the series must start anew: an index must never name a missing file).
+  static PetscErrorCode CopySeries(MPI_Comm comm, const std::string &from, const std::string &dir, const std::string &grid, PetscInt steps,
+                                   bool *kept);
 
  private:
   struct FieldInfo {
@@ -82,6 +96,7 @@ class FieldWriter {
   PetscErrorCode WorkVec(Centering centering, int components, PetscInt local_rows, Vec *work);
   PetscErrorCode WriteRows(Vec source, int source_components, Centering centering, const char *dataset);
   PetscErrorCode WriteIndex() const;
+  PetscErrorCode CloseAndPublish(const std::string &file);
 
   MPI_Comm comm_ = MPI_COMM_NULL;
   std::string dir_;
