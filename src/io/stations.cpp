@@ -26,7 +26,8 @@ constexpr PetscInt kMaxListedStations = 100; // by -station_coordinates / -stati
 // Rows name,x,y[,z]. dim 0: the mesh is not built yet, so the dimension is the first row's
 // (2 or 3 coordinates) and every row must match it.
 PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, std::vector<std::string> *names, std::vector<double> *coords) {
-  const auto z = [&dim]() { return dim == 2 ? "" : dim == 3 ? ",z" : "[,z]"; };
+  const auto z         = [&dim]() { return dim == 2 ? "" : dim == 3 ? ",z" : "[,z]"; };
+  const bool dim_of_file = dim == 0;
   PetscFunctionBeginUser;
   std::ifstream in(file);
   PetscCheck(in.good(), comm, PETSC_ERR_FILE_OPEN, "-station_file = %s: cannot open the file; allowed: a CSV file with rows name,x,y%s", file, z());
@@ -42,7 +43,7 @@ PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, st
     if (lineno == 1 && cells.size() > 1 && cells[1].find_first_of("0123456789") == std::string::npos) continue; // header
     if (dim == 0 && (cells.size() == 3 || cells.size() == 4)) dim = (PetscInt)cells.size() - 1;
     PetscCheck((PetscInt)cells.size() == dim + 1, comm, PETSC_ERR_USER_INPUT, "-station_file = %s, line %d: %zu columns; allowed: name,x,y%s%s", file, lineno,
-               cells.size(), z(), names->empty() ? "" : " as on the rows before");
+               cells.size(), z(), dim_of_file && !names->empty() ? " as on the rows before" : "");
     // The name becomes a file name (stations/<name>.csv).
     PetscCheck(core::IsSafeFileName(cells[0]), comm, PETSC_ERR_USER_INPUT, "-station_file = %s, line %d: station name '%s'; allowed: %s", file, lineno,
                cells[0].c_str(), core::kSafeFileNameRule);
