@@ -123,7 +123,7 @@ PetscErrorCode flushSeries(Run *r) {
 PetscErrorCode stopIfRequested(Run *r, PetscInt step, PetscReal t) {
   bool requested;
   PetscFunctionBeginUser;
-  PetscCall(StopRequested(r->model.comm, &requested));
+  PetscCall(StopRequested(r->model.comm, step, &requested));
   if (!requested) PetscFunctionReturn(0);
   PetscCall(flushSeries(r));
   SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT, "stopped by SIGTERM after step %" PetscInt_FMT ", t = %g s; stations and energy.csv hold every step up to it, the fields every output time up to it (%s)",
