@@ -98,15 +98,10 @@ const Rule kRules[] = {
   {"-gravity_direction",       Kind::Real, 2, 3, magnitude(1e6), "gx,gy[,gz], not all 0, |g| <= 1e6", 1},
   {"-bc_*_traction",           Kind::Real, 2, 3, magnitude(1e12), "tx,ty[,tz] with |t| <= 1e12 Pa", 1},
   {"-input_amplitude",         Kind::Real, 1, 1, magnitude(1e3), "|v| <= 1e3 m/s"},
-  {"-input_f0",                Kind::Real, 1, 1, aboveZero(1e4), "0 < f0 <= 1e4 Hz"},
-  {"-input_t0",                Kind::Real, 1, 1, magnitude(1e7), "|t0| <= 1e7 s"},
   {"-input_record",            Kind::FileIfThere, 1, 1, kAny, "a readable .csv or .at2 file"},
-  {"-input_record_scale",      Kind::Real, 1, 1, magnitude(1e6), "a factor other than 0 with |factor| <= 1e6"},
-  {"-input_record_pga",        Kind::Real, 1, 1, magnitude(10), "0 < pga <= 10 g"},
   {"-drm_amplitude",           Kind::Real, 1, 1, magnitude(1e3), "|v| <= 1e3 m/s"},
-  {"-drm_record_pga",          Kind::Real, 1, 1, magnitude(10), "0 < pga <= 10 g"},
-  // every other history (model/time_function: -bc_<b>_, -point_force_<n>_, -body_force_,
-  // -structure_load_): only they have options with these endings
+  // every history (model/time_function: -input_, -drm_, -bc_<b>_, -point_force_<n>_,
+  // -body_force_, -structure_load_): only they have options with these endings
   {"-*_amplitude",             Kind::Real, 1, 1, magnitude(1e6), "|amplitude| <= 1e6 (m/s for a boundary velocity, a factor on a load)"},
   {"-*_f0",                    Kind::Real, 1, 1, aboveZero(1e4), "0 < f0 <= 1e4 Hz"},
   {"-*_t0",                    Kind::Real, 1, 1, magnitude(1e7), "|t0| <= 1e7 s"},
