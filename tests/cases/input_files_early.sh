@@ -8,7 +8,8 @@
 # reference machine; the files are read after the mesh and bulk operator only if a bad run
 # takes about T_setup, so the bound separates the two orders with a factor of 3 to spare on
 # either side). The error must also precede every line of the set-up report (stdout empty),
-# and on 2 ranks the message is the same single line.
+# and on 2 ranks the message is the same single line. With a Gmsh mesh (dimension unknown
+# before it is read) the station rows must agree with the first one.
 set -u
 . tests/tools/lib.sh
 fail=0
@@ -57,6 +58,14 @@ bad traction_record_one_sample "$(files quake.csv factor.csv factor_one_sample.c
   '-bc_top_record \(CSV\): .*/factor_one_sample\.csv: needs at least 2 samples, found 1; allowed: a CSV file of lines "time,factor"'
 bad station_short_row "$(files quake.csv factor.csv factor.csv stations_short_row.csv)" \
   '-station_file = .*/stations_short_row\.csv, line 3: 3 columns; allowed: name,x,y,z$'
+
+# With a Gmsh mesh the dimension is known only once the file is read: before it, the first
+# station row sets the number of coordinates (here 3) and every row must have as many.
+printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n2 1 "soil"\n$EndPhysicalNames\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n$Elements\n1\n1 3 2 1 1 1 2 3 4\n$EndElements\n' > "$WORK/one_quad.msh"
+out=$("$SW" -mesh_file "$WORK/one_quad.msh" -regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -ts_max_time 0.01 -dry_run \
+  -station_file "$WORK/stations_short_row.csv" -output_dir "$WORK/gmsh" 2>&1); rc=$?
+[ $rc -ne 0 ] && [ "$out" = "slipwave: error: -station_file = $WORK/stations_short_row.csv, line 3: 3 columns; allowed: name,x,y,z as on the rows before" ]
+expect "Gmsh mesh: the rows must agree before the mesh is read: $out" $?
 
 # mpiexec adds its own lines about the failed job; slipwave's are the ones it prefixes.
 err=$($MPIEXEC -n 2 "$SW" $scene $(files quake_nan.csv factor.csv factor.csv stations.csv) -output_dir "$WORK/two" 2>&1 >/dev/null | grep '^slipwave:')
