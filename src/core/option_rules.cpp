@@ -133,6 +133,7 @@ const Rule kRules[] = {
   {"-interface_*_c",           Kind::Real, 1, 1, magnitude(1e12), "0 <= c <= 1e12 Pa"},
   {"-interface_*_e_ini",       Kind::Real, 1, 1, magnitude(1e3), "0 <= e_ini <= 1e3 m"},
   {"-interface_*_tensile_strength", Kind::Real, 1, 1, magnitude(1e12), "0 <= tensile_strength <= c/tan(phi), at most 1e12 Pa"},
+  {"-interface_*_sigma_N0",    Kind::Real, 1, 1, magnitude(1e12), "|sigma_N0| <= 1e12 Pa (compression < 0)"},
   {"-interface_*_penalty_factor", Kind::Real, 1, 1, aboveZero(1e6), "0 < factor <= 1e6"},
   {"-interface_*_contact_damping", Kind::Real, 1, 1, magnitude(1e3), "0 <= ratio <= 1 (fraction of critical)"},
   // saturated regions (physics/biot checks the signs and the relations; these bound the magnitudes)
