@@ -18,6 +18,7 @@
 #include "slipwave/model/energy_ledger.hpp"
 #include "slipwave/model/geostatic.hpp"
 #include "slipwave/model/pore_pressure.hpp"
+#include "slipwave/model/record_files_check.hpp"
 #include "slipwave/model/stable_step.hpp"
 #include "slipwave/time/central_difference.hpp"
 
@@ -122,7 +123,7 @@ PetscErrorCode flushSeries(Run *r, bool last) {
 PetscErrorCode stopIfRequested(Run *r, PetscInt step, PetscReal t) {
   bool requested;
   PetscFunctionBeginUser;
-  PetscCall(StopRequested(r->model.comm, &requested));
+  PetscCall(StopRequested(r->model.comm, step, &requested));
   if (!requested) PetscFunctionReturn(0);
   PetscCall(flushSeries(r, true));
   SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT, "stopped by SIGTERM after step %" PetscInt_FMT ", t = %g s; stations and energy.csv hold every step up to it, the fields every output time up to it (%s)",
@@ -192,6 +193,9 @@ PetscErrorCode setUp(MPI_Comm comm, Run *r) {
   PetscCall(readRunOptions(comm, &r->opt));
   PetscBool help;
   PetscCall(PetscOptionsHasHelp(nullptr, &help));
+  // The input files before anything is written or built (a malformed record fails in a second).
+  PetscCall(model::RecordFilesCheck(comm));
+  PetscCall(io::StationFileCheck(comm));
   if (!help) PetscCall(OutputDirPrepare(comm, {r->opt.output_dir, (bool)r->opt.overwrite, !r->opt.dry_run, r->opt.restart}));
   if (r->opt.restart[0]) PetscCall(CheckpointVerify(comm, r->opt.restart));
   PetscCall(model::TimeStepOptionsRead(comm, &r->time_step));

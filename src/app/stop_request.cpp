@@ -1,5 +1,7 @@
 #include "slipwave/app/stop_request.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <csignal>
 
 namespace slipwave::app {
@@ -8,6 +10,14 @@ namespace {
 volatile std::sig_atomic_t g_requested = 0;
 
 extern "C" void noteRequest(int) { g_requested = 1; }
+
+// When the ranks next agree: the step, and rank 0's clock at the last agreement.
+struct NextAgreement {
+  PetscInt       step = 0;
+  PetscInt       last_step = 0;
+  PetscLogDouble last_wall = 0;
+};
+NextAgreement g_next;
 
 } // namespace
 
@@ -20,12 +30,26 @@ PetscErrorCode StopRequestInstall() {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode StopRequested(MPI_Comm comm, bool *requested) {
-  int any = g_requested;
+PetscErrorCode StopRequested(MPI_Comm comm, PetscInt step, bool *requested) {
+  PetscMPIInt    rank;
+  PetscLogDouble now;
   PetscFunctionBeginUser;
-  // Ranks may receive the signal at different steps: agreeing every step stops all at one.
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_MAX, comm));
-  *requested = any != 0;
+  *requested = false;
+  if (step < g_next.step) PetscFunctionReturn(0);
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscTime(&now));
+  // Rank 0 turns the last period's step rate into the steps that fill kStopAgreementSeconds;
+  // the other ranks add 0, so the maximum is rank 0's count and every rank agrees on it.
+  long agreed[2] = {g_requested, 1};
+  if (rank == 0 && step > g_next.last_step && now > g_next.last_wall) {
+    const double steps_per_second = (step - g_next.last_step) / (now - g_next.last_wall);
+    agreed[1] = (long)std::clamp(std::floor(kStopAgreementSeconds * steps_per_second), 1.0, (double)kStopAgreementMaxSteps);
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, agreed, 2, MPI_LONG, MPI_MAX, comm));
+  *requested       = agreed[0] != 0;
+  g_next.step      = step + agreed[1];
+  g_next.last_step = step;
+  g_next.last_wall = now;
   PetscFunctionReturn(0);
 }
 

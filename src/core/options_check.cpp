@@ -43,6 +43,16 @@ PetscErrorCode OptionsApplyRenames(MPI_Comm comm) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode OptionsNotYetRead(std::map<std::string, std::string> *given) {
+  PetscInt n = 0;
+  char   **names = nullptr, **values = nullptr;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
+  for (PetscInt i = 0; i < n; ++i) (*given)[names[i]] = values[i] ? values[i] : "";
+  PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode OptionsErrorIfUnused(MPI_Comm comm) {
   PetscInt n = 0;
   char   **names = nullptr, **values = nullptr;

@@ -9,24 +9,31 @@
 #include <climits>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/core/option_choice.hpp"
 #include "slipwave/core/option_rules.hpp"
+#include "slipwave/core/options_check.hpp"
 
 namespace slipwave::io {
 namespace {
 
 constexpr PetscInt kMaxListedStations = 100; // by -station_coordinates / -station_names
 
+// Rows name,x,y[,z]. dim 0: the mesh is not built yet, so the dimension is the first row's
+// (2 or 3 coordinates) and every row must match it.
 PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, std::vector<std::string> *names, std::vector<double> *coords) {
+  const auto z         = [&dim]() { return dim == 2 ? "" : dim == 3 ? ",z" : "[,z]"; };
+  const bool dim_of_file = dim == 0;
   PetscFunctionBeginUser;
   std::ifstream in(file);
-  PetscCheck(in.good(), comm, PETSC_ERR_FILE_OPEN, "-station_file = %s: cannot open the file; allowed: a CSV file with rows name,x,y%s", file, dim == 3 ? ",z" : "");
+  PetscCheck(in.good(), comm, PETSC_ERR_FILE_OPEN, "-station_file = %s: cannot open the file; allowed: a CSV file with rows name,x,y%s", file, z());
   std::string line;
   int         lineno = 0;
   while (std::getline(in, line)) {
@@ -37,8 +44,9 @@ PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, st
     std::vector<std::string> cells;
     while (std::getline(ss, cell, ',')) cells.push_back(cell);
     if (lineno == 1 && cells.size() > 1 && cells[1].find_first_of("0123456789") == std::string::npos) continue; // header
-    PetscCheck((PetscInt)cells.size() == dim + 1, comm, PETSC_ERR_USER_INPUT, "-station_file = %s, line %d: %zu columns; allowed: name,x,y%s", file, lineno,
-               cells.size(), dim == 3 ? ",z" : "");
+    if (dim == 0 && (cells.size() == 3 || cells.size() == 4)) dim = (PetscInt)cells.size() - 1;
+    PetscCheck((PetscInt)cells.size() == dim + 1, comm, PETSC_ERR_USER_INPUT, "-station_file = %s, line %d: %zu columns; allowed: name,x,y%s%s", file, lineno,
+               cells.size(), z(), dim_of_file && !names->empty() ? " as on the rows before" : "");
     // The name becomes a file name (stations/<name>.csv).
     PetscCheck(core::IsSafeFileName(cells[0]), comm, PETSC_ERR_USER_INPUT, "-station_file = %s, line %d: station name '%s'; allowed: %s", file, lineno,
                cells[0].c_str(), core::kSafeFileNameRule);
@@ -49,15 +57,31 @@ PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, st
       char        *end;
       const double x = std::strtod(cells[1 + d].c_str(), &end);
       PetscCheck(end != cells[1 + d].c_str() && *end == '\0' && std::isfinite(x), comm, PETSC_ERR_USER_INPUT,
-                 "-station_file = %s, line %d: '%s' is not a finite number; allowed: coordinates x,y%s [m]", file, lineno, cells[1 + d].c_str(), dim == 3 ? ",z" : "");
+                 "-station_file = %s, line %d: '%s' is not a finite number; allowed: coordinates x,y%s [m]", file, lineno, cells[1 + d].c_str(), z());
       coords->push_back(x);
     }
   }
-  PetscCheck(!names->empty(), comm, PETSC_ERR_USER_INPUT, "-station_file = %s: no station rows; allowed: a CSV file with rows name,x,y%s", file, dim == 3 ? ",z" : "");
+  PetscCheck(!names->empty(), comm, PETSC_ERR_USER_INPUT, "-station_file = %s: no station rows; allowed: a CSV file with rows name,x,y%s", file, z());
   PetscFunctionReturn(0);
 }
 
 } // namespace
+
+PetscErrorCode StationFileCheck(MPI_Comm comm) {
+  std::map<std::string, std::string> given;
+  std::vector<std::string>           names;
+  std::vector<double>                coords;
+  PetscFunctionBeginUser;
+  PetscCall(core::OptionsNotYetRead(&given));
+  const auto file = given.find("station_file");
+  if (file == given.end() || file->second.empty()) PetscFunctionReturn(0);
+  // The built-in box's dimension is known from the options (range-checked already); a Gmsh
+  // file's only once it is read.
+  const auto     mesh_dim = given.find("mesh_dim");
+  const PetscInt dim      = given.count("mesh_file") ? 0 : mesh_dim != given.end() ? std::atoi(mesh_dim->second.c_str()) : mesh::MeshDescription{}.dim;
+  PetscCall(readStationFile(comm, file->second.c_str(), dim, &names, &coords));
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const mesh::MeshDescription &mesh) {
   MPI_Comm  comm = PetscObjectComm((PetscObject)dm);

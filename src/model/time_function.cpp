@@ -120,6 +120,44 @@ struct TimeFunction::Impl {
   std::string         description = "none";
 };
 
+PetscErrorCode RecordFileRead(MPI_Comm comm, const std::string &prefix, const RecordFile &f, GroundMotionRecord *record, bool *at2_out) {
+  const std::string  p = "-" + prefix;
+  const char        *file = f.path.c_str();
+  ReadStatus         status;
+  PetscFunctionBeginUser;
+  if (f.load) {
+    PetscCall(readRecordCollective(comm, f.path, false, AccelerationUnit::MetresPerSecondSquared, record, &status));
+    PetscCheck(status.ok, comm, PETSC_ERR_FILE_OPEN, "%srecord (CSV): %s; allowed: a CSV file of lines \"time,factor\", optional header, at least 2 samples, times increasing",
+               p.c_str(), status.message.c_str());
+    PetscFunctionReturn(0);
+  }
+  bool at2;
+  if (f.format >= 0) {
+    at2 = f.format == 1;
+  } else {
+    const std::string ext = lowerExtension(f.path);
+    PetscCheck(ext == "csv" || ext == "at2", comm, PETSC_ERR_USER_INPUT,
+               "%srecord = %s: cannot tell the format from the extension '%s'; allowed: a .csv or .at2 file, or %srecord_format csv|at2", p.c_str(), file, ext.c_str(),
+               p.c_str());
+    at2 = ext == "at2";
+  }
+  const AccelerationUnit unit = f.units == 1   ? AccelerationUnit::G
+                                : f.units == 0 ? AccelerationUnit::FromHeader
+                                               : AccelerationUnit::MetresPerSecondSquared;
+  PetscCheck(!at2 || unit != AccelerationUnit::MetresPerSecondSquared, comm, PETSC_ERR_USER_INPUT,
+             "%srecord_units = %s does not apply to a PEER .AT2 record (its values are in g); allowed: auto or g", p.c_str(), kRecordUnits[f.units]);
+  PetscCall(readRecordCollective(comm, f.path, at2, unit, record, &status));
+  const std::string allowed = at2 ? "a PEER NGA .AT2 file: 3 header lines, a 4th with NPTS and DT, then NPTS accelerations in g"
+                                  : "a CSV file of lines \"time,acceleration\" [s; m/s^2, or g when the header's acceleration column says g or with " + p +
+                                      "record_units g], optional header, at least 2 samples, times increasing";
+  PetscCheck(status.ok, comm, PETSC_ERR_FILE_OPEN, "%srecord (%s): %s; allowed: %s", p.c_str(), at2 ? "PEER .AT2" : "CSV", status.message.c_str(), allowed.c_str());
+  PetscCheck(!f.baseline || record->time.size() >= kBaselineMinSamples, comm, PETSC_ERR_USER_INPUT,
+             "%srecord = %s has %zu samples; allowed: at least %zu for the baseline correction (or %sbaseline_correction false)", p.c_str(), file, record->time.size(),
+             kBaselineMinSamples, p.c_str());
+  if (at2_out) *at2_out = at2;
+  PetscFunctionReturn(0);
+}
+
 TimeFunction::TimeFunction() : impl_(std::make_unique<Impl>()) {}
 TimeFunction::~TimeFunction() = default;
 TimeFunction::TimeFunction(TimeFunction &&) noexcept = default;
@@ -178,9 +216,8 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
   const std::string p = "-" + prefix, q = relativeName(prefix, PetscOptionsObject);
   char              file[PETSC_MAX_PATH_LEN] = "";
   PetscReal         scale = 1.0, pga_g = 0;
-  PetscInt          motion = 0, format = 0, units = 0; // indices in motions[], formats[], unit_choices[]
+  PetscInt          motion = 0, format = 0, units = 0; // indices in motions[], kRecordFormats[], kRecordUnits[]
   PetscBool         baseline = PETSC_TRUE, has_file, has_format, has_amplitude, has_scale, has_pga;
-  const char *const formats[] = {"csv", "at2"}, *const unit_choices[] = {"auto", "g", "m/s^2"};
   const char *const motions[] = {"outcrop", "incident"};
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasName(nullptr, nullptr, (p + "amplitude").c_str(), &has_amplitude));
@@ -189,10 +226,10 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
              p.c_str(), p.c_str(), p.c_str(), p.c_str());
   PetscCall(PetscOptionsString((q + "record").c_str(), "acceleration record: CSV time,acceleration [s; m/s^2 or g] or PEER NGA .AT2 [g]", "TimeFunction::Read", file,
                                file, sizeof file, &has_file));
-  PetscCall(core::OptionsChoice(PetscOptionsObject, (q + "record_format").c_str(), "format of the record: csv or at2 (default: from the file extension)", formats, 2,
+  PetscCall(core::OptionsChoice(PetscOptionsObject, (q + "record_format").c_str(), "format of the record: csv or at2 (default: from the file extension)", kRecordFormats, 2,
                                 &format, &has_format));
   PetscCall(core::OptionsChoice(PetscOptionsObject, (q + "record_units").c_str(),
-                                "unit of a CSV record's acceleration: auto (from the header's acceleration column: g if it says g, else m/s^2), g, m/s^2", unit_choices, 3,
+                                "unit of a CSV record's acceleration: auto (from the header's acceleration column: g if it says g, else m/s^2), g, m/s^2", kRecordUnits, 3,
                                 &units, nullptr));
   PetscCall(PetscOptionsReal((q + "record_scale").c_str(), "factor on the record's acceleration [-] (not with -record_pga)", "TimeFunction::Read", scale, &scale,
                              &has_scale));
@@ -214,31 +251,9 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
   PetscCheck(std::isfinite(scale) && scale != 0, comm, PETSC_ERR_USER_INPUT, "%srecord_scale = %s; allowed: a finite factor other than 0", p.c_str(), scale_text);
   PetscCheck(!has_pga || (std::isfinite(pga_g) && pga_g > 0), comm, PETSC_ERR_USER_INPUT, "%srecord_pga = %s; allowed: a peak ground acceleration > 0 in g",
              p.c_str(), scale_text);
-  bool at2;
-  if (has_format) {
-    at2 = format == 1;
-  } else {
-    const std::string ext = lowerExtension(file);
-    PetscCheck(ext == "csv" || ext == "at2", comm, PETSC_ERR_USER_INPUT,
-               "%srecord = %s: cannot tell the format from the extension '%s'; allowed: a .csv or .at2 file, or %srecord_format csv|at2", p.c_str(), file, ext.c_str(),
-               p.c_str());
-    at2 = ext == "at2";
-  }
-  const AccelerationUnit unit = units == 1   ? AccelerationUnit::G
-                                    : units == 0 ? AccelerationUnit::FromHeader
-                                                 : AccelerationUnit::MetresPerSecondSquared;
-  PetscCheck(!at2 || unit != AccelerationUnit::MetresPerSecondSquared, comm, PETSC_ERR_USER_INPUT,
-             "%srecord_units = %s does not apply to a PEER .AT2 record (its values are in g); allowed: auto or g", p.c_str(), unit_choices[units]);
   GroundMotionRecord record;
-  ReadStatus         status;
-  PetscCall(readRecordCollective(comm, file, at2, unit, &record, &status));
-  const std::string allowed = at2 ? "a PEER NGA .AT2 file: 3 header lines, a 4th with NPTS and DT, then NPTS accelerations in g"
-                                  : "a CSV file of lines \"time,acceleration\" [s; m/s^2, or g when the header's acceleration column says g or with " + p +
-                                      "record_units g], optional header, at least 2 samples, times increasing";
-  PetscCheck(status.ok, comm, PETSC_ERR_FILE_OPEN, "%srecord (%s): %s; allowed: %s", p.c_str(), at2 ? "PEER .AT2" : "CSV", status.message.c_str(), allowed.c_str());
-  PetscCheck(!baseline || record.time.size() >= kBaselineMinSamples, comm, PETSC_ERR_USER_INPUT,
-             "%srecord = %s has %zu samples; allowed: at least %zu for the baseline correction (or %sbaseline_correction false)", p.c_str(), file, record.time.size(),
-             kBaselineMinSamples, p.c_str());
+  bool               at2;
+  PetscCall(RecordFileRead(comm, prefix, RecordFile{file, false, has_format ? (int)format : -1, (int)units, (bool)baseline}, &record, &at2));
   if (baseline) removeBaselineDrift(&record);
   double record_peak = 0;
   for (double a : record.acceleration) record_peak = std::max(record_peak, std::fabs(a));
@@ -282,10 +297,7 @@ PetscErrorCode TimeFunction::readLoadRecord(MPI_Comm comm, const std::string &pr
   PetscCheck(has_file && file[0], comm, PETSC_ERR_USER_INPUT, "%sstf record needs the file; allowed: %srecord <file.csv>", p.c_str(), p.c_str());
   PetscCheck(std::isfinite(scale), comm, PETSC_ERR_USER_INPUT, "%srecord_scale is not finite; allowed: a finite factor", p.c_str());
   GroundMotionRecord record;
-  ReadStatus         status;
-  PetscCall(readRecordCollective(comm, file, false, AccelerationUnit::MetresPerSecondSquared, &record, &status));
-  PetscCheck(status.ok, comm, PETSC_ERR_FILE_OPEN, "%srecord (CSV): %s; allowed: a CSV file of lines \"time,factor\", optional header, at least 2 samples, times increasing",
-             p.c_str(), status.message.c_str());
+  PetscCall(RecordFileRead(comm, prefix, RecordFile{file, true}, &record, nullptr));
   for (double &a : record.acceleration) a *= scale;
   char buf[PETSC_MAX_PATH_LEN + 128];
   std::snprintf(buf, sizeof buf, "recorded load factor %s (%zu samples, %g to %g s, scale %g)", file, record.time.size(), record.time.front(), record.time.back(),

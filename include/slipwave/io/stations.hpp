@@ -23,6 +23,11 @@
 
 namespace slipwave::io {
 
+// Before the mesh is built: the file of -station_file parsed in full (names, finite
+// coordinates, as many as the built-in box has dimensions, or the same number on every row
+// with a Gmsh mesh) by the reader Setup uses, which reads it again on the built mesh.
+PetscErrorCode StationFileCheck(MPI_Comm comm);
+
 class Stations {
 public:
   PetscErrorCode Setup(DM dm, const fem::BulkOperator &bulk, const mesh::MeshDescription &mesh);

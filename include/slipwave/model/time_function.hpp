@@ -25,7 +25,28 @@
 #include <memory>
 #include <string>
 
+#include "slipwave/model/ground_motion_record.hpp"
+
 namespace slipwave::model {
+
+// The choices of -<prefix>record_format and -<prefix>record_units, in index order.
+inline const char *const kRecordFormats[] = {"csv", "at2"};
+inline const char *const kRecordUnits[]   = {"auto", "g", "m/s^2"};
+
+// The file of -<prefix>stf record and how its options say to read it.
+struct RecordFile {
+  std::string path;
+  bool        load     = false; // a load factor: CSV "time,factor", no unit, no baseline correction
+  int         format   = -1;    // index in kRecordFormats; -1: from the extension
+  int         units    = 0;     // index in kRecordUnits
+  bool        baseline = true;  // -<prefix>baseline_correction: needs kBaselineMinSamples samples
+};
+
+// Rank 0 parses the file, every rank gets the samples (accelerations in m/s^2, or the load
+// factor) or the same one-line error naming -<prefix>record, the file, the line and what is
+// allowed. The one parser of record files: TimeFunction::Read, and RecordFilesCheck before the
+// mesh is built. *at2 (may be null) says which format was read.
+PetscErrorCode RecordFileRead(MPI_Comm comm, const std::string &prefix, const RecordFile &f, GroundMotionRecord *record, bool *at2);
 
 enum class HistoryRole { IncidentWave, BoundaryVelocity, Load };
 
