@@ -12,6 +12,9 @@
 #     1 and 2 ranks, distributed, against the serial build on 1 rank.
 #  2. A box without interface: 2D, 64 x 32 quadrilaterals, absorbing base with an SV Ricker
 #     input, two layers; 1 and 2 ranks, distributed against serial.
+#  3. The meshes themselves on 2 ranks (build/tests/unit/test_box_refinement, which the suite
+#     also runs on 1): same cells (serial number, region, centroid), split vertices (pair id,
+#     side, position), boundary and interface faces, serial against distributed build.
 # The reports must say which build ran; on 2 ranks pairs must be cut by the partition.
 set -eu -o pipefail
 . tests/tools/lib.sh
@@ -43,3 +46,7 @@ for n in 1 2; do
   grep -q "built distributed: refined [0-9] times" "$WORK/box_np$n.log"
   $CHECK stations-equal "$WORK/box_serial_np$n" "$WORK/box_np$n" --names top,soil,rock --tol 1e-10
 done
+out=$($MPIEXEC -n 2 "$BUILD/tests/unit/test_box_refinement")
+grep -E "same|PETSc" <<<"$out"
+if grep -q "^not ok" <<<"$out"; then echo "FAIL: the meshes differ on 2 ranks"; exit 1; fi
+[ "$(grep -c "^ok - .*: same" <<<"$out")" -ge 6 ]
