@@ -145,6 +145,18 @@ PetscErrorCode labelPairs(DM dm, const Lattice &lattice, const InterfaceSpec &sp
   PetscCallMPI(MPI_Allgatherv(mine.data(), nmine, MPI_INT64_T, all.data(), counts.data(), offsets.data(), MPI_INT64_T, comm));
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
+  // Vertices another rank owns (leaves of the point SF) are counted there.
+  PetscSF         point_sf;
+  PetscInt        nleaves;
+  const PetscInt *leaves;
+  std::vector<char> ghost(v_end - v_start, 0);
+  PetscCall(DMGetPointSF(dm, &point_sf));
+  PetscCall(PetscSFGetGraph(point_sf, nullptr, &nleaves, &leaves, nullptr));
+  for (PetscInt i = 0; i < nleaves && nleaves > 0; ++i) {
+    const PetscInt p = leaves ? leaves[i] : i;
+    if (p >= v_start && p < v_end) ghost[p - v_start] = 1;
+  }
+  PetscInt owned[2] = {0, 0};
   // Only structure cells hold a structure copy; the soil copy is shared with no structure cell.
   for (PetscInt v = v_start; v < v_end; ++v) {
     PetscReal x[3];
@@ -162,8 +174,16 @@ PetscErrorCode labelPairs(DM dm, const Lattice &lattice, const InterfaceSpec &sp
     PetscCall(DMPlexRestoreTransitiveClosure(dm, v, PETSC_FALSE, &nstar, &star));
     PetscCall(DMLabelSetValue(pair, v, (PetscInt)(it - all.begin())));
     PetscCall(DMLabelSetValue(side, v, on_structure));
+    if (!ghost[v - v_start]) ++owned[on_structure];
   }
   PetscCall(coords.Close());
+  // Each lattice point of the interface must hold exactly one soil and one structure vertex; a
+  // guard on the interface itself (vertices doubled away from it, which BoxInterfacesRefinable
+  // rules out, would not show here).
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, owned, 2, MPIU_INT, MPI_SUM, comm));
+  PetscCheck(owned[0] == (PetscInt)all.size() && owned[1] == (PetscInt)all.size(), comm, PETSC_ERR_PLIB,
+             "interface '%s' refined: %" PetscInt_FMT " soil and %" PetscInt_FMT " structure vertices for %zu pairs; build with -mesh_build serial", spec.name.c_str(),
+             owned[0], owned[1], all.size());
   PetscFunctionReturn(0);
 }
 
