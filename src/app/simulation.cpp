@@ -10,6 +10,7 @@
 #include "slipwave/app/output_dir.hpp"
 #include "slipwave/app/output_frames.hpp"
 #include "slipwave/app/run_report.hpp"
+#include "slipwave/app/setup_cost.hpp"
 #include "slipwave/app/stop_request.hpp"
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/core/options_check.hpp"
@@ -319,11 +320,14 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
   PetscCall(time::CentralDifferenceRegister());
   PetscCall(StopRequestInstall());
   PetscCall(PetscLogStagePush(stage_setup));
+  PetscLogDouble setup_start;
+  PetscCall(PetscTime(&setup_start));
   PetscCall(setUp(comm, r));
   PetscCall(createTimeStepper(r, &ts));
   PetscCall(OptionsErrorIfUnused(comm));
   PetscCall(TSGetTimeStep(ts, &dt));
   PetscCall(ReportSetup(r->model, r->step, r->stations, dt, r->max_time, r->opt.output_dir));
+  PetscCall(ReportSetupCost(comm, setup_start, r->model.mesh.build_seconds));
   PetscCall(PetscLogStagePop());
   PetscCall(PetscOptionsHasHelp(nullptr, &help));
   if (r->opt.dry_run || help) PetscCall(PetscPrintf(comm, "%s: stopping before the first step\n", help ? "-help" : "dry run"));

@@ -66,7 +66,7 @@ PetscErrorCode MemoryCheckGmshFile(MPI_Comm comm, const char *file) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode MemoryCheck(MPI_Comm comm, double nodes, PetscInt dim, const char *what) {
+PetscErrorCode MemoryCheck(MPI_Comm comm, double nodes, PetscInt dim, const char *what, bool whole_on_rank0) {
   PetscBool   check = PETSC_TRUE;
   PetscMPIInt rank, size, node_size;
   MPI_Comm    node;
@@ -84,7 +84,7 @@ PetscErrorCode MemoryCheck(MPI_Comm comm, double nodes, PetscInt dim, const char
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &holds_rank0, 1, MPI_INT, MPI_MAX, node));
   PetscCallMPI(MPI_Comm_free(&node));
   const double total = nodes * dim * kBytesPerDof;
-  const double need  = holds_rank0 ? total : total * node_size / size;
+  const double need  = holds_rank0 && whole_on_rank0 ? total : total * node_size / size;
   const double have  = availableBytes();
   // The node with the least room for its share speaks for all.
   struct {

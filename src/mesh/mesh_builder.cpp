@@ -3,6 +3,7 @@
 #include <petscsf.h>
 
 #include "slipwave/core/option_rules.hpp"
+#include "slipwave/mesh/box_refinement.hpp"
 #include "slipwave/mesh/memory_estimate.hpp"
 #include "slipwave/mesh/mesh_options.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
@@ -131,19 +132,23 @@ PetscErrorCode labelBoxSides(DM dm, const BoxSpec &box, std::vector<std::string>
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode createBox(MPI_Comm comm, PetscInt dim, DM *dm, const BoxSpec *box, std::string *source) {
+// Builds `built` (the requested box, or its coarse version when refined later); the memory
+// check and the description are those of the requested box.
+PetscErrorCode createBox(MPI_Comm comm, PetscInt dim, DM *dm, const BoxSpec &built, const BoxSpec &requested, std::string *source) {
   double      vertices = 1;
   std::string faces    = "-mesh_box_faces = ";
   PetscFunctionBeginUser;
   for (PetscInt d = 0; d < dim; ++d) {
-    vertices *= box->faces[d] + 1.0;
-    faces += (d ? "," : "") + std::to_string(box->faces[d]);
+    vertices *= requested.faces[d] + 1.0;
+    faces += (d ? "," : "") + std::to_string(requested.faces[d]);
   }
-  PetscCall(MemoryCheck(comm, vertices, dim, faces.c_str()));
-  PetscCall(DMPlexCreateBoxMesh(comm, dim, PETSC_FALSE, box->faces, box->lower, box->upper, nullptr, PETSC_TRUE, dm));
+  bool whole = true; // the serial build holds the whole box on rank 0
+  for (PetscInt d = 0; d < dim; ++d) whole = whole && built.faces[d] == requested.faces[d];
+  PetscCall(MemoryCheck(comm, vertices, dim, faces.c_str(), whole));
+  PetscCall(DMPlexCreateBoxMesh(comm, dim, PETSC_FALSE, built.faces, built.lower, built.upper, nullptr, PETSC_TRUE, dm));
   char buf[128];
-  if (dim == 2) std::snprintf(buf, sizeof buf, "box %" PetscInt_FMT " x %" PetscInt_FMT " quadrilaterals", box->faces[0], box->faces[1]);
-  else std::snprintf(buf, sizeof buf, "box %" PetscInt_FMT " x %" PetscInt_FMT " x %" PetscInt_FMT " hexahedra", box->faces[0], box->faces[1], box->faces[2]);
+  if (dim == 2) std::snprintf(buf, sizeof buf, "box %" PetscInt_FMT " x %" PetscInt_FMT " quadrilaterals", requested.faces[0], requested.faces[1]);
+  else std::snprintf(buf, sizeof buf, "box %" PetscInt_FMT " x %" PetscInt_FMT " x %" PetscInt_FMT " hexahedra", requested.faces[0], requested.faces[1], requested.faces[2]);
   *source = buf;
   PetscFunctionReturn(0);
 }
@@ -288,6 +293,47 @@ PetscErrorCode removeVoidRegions(MPI_Comm comm, DM *dm, const std::vector<std::s
   PetscFunctionReturn(0);
 }
 
+// The box of the serial build, labelled (regions, voids removed, sides): the requested one, or
+// with `levels` > 0 its coarse version (2^levels fewer cells per axis).
+PetscErrorCode createLabelledBox(MPI_Comm comm, PetscInt levels, MeshOptions *o, DM *dm, MeshDescription *desc) {
+  BoxSpec built = o->box;
+  PetscFunctionBeginUser;
+  for (PetscInt d = 0; d < desc->dim; ++d) built.faces[d] >>= levels;
+  desc->regions = o->regions;
+  desc->boundaries.clear();
+  std::vector<std::vector<PetscReal>> bounds = o->region_boxes;
+  PetscCall(createBox(comm, desc->dim, dm, built, o->box, &desc->source));
+  PetscCall(labelBoxRegions(comm, *dm, desc->regions, bounds, built));
+  PetscCall(removeVoidRegions(comm, dm, o->voids, &desc->regions, &bounds, built));
+  PetscCall(labelBoxSides(*dm, built, &desc->boundaries));
+  PetscFunctionReturn(0);
+}
+
+// -mesh_build: the number of refinements of a distributed build (0: serial), after checking on
+// the coarse box that its split refines into the fine split; `serial` receives the box to
+// split and distribute (coarse or whole).
+PetscErrorCode createBoxForBuild(MPI_Comm comm, MeshOptions *o, DM *serial, MeshDescription *desc, PetscInt *levels) {
+  PetscMPIInt size;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  std::vector<std::vector<PetscReal>> cuts = o->region_boxes; // voids are among the regions
+  *levels = BoxRefinementLevels(desc->dim, o->box, cuts, size, o->build);
+  PetscCheck(*levels > 0 || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
+             "-mesh_build = distributed, but the box cannot be refined from a coarser one (every -mesh_box_faces entry even, region box bounds on the coarse grid, at "
+             "least one coarse cell per rank); allowed: auto or serial");
+  PetscCall(createLabelledBox(comm, *levels, o, serial, desc));
+  if (*levels == 0 || o->interfaces.empty()) PetscFunctionReturn(0);
+  PetscBool refinable;
+  PetscCall(BoxInterfacesRefinable(*serial, desc->regions, o->interfaces, &refinable));
+  PetscCheck(refinable || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
+             "-mesh_build = distributed, but an interface is restricted to a face label or its regions meet along an edge outside it; allowed: auto or serial");
+  if (refinable) PetscFunctionReturn(0);
+  PetscCall(DMDestroy(serial));
+  *levels = 0;
+  PetscCall(createLabelledBox(comm, 0, o, serial, desc));
+  PetscFunctionReturn(0);
+}
+
 // PETSc stops an unknown -petscpartitioner_type with a traceback, and this PETSc registers
 // parmetis and chaco without having them; refuse all but the partitioners that work here.
 PetscErrorCode checkPartitionerType(MPI_Comm comm) {
@@ -346,8 +392,11 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   PetscCall(MeshOptionsRead(comm, &desc->dim, &o));
   desc->regions    = o.regions;
   desc->interfaces = o.interfaces;
+  PetscLogDouble start;
+  PetscCall(PetscTime(&start));
 
-  DM serial;
+  DM       serial;
+  PetscInt levels = 0; // refinements of a box built distributed (box_refinement.hpp)
   if (!o.file.empty()) {
     PetscCall(createFromGmsh(comm, o.file.c_str(), &serial, desc->regions, &desc->boundaries));
     PetscCall(DMGetDimension(serial, &desc->dim));
@@ -356,10 +405,7 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
     desc->source = o.file;
   } else {
     PetscCall(core::OptionsValidateForDimension(comm, desc->dim, true));
-    PetscCall(createBox(comm, desc->dim, &serial, &o.box, &desc->source));
-    PetscCall(labelBoxRegions(comm, serial, desc->regions, o.region_boxes, o.box));
-    PetscCall(removeVoidRegions(comm, &serial, o.voids, &desc->regions, &o.region_boxes, o.box));
-    PetscCall(labelBoxSides(serial, o.box, &desc->boundaries));
+    PetscCall(createBoxForBuild(comm, &o, &serial, desc, &levels));
   }
   PetscCall(checkCellTypes(comm, serial));
   if (!desc->interfaces.empty()) {
@@ -390,8 +436,15 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   } else {
     *dm = serial;
   }
-  PetscCall(recordSerialCells(*dm, migration, &desc->serial_cell));
+  if (levels == 0) PetscCall(recordSerialCells(*dm, migration, &desc->serial_cell));
   PetscCall(PetscSFDestroy(&migration));
+  if (levels > 0) {
+    PetscCall(BoxRefineDistributed(dm, levels, o.box, desc->regions, desc->boundaries, desc->interfaces, &desc->serial_cell));
+    desc->source += ", built distributed: refined " + std::to_string(levels) + " times";
+  }
+  PetscLogDouble end;
+  PetscCall(PetscTime(&end));
+  desc->build_seconds = end - start;
   PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));
   PetscFunctionReturn(0);
 }

@@ -1,5 +1,7 @@
 #include "slipwave/mesh/mesh_options.hpp"
 
+#include "slipwave/mesh/box_refinement.hpp"
+
 #include <algorithm>
 
 namespace slipwave::mesh {
@@ -137,6 +139,13 @@ PetscErrorCode MeshOptionsRead(MPI_Comm comm, PetscInt *dim, MeshOptions *o) {
   PetscCall(readNameList(PetscOptionsObject, "-regions", "comma-separated region names, 1 to 64 (box: each with -region_<name>_box; Gmsh: physical group names)",
                          kMaxRegions, &o->regions, &nregions, nullptr));
   from_file = (PetscBool)(from_file && file[0]);
+  PetscBool build_set = PETSC_FALSE;
+  PetscCall(PetscOptionsEList("-mesh_build",
+                              "how a box mesh is built: auto (distributed where the box allows it and has >= 1000 coarse cells per rank), serial (whole mesh on rank 0, "
+                              "then distributed), distributed (a coarse box refined on the distributed mesh)",
+                              "MeshCreate", kMeshBuildNames, 3, kMeshBuildNames[o->build], &o->build, &build_set));
+  PetscCheck(!(build_set && from_file && o->build == kMeshBuildDistributed), comm, PETSC_ERR_USER_INPUT,
+             "-mesh_build = distributed with -mesh_file = %s; allowed: auto or serial (a Gmsh file is read, not built by refinement)", file);
   if (!from_file)
     PetscCall(readNameList(PetscOptionsObject, "-void_regions", "box regions (from -regions) whose cells are removed from the mesh, e.g. the space beside a footing",
                            kMaxRegions, &o->voids, nullptr, nullptr));

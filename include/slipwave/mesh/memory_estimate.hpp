@@ -15,8 +15,9 @@ namespace slipwave::mesh {
 constexpr double kBytesPerDof = 1024;
 
 // nodes x dim degrees of freedom; what: the option and value the mesh comes from, for the
-// message.
-PetscErrorCode MemoryCheck(MPI_Comm comm, double nodes, PetscInt dim, const char *what);
+// message; whole_on_rank0 false: a box built distributed (box_refinement.hpp), where rank 0's
+// node needs its ranks' share only, as every other node.
+PetscErrorCode MemoryCheck(MPI_Comm comm, double nodes, PetscInt dim, const char *what, bool whole_on_rank0 = true);
 
 // The same for a Gmsh file, from the node count in its header, before the file is loaded
 // (ASCII files; a binary one is checked by the caller once loaded).

@@ -27,6 +27,7 @@ struct MeshDescription {
   // Per local cell: its number in the serial mesh (the file's order of cells, or the box's),
   // so messages name a cell the same way on any number of ranks.
   std::vector<PetscInt> serial_cell;
+  double                build_seconds = 0; // wall time of MeshCreate, for the report
 };
 
 // Reads the -mesh_* and -regions options, creates, labels and distributes the mesh.

@@ -2,6 +2,7 @@
 // mesh_builder.hpp for what is built from them):
 //   -mesh_file <Gmsh .msh>, -mesh_dim 2|3, -regions a,b,... (1 to kMaxRegions names);
 //   box meshes only: -mesh_box_faces/_lower/_upper, -region_<r>_box, -void_regions;
+//   -mesh_build auto|serial|distributed (box_refinement.hpp);
 //   -interfaces n,... with -interface_<n>_regions soil,structure and -interface_<n>_faces.
 // The law of each interface is the interface layer's (interface/interface_options.hpp).
 #pragma once
@@ -29,6 +30,7 @@ struct MeshOptions {
   std::vector<std::vector<PetscReal>> region_boxes; // per region; empty: it takes the cells no box claims
   std::vector<std::string>            voids;
   std::vector<InterfaceSpec>          interfaces;
+  PetscInt                            build = 0; // -mesh_build: MeshBuild (box_refinement.hpp)
 };
 
 // Reads and checks the options above; *dim holds the default dimension on entry and the one

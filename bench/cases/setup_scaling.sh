@@ -1,0 +1,50 @@
+# Set-up cost of a 3D box (BENCH_SETUP_3D^3 hexahedra, default 64) through the executable
+# (-dry_run: everything up to the first step), serial build (-mesh_build serial: the whole mesh
+# built, labelled and partitioned on rank 0) against the distributed build (-mesh_build
+# distributed with auto's level: a coarse box refined on the distributed mesh), on 1 and 2
+# ranks (BENCH_SETUP_RANKS, default "1 2"): set-up wall time, of it the mesh, and the peak
+# resident memory per rank (ru_maxrss: rank 0's, the average and the largest) from the run
+# report's "set-up:" line. Issue 11's target: 128^3 in <= 10 s on 16 ranks with rank 0's peak
+# <= 2x the average. Rows go to $BENCH_CSV.
+set -u
+cd "$(dirname "$0")/../.."
+BUILD=${BUILD:-build}
+SW="$BUILD/slipwave"
+PY=/usr/bin/python3
+N=${BENCH_SETUP_3D:-64}
+RANKS=${BENCH_SETUP_RANKS:-"1 2"}
+MPIEXEC="mpiexec --oversubscribe"
+[ "$(id -u)" = 0 ] && MPIEXEC="$MPIEXEC --allow-run-as-root"
+WORK="$BUILD/bench/work/setup_scaling"
+mkdir -p "$WORK"
+BOX="-mesh_dim 3 -mesh_box_faces $N,$N,$N -mesh_box_upper 100,100,100 -regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200
+ -bc_bottom_type absorbing -input_wave sv -input_boundary bottom -input_stf ricker -input_f0 5 -input_t0 0.24 -input_amplitude 0.1 -output_fields 0 -dry_run"
+logs=()
+for n in $RANKS; do
+  for build in serial auto; do
+    $MPIEXEC -n "$n" "$SW" $BOX -mesh_build $build -output_dir "$WORK/${build}_np$n" > "$WORK/${build}_np$n.log" 2>&1 || echo "run $build np$n failed"
+    logs+=("$build np$n $WORK/${build}_np$n.log")
+  done
+done
+$PY - "${BENCH_CSV:-}" "$N" "${logs[@]}" <<'PY'
+import re, sys
+csv, n = sys.argv[1], sys.argv[2]
+rows = []
+for entry in sys.argv[3:]:
+    build, ranks, log = entry.split()
+    text = open(log).read()
+    m = re.search(r"set-up: ([0-9.]+) s wall \(mesh ([0-9.]+) s\); peak memory per rank ([0-9.]+) / ([0-9.]+) / ([0-9.]+) MB .*rank 0 ([0-9.]+) MB", text)
+    if not m:
+        print(f"{build} {ranks}: no set-up line in {log}")
+        continue
+    setup, mesh, low, avg, high, root = map(float, m.groups())
+    how = "distributed" if "built distributed" in text else "serial"
+    case = f"3d_{n}^3_{how}_{ranks}"
+    print(f"{case:28s} set-up {setup:7.2f} s (mesh {mesh:6.2f} s), peak memory rank 0 {root:7.1f} MB, avg {avg:7.1f} MB, max {high:7.1f} MB, rank 0 / avg {root / avg:.2f}")
+    rows += [(case, "setup_wall", setup, "s"), (case, "mesh_wall", mesh, "s"), (case, "rank0_peak_rss", root, "MB"), (case, "avg_peak_rss", avg, "MB"),
+             (case, "max_peak_rss", high, "MB")]
+if csv:
+    with open(csv, "a") as f:
+        for case, metric, value, unit in rows:
+            f.write(f"setup_scaling,{case},{metric},{value:.6g},{unit}\n")
+PY

@@ -1,0 +1,53 @@
+// Box meshes built distributed (issue 11, parallel set-up): the requested box with 2^levels
+// fewer cells per axis is built, labelled, split and partitioned serially as before (a small
+// mesh), then refined `levels` times by DMPlex's regular refinement on the distributed mesh,
+// so no rank ever holds the whole fine mesh and the fine partition follows METIS' coarse one.
+// The result has the labels of a serially built box (mesh_builder.hpp, interface_split.hpp):
+// the same region of every cell, the same boundary faces, the same node pairs with the same
+// pair ids (ids follow the serial box's vertex order, x fastest), so results agree with a
+// serially built mesh to round-off. Only the local point numbers differ.
+//
+// When is this exact? Refinement keeps a coarse cell's region for its children, so every
+// region and void box bound inside the mesh must lie on a coarse grid line
+// (BoxRefinementLevels). Splitting the coarse mesh duplicates the children of every coarse
+// point whose vertices are all split; the fine split duplicates only the vertices of interface
+// faces. The two agree unless (3D) a soil and a structure cell share an edge that lies on no
+// interface face, or the interface is restricted to a face label (BoxInterfacesRefinable).
+#pragma once
+#include <petscdmplex.h>
+
+#include <string>
+#include <vector>
+
+#include "slipwave/mesh/interface_split.hpp"
+#include "slipwave/mesh/mesh_options.hpp"
+
+namespace slipwave::mesh {
+
+// -mesh_build: auto (distributed where the box allows it and is big enough to pay), serial
+// (the whole mesh built on rank 0, then distributed), distributed (refuse a box that cannot).
+enum MeshBuild : PetscInt { kMeshBuildAuto = 0, kMeshBuildSerial = 1, kMeshBuildDistributed = 2 };
+extern const char *const kMeshBuildNames[3];
+
+// auto refines only while the coarse box keeps this many cells per rank: METIS then balances
+// the coarse cells to within about 1/kCoarseCellsPerRank, and the fine partition inherits it.
+inline constexpr double kCoarseCellsPerRank = 1000;
+
+// Number of refinements for a box (0: build it serially). The largest k such that 2^k divides
+// every face count and every bound of region_boxes (regions and voids) strictly inside the box
+// lies on a line of the coarse grid (to 1e-9 of the cell size), and the coarse box holds at
+// least kCoarseCellsPerRank cells per rank (auto) or one cell per rank (distributed). Pure.
+PetscInt BoxRefinementLevels(PetscInt dim, const BoxSpec &box, const std::vector<std::vector<PetscReal>> &region_boxes, PetscMPIInt nranks, PetscInt build);
+
+// On the coarse, unsplit, serial box (regions labelled): whether splitting it before
+// refinement gives the fine split (see the header comment). Collective; rank 0 decides.
+PetscErrorCode BoxInterfacesRefinable(DM coarse, const std::vector<std::string> &regions, const std::vector<InterfaceSpec> &specs, PetscBool *refinable);
+
+// Refines the distributed coarse box `levels` times in place and puts back the labels of the
+// serial build: region on cells, boundaries and interface_<name> on faces only (refinement
+// spreads a label to every child point), interface_<name>_pair/_side on every split vertex.
+// serial_cell receives the number each local cell has in the serially built box.
+PetscErrorCode BoxRefineDistributed(DM *dm, PetscInt levels, const BoxSpec &box, const std::vector<std::string> &regions, const std::vector<std::string> &boundaries,
+                                    const std::vector<InterfaceSpec> &specs, std::vector<PetscInt> *serial_cell);
+
+} // namespace slipwave::mesh
