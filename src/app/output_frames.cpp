@@ -18,7 +18,7 @@ PetscErrorCode OutputFrames::Open(const model::Elastodynamics &model, const std:
     // over from the checkpoint's folder when DIR is another one.
     if (restarted) PetscCall(io::FieldWriter::CopySeries(model.comm, checkpoint_dir, dir, "volume", (PetscInt)times_.size(), &kept));
     volume_ = std::make_unique<io::VolumeOutput>();
-    PetscCall(volume_->Open(model.dm, model.bulk, dir, kept ? &previous : nullptr));
+    PetscCall(volume_->Open(model.dm, model.bulk, dir, kept ? &previous : nullptr, model.pore ? model.pore->p : nullptr));
   }
   for (const auto &iface : model.interfaces) {
     if (restarted) PetscCall(io::FieldWriter::CopySeries(model.comm, checkpoint_dir, dir, "interface_" + iface.spec().name, (PetscInt)times_.size(), &kept));

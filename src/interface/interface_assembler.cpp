@@ -88,7 +88,7 @@ void totalsOf(const physics::InterfaceLaw &law, const mesh::InterfacePairs &pair
 // plastic opening, accumulated slip, status (0 stick, 1 slip, 2 open), dissipation [J/m^2].
 template <int Dim>
 void fieldsOf(const mesh::InterfacePairs &pairs, const double *tangent, const std::vector<physics::InterfaceState<Dim>> &states, const std::vector<double> &jump,
-              std::vector<double> *out) {
+              const std::vector<double> &pore, std::vector<double> *out) {
   constexpr int NT = Dim - 1;
   for (size_t p = 0; p < states.size(); ++p) {
     const auto   &s = states[p];
@@ -108,13 +108,20 @@ void fieldsOf(const mesh::InterfacePairs &pairs, const double *tangent, const st
     out->push_back(s.slip);
     out->push_back((double)s.status);
     out->push_back(s.dissipation);
+    if (!pore.empty()) {
+      // Saturated soil side: the law acts on sigma_N + p (physics/mohr_coulomb_interface.hpp).
+      out->push_back(pore[p]);
+      out->push_back(s.sigma_N + pore[p]);
+    }
   }
 }
 
 } // namespace
 
-std::vector<std::string> InterfaceAssembler::pairFieldNames(PetscInt) {
-  return {"opening", "slip", "sigma_N", "sigma_T", "plastic_opening", "accumulated_slip", "status", "dissipation"};
+std::vector<std::string> InterfaceAssembler::pairFieldNames() const {
+  std::vector<std::string> names = {"opening", "slip", "sigma_N", "sigma_T", "plastic_opening", "accumulated_slip", "status", "dissipation"};
+  if (pore_scatter_) names.insert(names.end(), {"pore_pressure", "sigma_N_effective"});
+  return names;
 }
 
 PetscErrorCode InterfaceAssembler::Setup(MPI_Comm comm, PetscInt dim, const mesh::InterfaceSpec &spec, const mesh::InterfacePairs &pairs,
@@ -172,6 +179,7 @@ PetscErrorCode InterfaceAssembler::AddForces(Vec u, Vec f) {
     PetscCall(VecScatterBegin(pore_scatter_, pore_source_, pair_p_, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecScatterEnd(pore_scatter_, pore_source_, pair_p_, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecGetArrayRead(pair_p_, &pore));
+    trial_pair_pore_.assign(pore, pore + pairs_.id.size());
   }
   PetscCall(applyToPairs(u, f, [&](const PetscScalar *pu, PetscScalar *pf) {
     const double drift = dim_ == 2 ? updatePairs<2>(law, pairs_, tangent_.data(), trial_states2_, trial_jump_, pu, pore, pf)
@@ -212,6 +220,13 @@ PetscErrorCode InterfaceAssembler::SetPorePressure(Vec p) {
   PetscCall(VecScatterCreate(p, is_from, pair_p_, is_to, &pore_scatter_));
   PetscCall(ISDestroy(&is_from));
   PetscCall(ISDestroy(&is_to));
+  // The output's pore pressure until the first committed step.
+  const PetscScalar *pp;
+  PetscCall(VecScatterBegin(pore_scatter_, p, pair_p_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(pore_scatter_, p, pair_p_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGetArrayRead(pair_p_, &pp));
+  pair_pore_.assign(pp, pp + np);
+  PetscCall(VecRestoreArrayRead(pair_p_, &pp));
   pore_source_ = p;
   PetscFunctionReturn(0);
 }
@@ -221,6 +236,7 @@ void InterfaceAssembler::Commit() {
   states2_.swap(trial_states2_);
   states3_.swap(trial_states3_);
   jump_prev_.swap(trial_jump_);
+  if (pore_scatter_) pair_pore_.swap(trial_pair_pore_);
   max_drift_ = trial_max_drift_;
   has_trial_ = false;
 }
@@ -360,9 +376,9 @@ PetscErrorCode InterfaceAssembler::CountCutPairs(Vec u_template, PetscInt *cut) 
 
 void InterfaceAssembler::pairFields(std::vector<double> *values, int *per_pair) const {
   values->clear();
-  if (dim_ == 2) fieldsOf<2>(pairs_, tangent_.data(), states2_, jump_prev_, values);
-  else fieldsOf<3>(pairs_, tangent_.data(), states3_, jump_prev_, values);
-  *per_pair = 12;
+  if (dim_ == 2) fieldsOf<2>(pairs_, tangent_.data(), states2_, jump_prev_, pair_pore_, values);
+  else fieldsOf<3>(pairs_, tangent_.data(), states3_, jump_prev_, pair_pore_, values);
+  *per_pair = pore_scatter_ ? 14 : 12;
 }
 
 namespace {

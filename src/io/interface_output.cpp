@@ -1,11 +1,14 @@
 #include "slipwave/io/interface_output.hpp"
 
+#include <iterator>
+
 #include "slipwave/core/log_events.hpp"
 
 namespace slipwave::io {
 namespace {
 
-// Widths of the per-pair fields, in the order of InterfaceAssembler::pairFields.
+// Widths of the per-pair fields, in the order of InterfaceAssembler::pairFields (the
+// saturated ones, pore_pressure and sigma_N_effective, scalars after these).
 const int kWidths[] = {1, 3, 1, 3, 1, 1, 1, 1};
 
 PetscErrorCode pairVector(MPI_Comm comm, PetscInt npairs, PetscInt width, Vec *v) {
@@ -32,8 +35,10 @@ PetscErrorCode InterfaceOutput::Open(MPI_Comm comm, PetscInt dim, const interfac
   PetscCall(VecAssemblyEnd(geometry_));
   PetscCall(ISCreateGeneral(comm, (PetscInt)pairs.face_pairs.size(), pairs.face_pairs.data(), PETSC_COPY_VALUES, &topology_));
   PetscCall(ISSetBlockSize(topology_, pairs.nodes_per_face));
-  for (int w : kWidths) {
-    Vec v;
+  names_ = iface.pairFieldNames();
+  for (size_t f = 0; f < names_.size(); ++f) {
+    const int w = f < std::size(kWidths) ? kWidths[f] : 1;
+    Vec       v;
     PetscCall(pairVector(comm, pairs.n_global, w, &v));
     fields_.push_back(v);
     widths_.push_back(w);
@@ -44,9 +49,8 @@ PetscErrorCode InterfaceOutput::Open(MPI_Comm comm, PetscInt dim, const interfac
   grid.nodes_per_cell = (int)pairs.nodes_per_face;
   grid.cell_type      = dim == 2 ? "Polyline" : (pairs.nodes_per_face == 3 ? "Triangle" : "Quadrilateral");
   if (previous) {
-    const std::vector<std::string> names = interface::InterfaceAssembler::pairFieldNames(dim);
-    std::vector<FieldRef>          layout;
-    for (size_t f = 0; f < fields_.size(); ++f) layout.push_back({names[f], Centering::Node, fields_[f]});
+    std::vector<FieldRef> layout;
+    for (size_t f = 0; f < fields_.size(); ++f) layout.push_back({names_[f], Centering::Node, fields_[f]});
     PetscCall(writer_.Resume(comm, dir, grid, geometry_, topology_, *previous, layout));
   } else {
     PetscCall(writer_.Open(comm, dir, grid, geometry_, topology_));
@@ -82,9 +86,8 @@ PetscErrorCode InterfaceOutput::Write(const interface::InterfaceAssembler &iface
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(core::event_output, 0, 0, 0, 0));
   PetscCall(fill(iface));
-  const std::vector<std::string> names = interface::InterfaceAssembler::pairFieldNames(0);
-  std::vector<FieldRef>          refs;
-  for (size_t f = 0; f < fields_.size(); ++f) refs.push_back({names[f], Centering::Node, fields_[f]});
+  std::vector<FieldRef> refs;
+  for (size_t f = 0; f < fields_.size(); ++f) refs.push_back({names_[f], Centering::Node, fields_[f]});
   PetscCall(writer_.WriteStep(step, t, refs));
   PetscCall(PetscLogEventEnd(core::event_output, 0, 0, 0, 0));
   PetscFunctionReturn(0);

@@ -6,7 +6,8 @@
 
 namespace slipwave::io {
 
-PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir, const std::vector<std::pair<PetscInt, PetscReal>> *previous) {
+PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir, const std::vector<std::pair<PetscInt, PetscReal>> *previous,
+                                  Vec pore_layout) {
   MPI_Comm     comm = PetscObjectComm((PetscObject)dm);
   const PetscInt dim = bulk.dimension(), nen = bulk.nodesPerCell(), ncell = bulk.cellCount();
   PetscSection gsection;
@@ -48,12 +49,13 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
   grid.nodes_per_cell = (int)nen;
   if (previous) {
     // The node fields have the geometry's layout; the cell fields those of stress and region.
-    PetscCall(writer_.Resume(comm, dir, grid, geometry_, topology_, *previous,
-                             {{"displacement", Centering::Node, geometry_},
-                              {"velocity", Centering::Node, geometry_},
-                              {"acceleration", Centering::Node, geometry_},
-                              {"stress", Centering::Cell, stress_},
-                              {"region", Centering::Cell, region_}}));
+    std::vector<FieldRef> layout = {{"displacement", Centering::Node, geometry_},
+                                    {"velocity", Centering::Node, geometry_},
+                                    {"acceleration", Centering::Node, geometry_},
+                                    {"stress", Centering::Cell, stress_},
+                                    {"region", Centering::Cell, region_}};
+    if (pore_layout) layout.insert(layout.end(), {{"pore_pressure", Centering::Node, pore_layout}, {"excess_pore_pressure", Centering::Node, pore_layout}});
+    PetscCall(writer_.Resume(comm, dir, grid, geometry_, topology_, *previous, layout));
   } else {
     PetscCall(writer_.Open(comm, dir, grid, geometry_, topology_));
   }

@@ -30,8 +30,9 @@ for fluid in noflow drained; do
 done
 $PY - "$WORK" <<'PY'
 import sys
-import h5py
 import numpy as np
+sys.path.insert(0, "tests/tools")
+from frames import Frames
 work = sys.argv[1]
 weight = 2400 * 9.81 * 10.0
 ok = True
@@ -42,11 +43,13 @@ def expect(cond, text):
 peak, slips = {}, {}
 for fluid in ("noflow", "drained"):
     print(fluid + ":")
-    with h5py.File(f"{work}/{fluid}/interface_base.h5") as f:
-        x = f["/geometry"][:, 0]
-        steps = sorted(f["/fields/sigma_N"].keys(), key=int)
-        sn = f["/fields/sigma_N/" + steps[0]][:, 0]
-        slips[fluid] = np.array([f["/fields/accumulated_slip/" + k][:].ravel() for k in steps])
+    f = Frames(f"{work}/{fluid}", "interface_base")
+    x = f.geometry[:, 0]
+    sn = f.field("sigma_N", 0)[:, 0]
+    slips[fluid] = np.array([a.ravel() for a in f.series("accumulated_slip")])
+    # The law's normal traction is the effective one, sigma_N + p of the soil side's pairs.
+    expect(np.allclose(f.field("sigma_N_effective", -1), f.field("sigma_N", -1) + f.field("pore_pressure", -1), rtol=0, atol=1e-9 * weight),
+           "interface output: sigma_N_effective = sigma_N + pore_pressure")
     w = np.where(np.isclose(np.abs(x), 4.0), 1.0, 2.0)
     mean = np.sum(w * sn) / np.sum(w)
     expect(abs(mean / -weight - 1) <= 0.01, f"geostatic mean normal traction {mean:.0f} Pa (weight/area {-weight:.0f}), error {abs(mean / -weight - 1):.2e} (bound 1e-2)")

@@ -47,8 +47,9 @@ done
 $PY - "$WORK" <<'PY'
 import math
 import sys
-import h5py
 import numpy as np
+sys.path.insert(0, "tests/tools")
+from frames import Frames
 work = sys.argv[1]
 tan_phi, g, m, area, p_h = math.tan(math.radians(30)), 9.81, 2400 * 2 * 0.5, 2.0, 1000 * 9.81 * 0.25
 W = m * g
@@ -63,13 +64,17 @@ for fluid in ("drained", "noflow"):
     st = {n: np.genfromtxt(f"{work}/{fluid}/stations/{n}.csv", delimiter=",", names=True) for n in ["base", "block"] + [f"c{j}" for j in range(9)]}
     t, base, block = st["base"]["t"], st["base"], st["block"]
     p = np.array([st[f"c{j}"]["p"] for j in range(9)])
-    with h5py.File(f"{work}/{fluid}/interface_slide.h5") as f:
-        x = f["/geometry"][:, 0]
-        sn = f["/fields/sigma_N/" + sorted(f["/fields/sigma_N"].keys())[0]][:, 0]
-    sn = sn[np.argsort(x)]  # pairs left to right, as the stations c0 .. c8
+    f = Frames(f"{work}/{fluid}", "interface_slide")
+    order = np.argsort(f.geometry[:, 0])  # pairs left to right, as the stations c0 .. c8
+    sn = f.field("sigma_N", 0)[:, 0][order]
+    # The interface output's own pore pressure and effective traction (soil side of each pair)
+    # against the stations on the pairs' soil nodes.
+    check("interface output: geostatic mean pore pressure [Pa]", np.sum(A_p * f.field("pore_pressure", 0)[:, 0][order]) / area, np.sum(A_p * p[:, 0]) / area, 1e-9)
+    sn_eff = f.field("sigma_N_effective", 0)[:, 0][order]
     print(f"{fluid}:")
     check("geostatic mean total normal traction [Pa]", np.sum(A_p * sn) / area, -W / area, 0.01)
     check("geostatic mean effective normal traction [Pa]", np.sum(A_p * (sn + p[:, 0])) / area, -(W / area - p_h), 0.01)
+    check("  the same from the interface output's sigma_N_effective [Pa]", np.sum(A_p * sn_eff) / area, -(W / area - p_h), 0.01)
     i = int(np.argmax(np.abs(block["v_x"] - base["v_x"]) > 1e-4))
     onset[fluid] = base["a_x"][i]
     expected = tan_phi * (W - np.sum(A_p * p[:, i])) / m

@@ -24,8 +24,9 @@ for ranks in 1 2; do
   $PY - "$WORK/B$ranks" "$WORK/C$ranks" "$half" <<'PY'
 import csv
 import sys
-import h5py
 import numpy as np
+sys.path.insert(0, "tests/tools")
+from frames import Frames
 b, c, half = sys.argv[1], sys.argv[2], int(sys.argv[3])
 # The restart must happen while the fluid is active: an excess pressure at the stations and
 # Darcy dissipation booked both before and after the checkpoint step.
@@ -35,11 +36,12 @@ pex = max(abs(float(r["p_excess"])) for r in csv.DictReader(open(f"{c}/stations/
 print(f"excess pore pressure at layer_mid up to {pex:.0f} Pa; Darcy dissipation {darcy[half]:.3e} J/m at the checkpoint, {darcy[-1]:.3e} at the end")
 assert pex > 1e3 and 0 < darcy[half] < darcy[-1], "the fluid is not active across the restart"
 worst, frames = 0.0, 0
-with h5py.File(f"{b}/volume.h5") as fb, h5py.File(f"{c}/volume.h5") as fc:
-    for field in ("pore_pressure", "excess_pore_pressure", "displacement"):
-        for step in fc["/fields/" + field]:
-            worst = max(worst, float(np.abs(fb[f"/fields/{field}/{step}"][:] - fc[f"/fields/{field}/{step}"][:]).max()))
-            frames += 1
+fb, fc = Frames(b), Frames(c)
+assert fb.times == fc.times, "the restarted run lists other frames"
+for field in ("pore_pressure", "excess_pore_pressure", "displacement"):
+    for k in range(len(fc)):
+        worst = max(worst, float(np.abs(fb.field(field, k) - fc.field(field, k)).max()))
+        frames += 1
 print(f"volume: {frames} frames of p, p_excess, u; largest difference {worst}")
 sys.exit(0 if worst == 0.0 else 1)
 PY
@@ -70,14 +72,15 @@ cp -r "$WORK/FA" "$WORK/FB"
 $SW $O -restart "$WORK/FB/checkpoint.bin" -output_dir "$WORK/FB" | grep -E "^restart|^done"
 cmp "$WORK/FB/energy.csv" "$WORK/FC/energy.csv"
 for f in "$WORK"/FC/stations/*.csv; do cmp "$f" "$WORK/FB/stations/$(basename "$f")"; done
-$PY - "$WORK/FB/interface_base.h5" "$WORK/FC/interface_base.h5" <<'PY'
+$PY - "$WORK/FB" "$WORK/FC" <<'PY'
 import sys
-import h5py
 import numpy as np
-with h5py.File(sys.argv[1]) as b, h5py.File(sys.argv[2]) as c:
-    steps = sorted(c["/fields/accumulated_slip"].keys())
-    slip = max(float(c["/fields/accumulated_slip/" + k][:].max()) for k in steps)
-    worst = max(float(np.abs(b[f"/fields/{f}/{k}"][:] - c[f"/fields/{f}/{k}"][:]).max()) for f in c["/fields"] for k in c["/fields/" + f])
+sys.path.insert(0, "tests/tools")
+from frames import Frames
+b, c = Frames(sys.argv[1], "interface_base"), Frames(sys.argv[2], "interface_base")
+assert b.times == c.times, "the restarted run lists other interface frames"
+slip = max(float(x.max()) for x in c.series("accumulated_slip"))
+worst = max(float(np.abs(b.field(f, k) - c.field(f, k)).max()) for k in range(len(c)) for f in c.field_names(k))
 print(f"foundation_saturated: largest slip {slip * 1000:.1f} mm; interface frames, largest difference {worst}")
 sys.exit(0 if worst == 0.0 and slip > 0.01 else 1)
 PY

@@ -74,7 +74,8 @@ public:
   PetscErrorCode CountCutPairs(Vec u_template, PetscInt *cut) const;
   // Per-pair fields of this rank's pairs for output, each value with its pair id.
   void pairFields(std::vector<double> *values, int *per_pair) const;
-  static std::vector<std::string> pairFieldNames(PetscInt dim);
+  // Their names, in order (saturated soil side: also the pore pressure and sigma_N + p).
+  std::vector<std::string> pairFieldNames() const;
   PetscErrorCode Destroy();
 
   const mesh::InterfaceSpec  &spec() const { return spec_; }
@@ -101,6 +102,7 @@ private:
   std::vector<physics::InterfaceState<2>> trial_states2_;
   std::vector<physics::InterfaceState<3>> trial_states3_;
   std::vector<double> trial_jump_;
+  std::vector<double> pair_pore_, trial_pair_pore_; // saturated soil side: p at each pair, committed and trial
   double              trial_max_drift_ = 0;
   bool                has_trial_       = false;
   double              contact_damping_ = 0;

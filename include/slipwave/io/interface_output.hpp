@@ -28,6 +28,7 @@ private:
   IS               topology_ = nullptr;
   std::vector<Vec> fields_;
   std::vector<int> widths_;
+  std::vector<std::string> names_; // of fields_, from InterfaceAssembler::pairFieldNames
 };
 
 } // namespace slipwave::io

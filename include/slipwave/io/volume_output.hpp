@@ -15,7 +15,10 @@ namespace slipwave::io {
 class VolumeOutput {
 public:
   // previous: output steps (step, time) already in DIR/volume.h5 to keep (a restart), or null.
-  PetscErrorCode Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir, const std::vector<std::pair<PetscInt, PetscReal>> *previous = nullptr);
+  // pore_layout: a pore-pressure vector of a saturated scene (its layout names the pressure
+  // fields of the frames a restart carries over), or null.
+  PetscErrorCode Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir, const std::vector<std::pair<PetscInt, PetscReal>> *previous = nullptr,
+                      Vec pore_layout = nullptr);
   // initial_stress: 6 per local cell added to the stress of u (the geostatic state), or empty.
   // p_total, p_excess: saturated scenes, one value per node in the same node order (global
   // vectors of model/pore_pressure.hpp), written as the node fields pore_pressure and
