@@ -34,6 +34,16 @@ PetscErrorCode NodalAccelerationUpdate(const NodalSources &src, Vec f_input, Vec
   PetscCall(VecZeroEntries(f_input));
   PetscCall(VecZeroEntries(f_external));
   na->external_dofs.clear();
+  na->held_dofs.clear();
+  {
+    PetscInt           n;
+    const PetscScalar *mask;
+    PetscCall(VecGetLocalSize(src.free_mask, &n));
+    PetscCall(VecGetArrayRead(src.free_mask, &mask));
+    for (PetscInt i = 0; i < n; ++i)
+      if (mask[i] == 0.0) na->held_dofs.push_back(i);
+    PetscCall(VecRestoreArrayRead(src.free_mask, &mask));
+  }
   na->listed = !src.others_add_external;
   if (na->listed) {
     PetscCall(addSupport(src.input_force, &na->external_dofs));
@@ -60,6 +70,7 @@ PetscErrorCode NodalAccelerationDestroy(NodalAcceleration *na) {
   PetscFunctionBeginUser;
   PetscCall(VecDestroy(&na->free_inv_mass));
   na->external_dofs.clear();
+  na->held_dofs.clear();
   PetscFunctionReturn(0);
 }
 

@@ -28,6 +28,7 @@ struct NodalAcceleration {
   // the incident-wave force, the constant loads and the timed loads' patterns.
   std::vector<PetscInt> external_dofs;
   bool                  listed = false; // false: f_ext is formed over every dof
+  std::vector<PetscInt> held_dofs;      // local dofs with a prescribed motion (free mask 0)
   Vec                   seen_mask = nullptr, seen_constant = nullptr; // what the above was built from
   PetscObjectState      mask_state = -1, constant_state = -1;
 };
