@@ -90,6 +90,7 @@ PetscErrorCode readRunOptions(MPI_Comm comm, RunOptions *o) {
                                   nullptr));
   PetscOptionsEnd();
   PetscCheck(o->checkpoint_interval >= 0, comm, PETSC_ERR_USER_INPUT, "-checkpoint_interval = %" PetscInt_FMT "; allowed: >= 0 steps", o->checkpoint_interval);
+  PetscCheck(o->energy_interval >= 1, comm, PETSC_ERR_USER_INPUT, "-energy_interval = %" PetscInt_FMT "; allowed: 1 to 1e9 steps", o->energy_interval);
   PetscFunctionReturn(0);
 }
 // ---------------------------------------------------------------------------------------------
