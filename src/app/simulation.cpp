@@ -131,7 +131,7 @@ PetscErrorCode stopIfRequested(Run *r, PetscInt step, PetscReal t) {
   PetscCall(StopRequested(r->model.comm, &requested));
   if (!requested) PetscFunctionReturn(0);
   PetscCall(flushSeries(r));
-  SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT, "stopped by SIGTERM after step %" PetscInt_FMT ", t = %g s; stations and energy.csv hold every step up to it, the fields every output time up to it (%s)",
+  SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT, "stopped by SIGTERM after step %" PetscInt_FMT ", t = %g s; stations hold every step up to it, energy.csv every -energy_interval-th, the fields every output time up to it (%s)",
           step, (double)t, r->opt.output_dir);
 }
 
