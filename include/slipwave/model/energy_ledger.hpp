@@ -9,6 +9,8 @@
 #pragma once
 #include <petscts.h>
 
+#include <vector>
+
 #include "slipwave/model/elastodynamics.hpp"
 
 namespace slipwave::model {
@@ -41,6 +43,10 @@ struct EnergyLedger {
   double h_prev = 0;    // the step before the current one
   bool   started = false;
   bool   evaluated = false; // the last update evaluated the stored energies (see below)
+  // The dashpot blocks C of model->absorbing_nodes, bs x bs each, zero in the rows and columns
+  // of held dofs: contiguous, so the per-step absorbed power does not gather them from the
+  // whole-mesh vector of blocks (built at the first update of a run).
+  std::vector<double> absorbing_free_blocks;
 
   double relativeError() const { return scale > 0 ? balance_error / scale : 0.0; }
 };
