@@ -83,7 +83,7 @@ PetscErrorCode readRunOptions(MPI_Comm comm, RunOptions *o) {
                             o->checkpoint_interval, &o->checkpoint_interval, nullptr));
   PetscCall(PetscOptionsString("-restart", "continue from this checkpoint file (same scene options and number of ranks)", "SimulationRun", o->restart, o->restart,
                                sizeof o->restart, nullptr));
-  PetscCall(PetscOptionsInt("-energy_interval", "evaluate the energy balance (an energy.csv row, the divergence guard) every N steps and at the last [steps], 1 to 1e9", "SimulationRun",
+  PetscCall(PetscOptionsInt("-energy_interval", "evaluate the energy balance (an energy.csv row, the divergence guard) every N steps, at output times and at the last [steps], 1 to 1e9", "SimulationRun",
                             o->energy_interval, &o->energy_interval, nullptr));
   PetscInt nv = 3;
   PetscCall(PetscOptionsRealArray("-initial_velocity", "uniform initial velocity vx,vy[,vz] of every free node [m/s]", "SimulationRun", o->initial_velocity, &nv,
@@ -172,7 +172,9 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   PetscCall(time::CentralDifferenceGetAcceleration(ts, &a));
   PetscCall(TSGetTimeStep(ts, &h));
   const bool last = t >= r->max_time * (1 - 1e-12);
-  PetscCall(model::EnergyLedgerUpdate(&r->model, ts, h, last || step % r->opt.energy_interval == 0, &r->ledger));
+  // Evaluated at every output time too, so each frame has its energy row.
+  const bool evaluate = last || step % r->opt.energy_interval == 0 || r->frames.Due(step, t, last);
+  PetscCall(model::EnergyLedgerUpdate(&r->model, ts, h, evaluate, &r->ledger));
   if (r->ledger.evaluated) PetscCall(DivergenceGuard(r->model, r->ledger, r->opt.energy_growth_limit, r->step, h, step, t, u, v, a));
   PetscCall(r->stations.Sample(r->model.dm, t, u, v, a));
   if (r->model.pore) {
