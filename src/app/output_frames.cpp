@@ -30,7 +30,7 @@ PetscErrorCode OutputFrames::Open(const model::Elastodynamics &model, const std:
 
 PetscErrorCode OutputFrames::WriteIfDue(const model::Elastodynamics &model, PetscInt step, PetscReal t, bool last, Vec u, Vec v, Vec a, bool *due) {
   PetscFunctionBeginUser;
-  *due = t >= next_output_ * (1 - 1e-12) || last || step == 0;
+  *due = Due(step, t, last);
   if (!*due) PetscFunctionReturn(0);
   const PetscInt frame = (PetscInt)times_.size();
   if (volume_) {

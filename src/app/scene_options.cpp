@@ -9,7 +9,7 @@ namespace {
 
 // Options that steer the run but not its physics or mesh (names without the dash).
 bool steersOnly(const std::string &name) {
-  static const char *const exact[] = {"output_dir", "output_overwrite", "output_interval", "output_fields", "progress_interval", "checkpoint_interval",
+  static const char *const exact[] = {"output_dir", "output_overwrite", "output_interval", "output_fields", "progress_interval", "checkpoint_interval", "energy_interval",
                                       "restart",    "ts_max_time",      "ts_max_steps",    "dry_run",       "energy_growth_limit", "help",
                                       "options_file", "no_signal_handler", "info",        "version"};
   for (const char *e : exact)

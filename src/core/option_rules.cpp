@@ -62,6 +62,7 @@ const Rule kRules[] = {
   {"-progress_interval",       Kind::Real, 1, 1, closed(0, 1e7), "0 <= interval <= 1e7 s (0: every step)"},
   {"-energy_growth_limit",     Kind::Real, 1, 1, aboveZero(1e6), "0 < limit <= 1e6 (a multiple of the energy put in)"},
   {"-checkpoint_interval",     Kind::Int,  1, 1, closed(0, 1e9), "0 to 1e9 steps (0: never)"},
+  {"-energy_interval",         Kind::Int,  1, 1, closed(1, 1e9), "1 to 1e9 steps"},
   {"-restart",                 Kind::File, 1, 1, kAny, "a checkpoint file written by -checkpoint_interval"},
   {"-initial_velocity",        Kind::Real, 2, 3, magnitude(1e4), "vx,vy[,vz] with |v| <= 1e4 m/s", 1},
   {"-initial_velocity_*",      Kind::Real, 2, 3, magnitude(1e4), "vx,vy[,vz] with |v| <= 1e4 m/s", 1},

@@ -11,6 +11,7 @@
 #include "slipwave/model/drm.hpp"
 #include "slipwave/model/free_field.hpp"
 #include "slipwave/model/lateral_tie.hpp"
+#include "slipwave/model/nodal_acceleration.hpp"
 #include "slipwave/model/node_fields.hpp"
 #include "slipwave/model/point_force.hpp"
 #include "slipwave/model/pore_pressure.hpp"
@@ -212,6 +213,7 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
 PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
   PetscFunctionBeginUser;
   PetscCall(BoundaryConditionsDestroy(&m->bc));
+  PetscCall(NodalAccelerationDestroy(&m->nodal));
   PetscCall(FreeFieldDestroy(&m->free_field));
   PetscCall(DrmDestroy(&m->drm));
   PetscCall(LateralTieDestroy(&m->tie));
@@ -267,44 +269,35 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
 
   PetscCall(PetscLogEventBegin(core::event_boundary, 0, 0, 0, 0));
   const double v_in = m->input_enabled && m->bc.input.active() && m->bc.input_wave != InputWave::None ? m->bc.input.velocity(t) : 0.0;
-  PetscCall(VecAXPBY(m->f_input, v_in, 0.0, m->bc.input_force));
+  PetscCall(NodalAccelerationUpdate({m->inv_mass, m->bc.free_mask, m->bc.input_force, m->bc.constant_force, &m->bc.timed_loads, m->free_field || m->drm}, m->f_input,
+                                    m->f_external, &m->nodal));
+  PetscCall(NodalAccelerationInput(m->nodal, v_in, m->bc.input_force, m->f_input));
   if (m->drm && m->input_enabled) PetscCall(DrmAddForce(m->drm, *m, ts, t, m->f_input));
-  PetscCall(VecWAXPY(m->f_external, 1.0, m->bc.constant_force, m->f_input));
+  PetscCall(NodalAccelerationExternal(m->nodal, m->bc.constant_force, m->f_input, m->f_external));
   if (m->input_enabled) PetscCall(TimedLoadsAdd(m->bc.timed_loads, t, m->f_external));
   if (m->free_field) {
     // The columns' trial reaches t here; their force C v_ff + A t_ff at t is external.
     PetscCall(FreeFieldUpdate(m->free_field, m->dm, ts, t, v_in, m->input_enabled));
     PetscCall(VecAXPY(m->f_external, 1.0, m->free_field->force));
   }
-  PetscInt           n;
-  PetscScalar       *acc;
-  const PetscScalar *fe, *fi, *fd, *fif, *fan, *fcd, *im, *mask;
-  PetscCall(VecGetLocalSize(a, &n));
-  PetscCall(VecGetArray(a, &acc));
-  PetscCall(VecGetArrayRead(m->f_external, &fe));
-  PetscCall(VecGetArrayRead(m->f_internal, &fi));
-  PetscCall(VecGetArrayRead(m->f_stiffness_damping, &fd));
-  PetscCall(VecGetArrayRead(m->f_interface, &fif));
-  PetscCall(VecGetArrayRead(m->f_anelastic, &fan));
-  PetscCall(VecGetArrayRead(m->f_contact_damping, &fcd));
-  PetscCall(VecGetArrayRead(m->inv_mass, &im));
-  PetscCall(VecGetArrayRead(m->bc.free_mask, &mask));
-  for (PetscInt i = 0; i < n; ++i) acc[i] = mask[i] * im[i] * (fe[i] - fi[i] - fd[i] + fif[i] + fan[i] + fcd[i]);
-  PetscCall(VecRestoreArrayRead(m->f_contact_damping, &fcd));
-  PetscCall(VecRestoreArrayRead(m->f_anelastic, &fan));
-  PetscCall(VecRestoreArrayRead(m->f_interface, &fif));
-  PetscCall(VecRestoreArrayRead(m->f_stiffness_damping, &fd));
-  PetscCall(VecRestoreArrayRead(m->f_internal, &fi));
-  PetscCall(VecRestoreArrayRead(m->f_external, &fe));
+  const bool interfaces = !m->interfaces.empty();
+  PetscCall(NodalAccelerationAssemble(m->nodal,
+                                      {m->f_external, m->f_internal, m->rayleigh.beta > 0 ? m->f_stiffness_damping : nullptr, interfaces ? m->f_interface : nullptr,
+                                       m->attenuation ? m->f_anelastic : nullptr, interfaces ? m->f_contact_damping : nullptr},
+                                      a));
   if (m->pore) {
-    const PetscScalar *fp;
+    PetscInt           n;
+    PetscScalar       *acc;
+    const PetscScalar *fp, *mim;
+    PetscCall(VecGetLocalSize(a, &n));
+    PetscCall(VecGetArray(a, &acc));
+    PetscCall(VecGetArrayRead(m->nodal.free_inv_mass, &mim));
     PetscCall(VecGetArrayRead(m->f_pore, &fp));
-    for (PetscInt i = 0; i < n; ++i) acc[i] += mask[i] * im[i] * fp[i];
+    for (PetscInt i = 0; i < n; ++i) acc[i] += mim[i] * fp[i];
     PetscCall(VecRestoreArrayRead(m->f_pore, &fp));
+    PetscCall(VecRestoreArrayRead(m->nodal.free_inv_mass, &mim));
+    PetscCall(VecRestoreArray(a, &acc));
   }
-  PetscCall(VecRestoreArrayRead(m->bc.free_mask, &mask));
-  PetscCall(VecRestoreArrayRead(m->inv_mass, &im));
-  PetscCall(VecRestoreArray(a, &acc));
   // The geostatic stage (input_enabled false) holds prescribed dofs at rest: a record's
   // baseline correction leaves a nonzero acceleration at t = 0 that would drag them along.
   if (m->input_enabled)

@@ -2,6 +2,7 @@
 
 #include <petsc/private/tsimpl.h>
 
+#include <utility>
 #include <vector>
 
 namespace slipwave::time {
@@ -13,6 +14,8 @@ struct CentralDifference {
   Vec       v_half      = nullptr; // v_{n+1/2}
   Vec       damping     = nullptr; // nodal blocks of M^{-1} C, or null
   PetscInt  damping_bs  = 0;
+  std::vector<PetscInt> diagonal_nodes; // local nodes with a diagonal damping block
+  std::vector<PetscInt> coupled_nodes;  // local nodes with off-diagonal damping terms
   PetscBool have_accel  = PETSC_FALSE;
   PetscErrorCode (*commit)(void *) = nullptr;
   void     *commit_ctx  = nullptr;
@@ -20,67 +23,132 @@ struct CentralDifference {
 
 CentralDifference *data(TS ts) { return static_cast<CentralDifference *>(ts->data); }
 
-// Solves (I + s D_i) v_i = r_i for every node block (s = h/2), and forms a = a* - D v.
-// Blocks are at most 3x3: Gaussian elimination with partial pivoting in place.
+// Solves (I + s D_i) v_i = r_i for node block i (s = h/2), and forms a_i = a*_i - D_i v_i in
+// place (a holds a* on entry). Blocks are at most 3x3: Gaussian elimination with partial
+// pivoting in place.
+void solveDampedBlock(PetscInt bs, const PetscScalar *D, PetscReal s, PetscScalar *vi, PetscScalar *ai) {
+  double A[9], r[3], x[3];
+  for (PetscInt i = 0; i < bs; ++i) {
+    r[i] = vi[i];
+    for (PetscInt j = 0; j < bs; ++j) A[i * bs + j] = (i == j ? 1.0 : 0.0) + s * D[i * bs + j];
+  }
+  for (PetscInt c = 0; c < bs; ++c) {
+    PetscInt p = c;
+    for (PetscInt i = c + 1; i < bs; ++i)
+      if (PetscAbsReal(A[i * bs + c]) > PetscAbsReal(A[p * bs + c])) p = i;
+    if (p != c) {
+      for (PetscInt j = 0; j < bs; ++j) std::swap(A[c * bs + j], A[p * bs + j]);
+      std::swap(r[c], r[p]);
+    }
+    for (PetscInt i = c + 1; i < bs; ++i) {
+      const double f = A[i * bs + c] / A[c * bs + c];
+      for (PetscInt j = c; j < bs; ++j) A[i * bs + j] -= f * A[c * bs + j];
+      r[i] -= f * r[c];
+    }
+  }
+  for (PetscInt i = bs - 1; i >= 0; --i) {
+    double sum = r[i];
+    for (PetscInt j = i + 1; j < bs; ++j) sum -= A[i * bs + j] * x[j];
+    x[i] = sum / A[i * bs + i];
+  }
+  for (PetscInt i = 0; i < bs; ++i) {
+    vi[i] = x[i];
+    double Dv = 0;
+    for (PetscInt j = 0; j < bs; ++j) Dv += D[i * bs + j] * x[j];
+    ai[i] -= Dv;
+  }
+}
+
+// The nodes whose damping block is not zero, split into diagonal blocks (Rayleigh alpha, a
+// dashpot aligned with the axes) and full ones. Most nodes of a model with absorbing sides
+// have none, so the step visits only these instead of every node.
+PetscErrorCode classifyDampedNodes(CentralDifference *cd) {
+  PetscFunctionBeginUser;
+  cd->diagonal_nodes.clear();
+  cd->coupled_nodes.clear();
+  if (!cd->damping) PetscFunctionReturn(0);
+  const PetscInt     bs = cd->damping_bs;
+  PetscInt           n;
+  const PetscScalar *dd;
+  PetscCall(VecGetLocalSize(cd->damping, &n));
+  PetscCall(VecGetArrayRead(cd->damping, &dd));
+  for (PetscInt node = 0; node < n / (bs * bs); ++node) {
+    const PetscScalar *D = dd + node * bs * bs;
+    bool               any = false, off = false;
+    for (PetscInt i = 0; i < bs; ++i)
+      for (PetscInt j = 0; j < bs; ++j) {
+        any = any || D[i * bs + j] != 0.0;
+        off = off || (i != j && D[i * bs + j] != 0.0);
+      }
+    if (off) cd->coupled_nodes.push_back(node);
+    else if (any) cd->diagonal_nodes.push_back(node);
+  }
+  PetscCall(VecRestoreArrayRead(cd->damping, &dd));
+  PetscFunctionReturn(0);
+}
+
+// At the damped nodes only: v = (I + s D)^{-1} v and a = a - D v (a holds a* on entry). A
+// diagonal block is the same elimination with nothing to eliminate: one division per dof.
 PetscErrorCode dampedVelocity(CentralDifference *cd, PetscReal s, Vec v, Vec a) {
   PetscFunctionBeginUser;
-  if (!cd->damping) {
-    PetscCall(VecCopy(cd->accel_star, a));
-    PetscFunctionReturn(0);
-  }
-  const PetscInt bs = cd->damping_bs;
-  PetscInt       n;
-  PetscScalar   *vv, *aa;
-  const PetscScalar *dd, *as;
-  PetscCall(VecGetLocalSize(v, &n));
+  if (!cd->damping) PetscFunctionReturn(0);
+  const PetscInt     bs = cd->damping_bs;
+  PetscScalar       *vv, *aa;
+  const PetscScalar *dd;
   PetscCall(VecGetArray(v, &vv));
   PetscCall(VecGetArray(a, &aa));
   PetscCall(VecGetArrayRead(cd->damping, &dd));
-  PetscCall(VecGetArrayRead(cd->accel_star, &as));
-  double A[9], r[3], x[3];
-  for (PetscInt node = 0; node < n / bs; ++node) {
-    const PetscScalar *D = dd + node * bs * bs;
-    PetscScalar       *vi = vv + node * bs;
-    bool               zero = true;
-    for (PetscInt k = 0; k < bs * bs; ++k) zero = zero && D[k] == 0.0;
-    if (zero) {
-      for (PetscInt i = 0; i < bs; ++i) aa[node * bs + i] = as[node * bs + i];
-      continue;
-    }
+  for (PetscInt node : cd->diagonal_nodes)
     for (PetscInt i = 0; i < bs; ++i) {
-      r[i] = vi[i];
-      for (PetscInt j = 0; j < bs; ++j) A[i * bs + j] = (i == j ? 1.0 : 0.0) + s * D[i * bs + j];
+      const PetscScalar Dii = dd[node * bs * bs + i * bs + i];
+      const PetscScalar x   = vv[node * bs + i] / (1.0 + s * Dii);
+      vv[node * bs + i]     = x;
+      aa[node * bs + i] -= Dii * x;
     }
-    for (PetscInt c = 0; c < bs; ++c) {
-      PetscInt p = c;
-      for (PetscInt i = c + 1; i < bs; ++i)
-        if (PetscAbsReal(A[i * bs + c]) > PetscAbsReal(A[p * bs + c])) p = i;
-      if (p != c) {
-        for (PetscInt j = 0; j < bs; ++j) std::swap(A[c * bs + j], A[p * bs + j]);
-        std::swap(r[c], r[p]);
-      }
-      for (PetscInt i = c + 1; i < bs; ++i) {
-        const double f = A[i * bs + c] / A[c * bs + c];
-        for (PetscInt j = c; j < bs; ++j) A[i * bs + j] -= f * A[c * bs + j];
-        r[i] -= f * r[c];
-      }
-    }
-    for (PetscInt i = bs - 1; i >= 0; --i) {
-      double sum = r[i];
-      for (PetscInt j = i + 1; j < bs; ++j) sum -= A[i * bs + j] * x[j];
-      x[i] = sum / A[i * bs + i];
-    }
-    for (PetscInt i = 0; i < bs; ++i) {
-      vi[i] = x[i];
-      double Dv = 0;
-      for (PetscInt j = 0; j < bs; ++j) Dv += D[i * bs + j] * x[j];
-      aa[node * bs + i] = as[node * bs + i] - Dv;
-    }
-  }
-  PetscCall(VecRestoreArrayRead(cd->accel_star, &as));
+  for (PetscInt node : cd->coupled_nodes) solveDampedBlock(bs, dd + node * bs * bs, s, vv + node * bs, aa + node * bs);
   PetscCall(VecRestoreArrayRead(cd->damping, &dd));
   PetscCall(VecRestoreArray(a, &aa));
   PetscCall(VecRestoreArray(v, &vv));
+  PetscFunctionReturn(0);
+}
+
+// The two nodal passes of a step, each one loop over the local dofs:
+// before the force, v_half = v + h/2 a and u += h v_half;
+PetscErrorCode predict(PetscReal h, Vec u, Vec v, Vec a, Vec v_half) {
+  PetscInt           n;
+  PetscScalar       *uu, *vh;
+  const PetscScalar *vv, *aa;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(u, &n));
+  PetscCall(VecGetArray(u, &uu));
+  PetscCall(VecGetArrayWrite(v_half, &vh));
+  PetscCall(VecGetArrayRead(v, &vv));
+  PetscCall(VecGetArrayRead(a, &aa));
+  for (PetscInt i = 0; i < n; ++i) {
+    vh[i] = 0.5 * h * aa[i] + vv[i];
+    uu[i] += h * vh[i];
+  }
+  PetscCall(VecRestoreArrayRead(a, &aa));
+  PetscCall(VecRestoreArrayRead(v, &vv));
+  PetscCall(VecRestoreArrayWrite(v_half, &vh));
+  PetscCall(VecRestoreArray(u, &uu));
+  PetscFunctionReturn(0);
+}
+
+// after it, v = v_half + h/2 a* (the damped nodes are corrected after).
+PetscErrorCode correct(PetscReal h, Vec v_half, Vec a_star, Vec v) {
+  PetscInt           n;
+  PetscScalar       *vv;
+  const PetscScalar *vh, *as;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(v, &n));
+  PetscCall(VecGetArrayWrite(v, &vv));
+  PetscCall(VecGetArrayRead(v_half, &vh));
+  PetscCall(VecGetArrayRead(a_star, &as));
+  for (PetscInt i = 0; i < n; ++i) vv[i] = 0.5 * h * as[i] + vh[i];
+  PetscCall(VecRestoreArrayRead(a_star, &as));
+  PetscCall(VecRestoreArrayRead(v_half, &vh));
+  PetscCall(VecRestoreArrayWrite(v, &vv));
   PetscFunctionReturn(0);
 }
 
@@ -112,10 +180,11 @@ PetscErrorCode stepCentralDifference(TS ts) {
   PetscCall(TSAdaptChoose(ts->adapt, ts, h, nullptr, &next_h, &accept));
 
   PetscCall(TSPreStage(ts, ts->ptime));
-  PetscCall(VecWAXPY(cd->v_half, 0.5 * h, cd->accel, v));
-  PetscCall(VecAXPY(u, h, cd->v_half));
+  PetscCall(predict(h, u, v, cd->accel, cd->v_half));
   PetscCall(TSComputeRHSFunction(ts, ts->ptime + h, u, cd->accel_star));
-  PetscCall(VecWAXPY(v, 0.5 * h, cd->accel_star, cd->v_half));
+  PetscCall(correct(h, cd->v_half, cd->accel_star, v));
+  // a_{n+1} = a* at undamped nodes: the vectors swap roles instead of copying.
+  std::swap(cd->accel, cd->accel_star);
   PetscCall(dampedVelocity(cd, 0.5 * h, v, cd->accel));
   PetscCall(TSPostStage(ts, ts->ptime + h, 0, &u));
   PetscCall(commitState(cd));
@@ -202,6 +271,7 @@ PetscErrorCode CentralDifferenceSetNodalDamping(TS ts, PetscInt bs, Vec blocks) 
   cd->damping    = blocks;
   cd->damping_bs = bs;
   cd->have_accel = PETSC_FALSE;
+  PetscCall(classifyDampedNodes(cd));
   PetscFunctionReturn(0);
 }
 
@@ -240,12 +310,9 @@ PetscErrorCode CentralDifferenceComputeInitialAcceleration(TS ts) {
   Vec v_copy;
   PetscCall(VecDuplicate(v, &v_copy));
   PetscCall(VecCopy(v, v_copy));
-  if (cd->damping) {
-    // a_0 = a* - D v_0 with v_0 fixed: reuse the block solve with s = 0.
-    PetscCall(dampedVelocity(cd, 0.0, v_copy, cd->accel));
-  } else {
-    PetscCall(VecCopy(cd->accel_star, cd->accel));
-  }
+  PetscCall(VecCopy(cd->accel_star, cd->accel));
+  // a_0 = a* - D v_0 with v_0 fixed: the block solve with s = 0.
+  PetscCall(dampedVelocity(cd, 0.0, v_copy, cd->accel));
   PetscCall(VecDestroy(&v_copy));
   PetscCall(commitState(cd));
   cd->have_accel = PETSC_TRUE;

@@ -6,7 +6,8 @@
 # With nothing put in, the mechanisms must have taken energy: anelastic > 0 at the end.
 set -eu
 . tests/tools/lib.sh
-common="-bc_bottom_type fixed -ts_max_steps 2000 -ts_max_time 1e9 -output_fields 0 -progress_interval 100"
+# -energy_interval 1: this test reads the ledger at every step (row count, per-step rows).
+common="-bc_bottom_type fixed -ts_max_steps 2000 -ts_max_time 1e9 -output_fields 0 -progress_interval 100 -energy_interval 1"
 $SW -mesh_box_faces 12,8 -mesh_box_upper 30,20 -regions soil,block -region_block_box 10,20,10,20 -material_soil_rho 1800 -material_soil_vp 600 \
   -material_soil_vs 250 -material_soil_damping_ratio 0.05 -material_block_rho 2500 -material_block_E 3e10 -material_block_nu 0.2 -material_block_damping_ratio 0.01 \
   -initial_velocity 0.1,0.05 $common -output_dir "$WORK/2d" > /dev/null

@@ -39,7 +39,8 @@ set -eu
 IC="$PY tests/tools/contact_checks.py"
 c=$($PY -c "import math; print(math.sqrt(1e9/2000))")
 Z=$($PY -c "print(2000*$c)")
-scene="-options_file config/scenes/two_bar_impact.yaml -output_fields 1"
+# -energy_interval 1: the contact phase is read from energy.csv at every step.
+scene="-options_file config/scenes/two_bar_impact.yaml -output_fields 1 -energy_interval 1"
 
 echo "== A: identical bars, +1 and -1 m/s"
 $SW $scene -output_dir "$WORK/a"

@@ -14,10 +14,11 @@
 set -eu -o pipefail
 . tests/tools/lib.sh
 IC="$PY tests/tools/contact_checks.py"
+# -energy_interval 1: this test reads the ledger at every step (row count, per-step rows).
 opts="-mesh_box_faces 40,22 -mesh_box_upper 20,11 -regions soil,footing -region_soil_box 0,20,0,11 -region_footing_box 8,12,10,11
  -material_soil_rho 2000 -material_soil_E 1e8 -material_soil_nu 0.3 -material_footing_rho 2500 -material_footing_E 3e10 -material_footing_nu 0.2
  -interfaces base -interface_base_regions soil,footing -interface_base_phi 30 -bc_bottom_type fixed -initial_velocity_footing 1,-0.5
- -ts_max_time 0.2 -output_interval 0.005 -progress_interval 100
+ -ts_max_time 0.2 -output_interval 0.005 -progress_interval 100 -energy_interval 1
  -station_coordinates 10,11,10,10,2,11 -station_names footing_top,soil_under,soil_far"
 $SW $opts -output_dir "$WORK/np1"
 $MPIEXEC -n 2 $SW $opts -output_dir "$WORK/np2" | tee "$WORK/np2.log"

@@ -30,8 +30,9 @@ import numpy as np
 t = np.arange(0, 1.0005, 1e-3)
 a = (np.pi * 5 * (t - 0.24)) ** 2
 np.savetxt('$WORK/ricker.csv', np.c_[t, (1 - 2 * a) * np.exp(-a)], delimiter=',', header='time,factor', comments='')"
+# -energy_interval 1: this test reads the ledger at every step (row count, per-step rows).
 column="-mesh_box_faces 1,100 -mesh_box_upper 1,100 -regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200
- -constrain_components x -output_fields 0 -progress_interval 1000 -station_coordinates 0.5,100,0.5,0 -station_names top,base"
+ -constrain_components x -output_fields 0 -progress_interval 1000 -station_coordinates 0.5,100,0.5,0 -station_names top,base -energy_interval 1"
 $SW $column -bc_bottom_type absorbing -bc_top_type traction -bc_top_traction 0,-1e5 -bc_top_stf ricker -bc_top_f0 5 -bc_top_t0 0.24 \
   -ts_max_time 1.0 -output_dir "$WORK/traction" | grep "load: traction on 'top': Ricker wavelet, peak 1, f0 5 Hz"
 for stf in "harmonic -bc_top_f0 5 -bc_top_t0 0.1" "record -bc_top_record $WORK/ricker.csv"; do

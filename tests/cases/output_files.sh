@@ -4,7 +4,8 @@
 # expected frames (t = 0 and every 0.1 s to 0.5 s: 6), station CSV/HDF5 and energy.csv.
 set -eu
 . tests/tools/lib.sh
-$MPIEXEC -n 2 $SW -options_file config/scenes/site_response_2d.yaml -ts_max_time 0.5 -output_interval 0.1 -output_dir "$WORK"
+# -energy_interval 1: this test reads the ledger at every step (row count, per-step rows).
+$MPIEXEC -n 2 $SW -options_file config/scenes/site_response_2d.yaml -ts_max_time 0.5 -output_interval 0.1 -energy_interval 1 -output_dir "$WORK"
 $PY scripts/check_output.py "$WORK" --expect-steps 6 --expect-fields displacement,velocity,acceleration,stress,region
 $PY - "$WORK" <<'PY'
 import sys, h5py, numpy as np

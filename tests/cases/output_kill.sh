@@ -16,7 +16,8 @@
 #   ranks to 1e-9 of the largest value (the sums' order differs, round-off only).
 set -eu
 . tests/tools/lib.sh
-O="-options_file config/scenes/site_response_2d.yaml -ts_max_time 3 -output_interval 0.2 -progress_interval 100"
+# -energy_interval 1: this test reads the ledger at every step (row count, per-step rows).
+O="-options_file config/scenes/site_response_2d.yaml -ts_max_time 3 -output_interval 0.2 -progress_interval 100 -energy_interval 1"
 $SW $O -output_dir "$WORK/F" > "$WORK/F.log"
 for run in TERM KILL TERM2; do
   sig=${run%2}

@@ -14,5 +14,6 @@ fi
 cat "$WORK/above.err"
 grep -q "^slipwave: error: -ts_dt = .* is above the stable limit" "$WORK/above.err"
 [ "$(wc -l < "$WORK/above.err")" -eq 1 ]
-$SW $opts -time_step_safety 1 -initial_velocity 0.1,0 -ts_max_steps 20000 -ts_max_time 1e9 -output_dir "$WORK/long"
+# -energy_interval 1: this test reads the ledger at every step (row count, per-step rows).
+$SW $opts -time_step_safety 1 -initial_velocity 0.1,0 -ts_max_steps 20000 -ts_max_time 1e9 -energy_interval 1 -output_dir "$WORK/long"
 $CHECK energy "$WORK/long/energy.csv" --max-error 1e-9 --min-rows 20001

@@ -25,6 +25,8 @@ public:
   // Writes a frame at the first step, at the last one and whenever the next output time is
   // reached; due says whether this step was an output time.
   PetscErrorCode WriteIfDue(const model::Elastodynamics &model, PetscInt step, PetscReal t, bool last, Vec u, Vec v, Vec a, bool *due);
+  // Whether this step is an output time (the first, the last, or the next output time reached).
+  bool Due(PetscInt step, PetscReal t, bool last) const { return t >= next_output_ * (1 - 1e-12) || last || step == 0; }
   PetscErrorCode Close();
 
   // What a checkpoint saves and restores (before Open).

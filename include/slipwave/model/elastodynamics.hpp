@@ -17,6 +17,7 @@
 #include "slipwave/mesh/mesh_builder.hpp"
 #include "slipwave/model/boundary_conditions.hpp"
 #include "slipwave/model/materials.hpp"
+#include "slipwave/model/nodal_acceleration.hpp"
 #include "slipwave/physics/rayleigh_damping.hpp"
 
 namespace slipwave::model {
@@ -56,6 +57,7 @@ struct Elastodynamics {
   Drm        *drm        = nullptr; // Domain Reduction Method input (-input_method drm), or null
   PorePressure *pore = nullptr; // pore pressure of saturated regions, or null (dry scenes)
   Vec       f_pore = nullptr;   // + alpha Q^T p, the pore pressure's force on the skeleton (saturated scenes only)
+  NodalAcceleration nodal;      // a* from the force parts, and where f_ext can be nonzero
 };
 
 PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);
