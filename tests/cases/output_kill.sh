@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Output that survives a kill (issue 9): the 2D site-response scene (3 s, ~3 s wall on one core,
+# Output that survives a kill (issue 9): the 2D site-response scene (10 s, ~4 s wall on one core,
 # 3 stations, a frame every 0.2 s) is run once to the end (F), then killed at a random moment
 # by SIGTERM (T) and by SIGKILL (K). Expected, from the writers' contract (stations and
 # energy.csv flushed at every output time, the XDMF index replaced after its datasets):
@@ -17,7 +17,7 @@
 set -eu
 . tests/tools/lib.sh
 # -energy_interval 1: this test reads the ledger at every step (row count, per-step rows).
-O="-options_file config/scenes/site_response_2d.yaml -ts_max_time 3 -output_interval 0.2 -progress_interval 100 -energy_interval 1"
+O="-options_file config/scenes/site_response_2d.yaml -ts_max_time 10 -output_interval 0.2 -progress_interval 100 -energy_interval 1"
 $SW $O -output_dir "$WORK/F" > "$WORK/F.log"
 for run in TERM KILL TERM2; do
   sig=${run%2}

@@ -10,7 +10,7 @@
 # volume output's pore pressure frames with zero difference.
 set -eu
 . tests/tools/lib.sh
-O="-options_file config/scenes/saturated_site.yaml -input_wave p -ts_max_time 0.8 -output_interval 0.2 -progress_interval 100"
+O="-energy_interval 1 -options_file config/scenes/saturated_site.yaml -input_wave p -ts_max_time 0.8 -output_interval 0.2 -progress_interval 100"
 for ranks in 1 2; do
   R="$MPIEXEC -n $ranks"
   $R $SW $O -output_dir "$WORK/C$ranks" > "$WORK/C$ranks.log"
@@ -49,7 +49,7 @@ PY
 done
 # The same with the diffusion sub-cycled (k = 0.3 m/s: 93 sub-steps per step), where the
 # restart's first step must repeat the diffusion part with the checkpoint's step, 1 rank.
-O="-options_file config/scenes/saturated_site.yaml -input_wave p -ts_max_time 0.8 -output_interval 0.2 -progress_interval 100000 -material_soil_hydraulic_conductivity 0.3"
+O="-energy_interval 1 -options_file config/scenes/saturated_site.yaml -input_wave p -ts_max_time 0.8 -output_interval 0.2 -progress_interval 100000 -material_soil_hydraulic_conductivity 0.3"
 $SW $O -output_dir "$WORK/SC" > "$WORK/SC.log"
 grep "sub-cycled" "$WORK/SC.log"
 steps=$(tail -1 "$WORK/SC/energy.csv" | cut -d, -f1)
