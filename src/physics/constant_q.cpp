@@ -1,5 +1,7 @@
 #include "slipwave/physics/constant_q.hpp"
 
+#include "slipwave/physics/dense_solve.hpp"
+
 #include <cmath>
 
 namespace slipwave::physics {
@@ -25,25 +27,8 @@ ConstantQModel constantQFit(double damping_ratio, double f_min, double f_max, in
       for (int j = 0; j < n; ++j) ata[i * n + j] += row[i] * row[j];
     }
   }
-  // Gaussian elimination with partial pivoting (n <= 8).
-  for (int c = 0; c < n; ++c) {
-    int p = c;
-    for (int i = c + 1; i < n; ++i)
-      if (std::fabs(ata[i * n + c]) > std::fabs(ata[p * n + c])) p = i;
-    for (int j = 0; j < n; ++j) std::swap(ata[c * n + j], ata[p * n + j]);
-    std::swap(atb[c], atb[p]);
-    for (int i = c + 1; i < n; ++i) {
-      const double f = ata[i * n + c] / ata[c * n + c];
-      for (int j = c; j < n; ++j) ata[i * n + j] -= f * ata[c * n + j];
-      atb[i] -= f * atb[c];
-    }
-  }
   model.weight.assign(n, 0.0);
-  for (int i = n - 1; i >= 0; --i) {
-    double s = atb[i];
-    for (int j = i + 1; j < n; ++j) s -= ata[i * n + j] * model.weight[j];
-    model.weight[i] = s / ata[i * n + i];
-  }
+  solveDense(n, ata.data(), atb.data(), model.weight.data());
   return model;
 }
 

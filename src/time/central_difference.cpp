@@ -2,6 +2,8 @@
 
 #include <petsc/private/tsimpl.h>
 
+#include "slipwave/physics/dense_solve.hpp"
+
 #include <utility>
 #include <vector>
 
@@ -24,37 +26,19 @@ struct CentralDifference {
 CentralDifference *data(TS ts) { return static_cast<CentralDifference *>(ts->data); }
 
 // Solves (I + s D_i) v_i = r_i for node block i (s = h/2), and forms a_i = a*_i - D_i v_i in
-// place (a holds a* on entry). Blocks are at most 3x3: Gaussian elimination with partial
-// pivoting in place.
+// place (a holds a* on entry). Blocks are at most 3x3.
 void solveDampedBlock(PetscInt bs, const PetscScalar *D, PetscReal s, PetscScalar *vi, PetscScalar *ai) {
-  double A[9], r[3], x[3];
-  for (PetscInt i = 0; i < bs; ++i) {
+  const int n = (int)bs;
+  double    A[9], r[3], x[3];
+  for (int i = 0; i < n; ++i) {
     r[i] = vi[i];
-    for (PetscInt j = 0; j < bs; ++j) A[i * bs + j] = (i == j ? 1.0 : 0.0) + s * D[i * bs + j];
+    for (int j = 0; j < n; ++j) A[i * n + j] = (i == j ? 1.0 : 0.0) + s * D[i * n + j];
   }
-  for (PetscInt c = 0; c < bs; ++c) {
-    PetscInt p = c;
-    for (PetscInt i = c + 1; i < bs; ++i)
-      if (PetscAbsReal(A[i * bs + c]) > PetscAbsReal(A[p * bs + c])) p = i;
-    if (p != c) {
-      for (PetscInt j = 0; j < bs; ++j) std::swap(A[c * bs + j], A[p * bs + j]);
-      std::swap(r[c], r[p]);
-    }
-    for (PetscInt i = c + 1; i < bs; ++i) {
-      const double f = A[i * bs + c] / A[c * bs + c];
-      for (PetscInt j = c; j < bs; ++j) A[i * bs + j] -= f * A[c * bs + j];
-      r[i] -= f * r[c];
-    }
-  }
-  for (PetscInt i = bs - 1; i >= 0; --i) {
-    double sum = r[i];
-    for (PetscInt j = i + 1; j < bs; ++j) sum -= A[i * bs + j] * x[j];
-    x[i] = sum / A[i * bs + i];
-  }
-  for (PetscInt i = 0; i < bs; ++i) {
+  physics::solveDense(n, A, r, x);
+  for (int i = 0; i < n; ++i) {
     vi[i] = x[i];
     double Dv = 0;
-    for (PetscInt j = 0; j < bs; ++j) Dv += D[i * bs + j] * x[j];
+    for (int j = 0; j < n; ++j) Dv += D[i * n + j] * x[j];
     ai[i] -= Dv;
   }
 }
