@@ -4,37 +4,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "slipwave/physics/dense_solve.hpp"
 #include "slipwave/physics/fft.hpp"
 
 namespace slipwave::physics {
-namespace {
-
-// Solves A x = b in place (A n x n row-major) by Gaussian elimination with partial pivoting.
-void solveDense(std::vector<Complex> &A, std::vector<Complex> &b) {
-  const size_t n = b.size();
-  for (size_t k = 0; k < n; ++k) {
-    size_t piv = k;
-    for (size_t i = k + 1; i < n; ++i)
-      if (std::abs(A[i * n + k]) > std::abs(A[piv * n + k])) piv = i;
-    if (piv != k) {
-      for (size_t j = 0; j < n; ++j) std::swap(A[k * n + j], A[piv * n + j]);
-      std::swap(b[k], b[piv]);
-    }
-    for (size_t i = k + 1; i < n; ++i) {
-      const Complex f = A[i * n + k] / A[k * n + k];
-      if (f == 0.0) continue;
-      for (size_t j = k; j < n; ++j) A[i * n + j] -= f * A[k * n + j];
-      b[i] -= f * b[k];
-    }
-  }
-  for (size_t k = n; k-- > 0;) {
-    Complex s = b[k];
-    for (size_t j = k + 1; j < n; ++j) s -= A[k * n + j] * b[j];
-    b[k] = s / A[k * n + k];
-  }
-}
-
-} // namespace
 
 std::string PlaneWaveLayered::setup(const LayeredSite &site, PlaneWaveType wave, double angle_deg) {
   char buf[200];
@@ -147,7 +120,7 @@ std::vector<Complex> PlaneWaveLayered::amplitudes(double w) const {
         A[row * n + (j + 1) * nw + k] = -stateRow(waveOf(j + 1, k), r) * (halfspace ? Complex(1) : phase(j + 1, k, top_[j + 1]));
       if (halfspace) b[row] += stateRow(wave(N, wave_ != PlaneWaveType::P, false, w), r);
     }
-  solveDense(A, b);
+  solveDense((int)b.size(), A.data(), b.data(), b.data());
   return b;
 }
 
