@@ -70,6 +70,7 @@ const Rule kRules[] = {
   {"-mesh_file",               Kind::File, 1, 1, kAny, "a readable Gmsh .msh file"},
   {"-mesh_build",              Kind::Choice, 1, 1, kAny, "auto, serial, distributed (how a box mesh is built)"},
   {"-mesh_dim",                Kind::Int,  1, 1, closed(2, 3), "2 or 3"},
+  {"-element_degree",          Kind::Int,  1, 1, closed(1, 8), "1 to 8 (spectral elements; p > 1 on quadrilaterals and hexahedra only)"},
   {"-mesh_box_faces",          Kind::Int,  2, 3, closed(1, 1e8), "nx,ny[,nz] cells, each 1 to 1e8", 1},
   {"-mesh_box_lower",          Kind::Real, 2, 3, magnitude(1e8), "x,y[,z] with |x| <= 1e8 m", 1},
   {"-mesh_box_upper",          Kind::Real, 2, 3, magnitude(1e8), "x,y[,z] with |x| <= 1e8 m", 1},

@@ -2,10 +2,12 @@
 
 #include <climits>
 #include <cstdio>
+#include <functional>
 #include <string>
 
 #include "slipwave/core/option_choice.hpp"
 #include "slipwave/fem/cell_quality.hpp"
+#include "slipwave/mesh/spectral_layout.hpp"
 
 namespace slipwave::fem {
 namespace {
@@ -46,10 +48,12 @@ std::string describe(CellDefect d, const CellShapeQuality &q, const Thresholds &
   }
 }
 
-std::string coordinates(const BulkOperator &bulk, PetscInt c, PetscInt dim) {
+using CellCoordinates = std::function<const double *(PetscInt)>; // a cell's nodes in element-kernel order
+
+std::string coordinates(const double *cell, PetscInt nodes, PetscInt dim) {
   std::string text;
-  for (PetscInt a = 0; a < bulk.nodesPerCell(); ++a) {
-    const double *x = bulk.cellCoordinates(c) + a * dim;
+  for (PetscInt a = 0; a < nodes; ++a) {
+    const double *x = cell + a * dim;
     char          one[96];
     if (dim == 2) std::snprintf(one, sizeof one, "%s(%g, %g)", a ? " " : "", x[0], x[1]);
     else std::snprintf(one, sizeof one, "%s(%g, %g, %g)", a ? " " : "", x[0], x[1], x[2]);
@@ -58,10 +62,8 @@ std::string coordinates(const BulkOperator &bulk, PetscInt c, PetscInt dim) {
   return text;
 }
 
-} // namespace
-
-PetscErrorCode CellQualityCheck(DM dm, const BulkOperator &bulk, const std::vector<PetscInt> &serial_cell) {
-  MPI_Comm    comm = PetscObjectComm((PetscObject)dm);
+// The check of ncell cells of one shape; serial_cell names them in the message.
+PetscErrorCode checkCells(MPI_Comm comm, CellShape shape, PetscInt ncell, const CellCoordinates &cell_coords, const std::vector<PetscInt> &serial_cell) {
   Thresholds  t;
   PetscMPIInt rank;
   PetscFunctionBeginUser;
@@ -75,8 +77,8 @@ PetscErrorCode CellQualityCheck(DM dm, const BulkOperator &bulk, const std::vect
   } first = {LONG_MAX, rank};
   std::string message;
   long        distorted = 0;
-  for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
-    const CellShapeQuality q = cellShapeQuality(bulk.shape(), bulk.cellCoordinates(c));
+  for (PetscInt c = 0; c < ncell; ++c) {
+    const CellShapeQuality q = cellShapeQuality(shape, cell_coords(c));
     const CellDefect       d = cellDefect(q, t.max_aspect, t.min_jacobian_ratio);
     if (d == CellDefect::None || (d == CellDefect::Distorted && t.mode == kOff)) continue;
     distorted += d == CellDefect::Distorted;
@@ -84,7 +86,7 @@ PetscErrorCode CellQualityCheck(DM dm, const BulkOperator &bulk, const std::vect
     const long key            = rank_of_defect * (long)1e15 + serial_cell[c];
     if (key < first.key) {
       first.key = key;
-      message   = "cell " + std::to_string(serial_cell[c]) + " at " + coordinates(bulk, c, bulk.dimension()) + " " + describe(d, q, t);
+      message   = "cell " + std::to_string(serial_cell[c]) + " at " + coordinates(cell_coords(c), cellNodeCount(shape), cellDimension(shape)) + " " + describe(d, q, t);
     }
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_LONG_INT, MPI_MINLOC, comm));
@@ -98,6 +100,38 @@ PetscErrorCode CellQualityCheck(DM dm, const BulkOperator &bulk, const std::vect
   PetscCheck(!fatal, comm, PETSC_ERR_USER_INPUT, "mesh: %s; allowed: cells with positive Jacobians at every corner%s", text,
              first.key < 2 * (long)1e15 ? "" : ", or -mesh_quality_check warn to run with distorted cells");
   PetscCall(PetscPrintf(comm, "warning: mesh: %ld distorted cell(s), the first: %s\n", distorted, text));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode CellQualityCheck(DM dm, const BulkOperator &bulk, const std::vector<PetscInt> &serial_cell) {
+  PetscFunctionBeginUser;
+  PetscCall(checkCells(PetscObjectComm((PetscObject)dm), bulk.shape(), bulk.cellCount(), [&](PetscInt c) { return bulk.cellCoordinates(c); }, serial_cell));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CellQualityCheckSerialMesh(DM dm) {
+  PetscInt dim, c_start, c_end;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(dm, &dim));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
+  const PetscInt nen = dim == 2 ? 4 : 8;
+  // The element frame is lexicographic; the kernels go around each face.
+  const PetscInt        kernel_order[8] = {0, 1, 3, 2, 4, 5, 7, 6};
+  std::vector<double>   coords((size_t)(c_end - c_start) * nen * dim);
+  std::vector<PetscInt> serial_cell(c_end - c_start);
+  mesh::VertexCoordinates vc;
+  PetscCall(vc.Open(dm));
+  for (PetscInt c = c_start; c < c_end; ++c) {
+    PetscInt lex[8];
+    PetscCall(mesh::SpectralCellFrame(dm, vc, c, lex));
+    for (PetscInt a = 0; a < nen; ++a) PetscCall(vc.Get(lex[kernel_order[a]], &coords[((size_t)(c - c_start) * nen + a) * dim]));
+    serial_cell[c - c_start] = c - c_start;
+  }
+  PetscCall(vc.Close());
+  PetscCall(checkCells(PetscObjectComm((PetscObject)dm), dim == 2 ? CellShape::Quad4 : CellShape::Hex8, c_end - c_start,
+                       [&](PetscInt c) { return &coords[(size_t)c * nen * dim]; }, serial_cell));
   PetscFunctionReturn(0);
 }
 

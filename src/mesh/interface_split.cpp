@@ -328,6 +328,22 @@ PetscErrorCode copyLabels(const SerialMesh &m, const SplitPlan &plan, const Cell
   PetscCall(DMCreateLabel(dm, kRegionLabel));
   PetscCall(DMGetLabel(dm, kRegionLabel, &new_region));
   for (PetscInt c = 0; c < (m.rank == 0 ? list.ncells : 0); ++c) PetscCall(DMLabelSetValue(new_region, nc_start + c, list.cell_region[c]));
+  // The sub-cells of spectral elements (spectral_subdivision.hpp) keep their element and
+  // position: cells keep their numbers.
+  for (const char *name : {kSpectralElementLabel, kSpectralPositionLabel}) {
+    DMLabel old_label, new_label;
+    PetscCall(DMGetLabel(m.dm, name, &old_label));
+    PetscInt has = old_label != nullptr;
+    PetscCallMPI(MPI_Bcast(&has, 1, MPIU_INT, 0, m.comm));
+    if (!has) continue;
+    PetscCall(DMCreateLabel(dm, name));
+    PetscCall(DMGetLabel(dm, name, &new_label));
+    for (PetscInt c = 0; c < (m.rank == 0 ? list.ncells : 0); ++c) {
+      PetscInt value;
+      PetscCall(DMLabelGetValue(old_label, m.c_start + c, &value));
+      PetscCall(DMLabelSetValue(new_label, nc_start + c, value));
+    }
+  }
   for (const std::string &name : boundaries) {
     DMLabel old_label, new_label;
     PetscCall(DMCreateLabel(dm, name.c_str()));

@@ -8,6 +8,9 @@
 #include "slipwave/mesh/mesh_options.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
 #include "slipwave/mesh/partition_metis.hpp"
+#include "slipwave/mesh/spectral_subdivision.hpp"
+#include "slipwave/fem/cell_quality_check.hpp"
+#include "slipwave/fem/gll_basis.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -134,12 +137,12 @@ PetscErrorCode labelBoxSides(DM dm, const BoxSpec &box, std::vector<std::string>
 
 // Builds `built` (the requested box, or its coarse version when refined later); the memory
 // check and the description are those of the requested box.
-PetscErrorCode createBox(MPI_Comm comm, PetscInt dim, DM *dm, const BoxSpec &built, const BoxSpec &requested, std::string *source) {
+PetscErrorCode createBox(MPI_Comm comm, PetscInt dim, PetscInt degree, DM *dm, const BoxSpec &built, const BoxSpec &requested, std::string *source) {
   double      vertices = 1;
   std::string faces    = "-mesh_box_faces = ";
   PetscFunctionBeginUser;
   for (PetscInt d = 0; d < dim; ++d) {
-    vertices *= requested.faces[d] + 1.0;
+    vertices *= requested.faces[d] * (double)degree + 1.0; // GLL nodes
     faces += (d ? "," : "") + std::to_string(requested.faces[d]);
   }
   bool whole = true; // the serial build holds the whole box on rank 0
@@ -302,7 +305,7 @@ PetscErrorCode createLabelledBox(MPI_Comm comm, PetscInt levels, MeshOptions *o,
   desc->regions = o->regions;
   desc->boundaries.clear();
   std::vector<std::vector<PetscReal>> bounds = o->region_boxes;
-  PetscCall(createBox(comm, desc->dim, dm, built, o->box, &desc->source));
+  PetscCall(createBox(comm, desc->dim, o->degree, dm, built, o->box, &desc->source));
   PetscCall(labelBoxRegions(comm, *dm, desc->regions, bounds, built));
   PetscCall(removeVoidRegions(comm, dm, o->voids, &desc->regions, &bounds, built));
   PetscCall(labelBoxSides(*dm, built, &desc->boundaries));
@@ -317,7 +320,10 @@ PetscErrorCode createBoxForBuild(MPI_Comm comm, MeshOptions *o, DM *serial, Mesh
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   std::vector<std::vector<PetscReal>> cuts = o->region_boxes; // voids are among the regions
-  *levels = BoxRefinementLevels(desc->dim, o->box, cuts, size, o->build);
+  PetscCheck(o->degree == 1 || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
+             "-mesh_build = distributed with -element_degree = %" PetscInt_FMT "; allowed: auto or serial (spectral elements are subdivided on the serial mesh)", o->degree);
+  // Spectral elements are subdivided on the serial mesh: auto builds serially.
+  *levels = o->degree > 1 ? 0 : BoxRefinementLevels(desc->dim, o->box, cuts, size, o->build);
   PetscCheck(*levels > 0 || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
              "-mesh_build = distributed, but the box cannot be refined from a coarser one (every -mesh_box_faces entry even, region box bounds on the coarse grid, at "
              "least one coarse cell per rank); allowed: auto or serial");
@@ -372,6 +378,24 @@ PetscErrorCode recordSerialCells(DM dm, PetscSF migration, std::vector<PetscInt>
   PetscFunctionReturn(0);
 }
 
+// Spectral elements of degree p > 1 need the tensor-product cells (rank 0 holds them all).
+PetscErrorCode checkSpectralCells(MPI_Comm comm, DM serial, PetscInt degree) {
+  PetscInt c_start, c_end;
+  PetscInt linear_only = -1; // the cell type of rank 0's mesh where it is a simplex
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetHeightStratum(serial, 0, &c_start, &c_end));
+  if (c_end > c_start) {
+    DMPolytopeType ct;
+    PetscCall(DMPlexGetCellType(serial, c_start, &ct));
+    if (ct == DM_POLYTOPE_TRIANGLE || ct == DM_POLYTOPE_TETRAHEDRON) linear_only = (PetscInt)ct;
+  }
+  PetscCallMPI(MPI_Bcast(&linear_only, 1, MPIU_INT, 0, comm));
+  PetscCheck(linear_only < 0, comm, PETSC_ERR_USER_INPUT,
+             "-element_degree = %" PetscInt_FMT " with a mesh of %s cells; allowed: 1 (triangles and tetrahedra are linear only), or 1 to %d with quadrilaterals or hexahedra", degree,
+             DMPolytopeTypes[linear_only < 0 ? 0 : linear_only], fem::kMaxSpectralDegree);
+  PetscFunctionReturn(0);
+}
+
 // The reader holds the whole mesh on rank 0; what follows (split, distribution, operators)
 // needs the estimate's memory.
 PetscErrorCode checkMemoryOfFile(MPI_Comm comm, DM serial, PetscInt dim, const std::string &file) {
@@ -408,6 +432,15 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
     PetscCall(createBoxForBuild(comm, &o, &serial, desc, &levels));
   }
   PetscCall(checkCellTypes(comm, serial));
+  desc->degree = o.degree;
+  DM parent    = nullptr; // spectral elements: the mesh of whole elements, partitioned for the sub-cells
+  if (o.degree > 1) {
+    PetscCall(checkSpectralCells(comm, serial, o.degree));
+    // The elements' shape, not their GLL sub-cells' (whose aspect comes from the GLL spacing).
+    PetscCall(fem::CellQualityCheckSerialMesh(serial));
+    parent = serial;
+    PetscCall(SpectralSubdivideSerialMesh(parent, o.degree, desc->boundaries, &serial));
+  }
   if (!desc->interfaces.empty()) {
     DM split;
     PetscCall(InterfaceSplitSerialMesh(serial, desc->regions, desc->boundaries, desc->interfaces, &split));
@@ -417,7 +450,7 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
 
   PetscPartitioner part;
   DM               dist = nullptr;
-  PetscCall(DMPlexGetPartitioner(serial, &part));
+  PetscCall(DMPlexGetPartitioner(parent ? parent : serial, &part));
   // METIS is the default (this PETSc has none of its own; slipwave registers it, here, so every
   // program that builds a mesh has it); the user can still pick another with
   // -petscpartitioner_type.
@@ -428,6 +461,10 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   PetscPartitionerType part_type;
   PetscCall(PetscPartitionerGetType(part, &part_type));
   desc->partitioner = part_type;
+  if (parent) {
+    PetscCall(SpectralPartitionWholeElements(parent, part, o.degree, serial));
+    PetscCall(DMDestroy(&parent));
+  }
   PetscSF migration = nullptr;
   PetscCall(DMPlexDistribute(serial, 0, &migration, &dist));
   if (dist) {

@@ -1,5 +1,6 @@
 #include "slipwave/mesh/mesh_options.hpp"
 
+#include "slipwave/fem/gll_basis.hpp"
 #include "slipwave/mesh/box_refinement.hpp"
 
 #include <algorithm>
@@ -146,6 +147,9 @@ PetscErrorCode MeshOptionsRead(MPI_Comm comm, PetscInt *dim, MeshOptions *o) {
                               "MeshCreate", kMeshBuildNames, 3, kMeshBuildNames[o->build], &o->build, &build_set));
   PetscCheck(!(build_set && from_file && o->build == kMeshBuildDistributed), comm, PETSC_ERR_USER_INPUT,
              "-mesh_build = distributed with -mesh_file = %s; allowed: auto or serial (a Gmsh file is read, not built by refinement)", file);
+  PetscCall(PetscOptionsRangeInt("-element_degree",
+                                 "degree p of the spectral elements (GLL nodes), 1 to 8; p > 1 needs quadrilaterals or hexahedra (triangles and tetrahedra are linear only)",
+                                 "MeshCreate", o->degree, &o->degree, nullptr, 1, fem::kMaxSpectralDegree));
   if (!from_file)
     PetscCall(readNameList(PetscOptionsObject, "-void_regions", "box regions (from -regions) whose cells are removed from the mesh, e.g. the space beside a footing",
                            kMaxRegions, &o->voids, nullptr, nullptr));

@@ -17,4 +17,10 @@ namespace slipwave::fem {
 // serial_cell: MeshDescription::serial_cell.
 PetscErrorCode CellQualityCheck(DM dm, const BulkOperator &bulk, const std::vector<PetscInt> &serial_cell);
 
+// The same for the quadrilaterals or hexahedra of a serial mesh (all cells on rank 0; the
+// message numbers them from 0): spectral elements are judged by their corners before they
+// are subdivided into GLL sub-cells (mesh_builder.cpp), whose aspect ratios come from the
+// GLL spacing by design. Collective.
+PetscErrorCode CellQualityCheckSerialMesh(DM dm);
+
 } // namespace slipwave::fem

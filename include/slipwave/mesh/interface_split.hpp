@@ -10,7 +10,8 @@
 //   interface_<name>_side   vertex, value 0 on the soil copy, 1 on the structure copy
 //   interface_<name>        the soil-side faces of the interface (value 1)
 // Region and boundary labels of the input mesh are carried over (faces of the structure
-// side that lie on a named boundary keep that name). Only those: other labels of the input
+// side that lie on a named boundary keep that name), and the spectral sub-cell labels
+// (labels.hpp) where the mesh has them. Only those: other labels of the input
 // (PETSc's "Cell Sets", "Face Sets", ...) are not. Boundary labels are carried on faces only
 // (height 1), with their values; a labelled face that the split cuts in two (an interior
 // Gmsh group along the interface) is labelled on both sides.

@@ -5,6 +5,10 @@
 //   "region"          (kRegionLabel, mesh/labels.hpp) every cell, value = index of its region in MeshDescription::regions
 //   <boundary name>   faces (height 1), value 1: box sides left/right/bottom/top(/front/back),
 //                     or the Gmsh physical groups of dimension dim-1
+//   spectral_element, spectral_position   (degree > 1, labels.hpp) every GLL sub-cell
+// At -element_degree p > 1 the cells are spectral elements subdivided into GLL sub-cells
+// (spectral_subdivision.hpp; SpectralLayoutOf groups them back), partitioned whole, and
+// serial_cell numbers the sub-cells (element e's sub-cells are e p^dim .. e p^dim + p^dim - 1).
 // The vertical axis is the last coordinate (y in 2D, z in 3D).
 #pragma once
 #include <petscdmplex.h>
@@ -19,6 +23,7 @@ namespace slipwave::mesh {
 
 struct MeshDescription {
   PetscInt                 dim = 2;
+  PetscInt                 degree = 1; // -element_degree: each cell p^dim GLL sub-cells (spectral_subdivision.hpp)
   std::vector<std::string> regions;    // region names, in label-value order
   std::vector<std::string> boundaries; // boundary label names
   std::string              source;     // "box NxM" or the file name, for the report

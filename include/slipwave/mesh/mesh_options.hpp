@@ -3,6 +3,7 @@
 //   -mesh_file <Gmsh .msh>, -mesh_dim 2|3, -regions a,b,... (1 to kMaxRegions names);
 //   box meshes only: -mesh_box_faces/_lower/_upper, -region_<r>_box, -void_regions;
 //   -mesh_build auto|serial|distributed (box_refinement.hpp);
+//   -element_degree 1..8 (spectral elements on quadrilaterals / hexahedra, spectral_subdivision.hpp);
 //   -interfaces n,... with -interface_<n>_regions soil,structure and -interface_<n>_faces.
 // The law of each interface is the interface layer's (interface/interface_options.hpp).
 #pragma once
@@ -31,6 +32,7 @@ struct MeshOptions {
   std::vector<std::string>            voids;
   std::vector<InterfaceSpec>          interfaces;
   PetscInt                            build = 0; // -mesh_build: MeshBuild (box_refinement.hpp)
+  PetscInt                            degree = 1; // -element_degree: spectral elements of this degree (spectral_subdivision.hpp)
 };
 
 // Reads and checks the options above; *dim holds the default dimension on entry and the one
