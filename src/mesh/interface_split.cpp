@@ -1,5 +1,6 @@
 #include "slipwave/mesh/interface_split.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
+#include "slipwave/mesh/spectral_face_weights.hpp"
 #include "slipwave/mesh/vertex_coordinates.hpp"
 
 #include "slipwave/fem/element_kernels.hpp"
@@ -467,6 +468,10 @@ PetscErrorCode InterfacePairsBuild(DM dm, const InterfaceSpec &spec, InterfacePa
   auto                  nsum = [&](PetscInt p) { return &geo[(size_t)p * (2 * dim + 1) + 1]; };
   auto                  xp   = [&](PetscInt p) { return &geo[(size_t)p * (2 * dim + 1) + 1 + dim]; };
 
+  const SpectralLayout *spectral; // degree > 1: GLL face weights of the elements' sides
+  PetscCall(SpectralLayoutOf(dm, &spectral));
+  PetscInt c_start;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, nullptr));
   VertexCoordinates coords;
   PetscCall(coords.Open(dm));
 
@@ -514,7 +519,8 @@ PetscErrorCode InterfacePairsBuild(DM dm, const InterfaceSpec &spec, InterfacePa
     double x[fem::kMaxFaceNodes * 3], w[fem::kMaxFaceNodes], n[3], xc[3], xf[3], dot = 0;
     for (PetscInt a = 0; a < nfv; ++a) PetscCall(coords.Get(fverts[a], &x[a * dim]));
     const fem::FaceShape shape = dim == 2 ? fem::FaceShape::Seg2 : (nfv == 3 ? fem::FaceShape::Tri3 : fem::FaceShape::Quad4);
-    fem::faceLumpedWeights(shape, (int)dim, x, w);
+    if (spectral && spectral->degree > 1) PetscCall(SpectralFaceWeights(*spectral, coords, supp[0] - c_start, nfv, fverts.data(), w));
+    else fem::faceLumpedWeights(shape, (int)dim, x, w);
     fem::faceNormal(shape, (int)dim, x, n);
     // Outward from the soil cell = towards the structure (InterfacePairs::normal).
     PetscCall(MeshPointCentroid(dm, supp[0], xc));

@@ -3,6 +3,7 @@
 #include "slipwave/fem/element_kernels.hpp"
 #include "slipwave/mesh/labels.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
+#include "slipwave/mesh/spectral_face_weights.hpp"
 #include "slipwave/mesh/vertex_coordinates.hpp"
 
 namespace slipwave::model {
@@ -20,6 +21,10 @@ PetscErrorCode BoundaryFacesGet(DM dm, const std::string &name, std::vector<Boun
   PetscCall(DMGetDimension(dm, &dim));
   PetscCall(DMPlexGetHeightStratum(dm, 1, &f_start, &f_end));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &v_start, &v_end));
+  const mesh::SpectralLayout *spectral; // degree > 1: GLL face weights of the elements' sides
+  PetscCall(mesh::SpectralLayoutOf(dm, &spectral));
+  PetscInt c_start;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, nullptr));
   mesh::VertexCoordinates coords;
   PetscCall(coords.Open(dm));
 
@@ -51,10 +56,11 @@ PetscErrorCode BoundaryFacesGet(DM dm, const std::string &name, std::vector<Boun
       double x[fem::kMaxFaceNodes * 3];
       for (PetscInt a = 0; a < face.nvert; ++a) PetscCall(coords.Get(face.vertices[a], &x[a * dim]));
       const fem::FaceShape shape = dim == 2 ? fem::FaceShape::Seg2 : (face.nvert == 3 ? fem::FaceShape::Tri3 : fem::FaceShape::Quad4);
-      fem::faceLumpedWeights(shape, (int)dim, x, face.weights);
-      fem::faceNormal(shape, (int)dim, x, face.normal);
       const PetscInt *support;
       PetscCall(DMPlexGetSupport(dm, f, &support));
+      if (spectral && spectral->degree > 1) PetscCall(mesh::SpectralFaceWeights(*spectral, coords, support[0] - c_start, face.nvert, face.vertices, face.weights));
+      else fem::faceLumpedWeights(shape, (int)dim, x, face.weights);
+      fem::faceNormal(shape, (int)dim, x, face.normal);
       double xc[3], xf[3], dot = 0;
       PetscCall(mesh::MeshPointCentroid(dm, support[0], xc));
       PetscCall(mesh::MeshPointCentroid(dm, f, xf));

@@ -50,7 +50,7 @@ PetscErrorCode InterfaceSplitSerialMesh(DM serial, const std::vector<std::string
 // set). Each pair is owned by exactly one rank (the owner of its soil vertex); the tables list
 // this rank's pairs. Geometry is consistent with the element's lumped face integration:
 // area = sum over the soil-side faces around the pair of ∫ N_a dA (a length per unit
-// thickness in 2D), normal = the normalised sum of those weights times the outward normal of
+// thickness in 2D; spectral elements: the GLL face weights, spectral_face_weights.hpp), normal = the normalised sum of those weights times the outward normal of
 // the soil cells (from the soil into the structure).
 struct InterfacePairs {
   PetscInt              n_global = 0;
