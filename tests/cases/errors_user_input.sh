@@ -71,6 +71,8 @@ gmsh_hex() {
   printf '$Elements\n1\n1 5 2 1 1 1 2 3 4 5 6 7 8\n$EndElements\n'
 }
 gmsh_hex -1 1 > "$tmp/hex_inverted.msh"
+# One triangle in the physical group "soil" (for -element_degree > 1, which needs quads/hexes).
+printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n2 1 "soil"\n$EndPhysicalNames\n$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n' > "$tmp/one_tri.msh"
 gmsh_hex 0 0 > "$tmp/hex_flat.msh"
 # 151 stations at 2 coordinates each: 302 values, beyond the 300 -station_coordinates holds.
 stations151=$(seq 1 151 | awk '{printf "%s0.5,%g", (NR > 1 ? "," : ""), 0.5 + 0.5 * $1}')

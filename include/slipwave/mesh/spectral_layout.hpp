@@ -26,7 +26,7 @@ struct SpectralLayout {
   std::vector<PetscInt> element_nodes; // nelem * (p+1)^dim DM vertices, lexicographic (x fastest)
   std::vector<PetscInt> element_cells; // nelem * p^dim DM cells (the sub-cells), lexicographic
   std::vector<PetscInt> element_region; // per element: its "region" label value
-  std::vector<PetscInt> element_id;    // per element: its number in the serial mesh (spectral_element label; the cell number at p = 1)
+  std::vector<PetscInt> element_id;    // per element: its number in the serial mesh (spectral_element label); at p = 1 the local cell
   std::vector<PetscInt> cell_element;  // per local DM cell (c - c_start): its element
   std::vector<PetscInt> cell_position; // per local DM cell: its lexicographic index in the element
 };
