@@ -329,9 +329,9 @@ PetscErrorCode copyLabels(const SerialMesh &m, const SplitPlan &plan, const Cell
   PetscCall(DMCreateLabel(dm, kRegionLabel));
   PetscCall(DMGetLabel(dm, kRegionLabel, &new_region));
   for (PetscInt c = 0; c < (m.rank == 0 ? list.ncells : 0); ++c) PetscCall(DMLabelSetValue(new_region, nc_start + c, list.cell_region[c]));
-  // The sub-cells of spectral elements (spectral_subdivision.hpp) keep their element and
-  // position: cells keep their numbers.
-  for (const char *name : {kSpectralElementLabel, kSpectralPositionLabel}) {
+  // The sub-cells of spectral elements (spectral_subdivision.hpp) keep their position in
+  // their element: cells keep their numbers.
+  for (const char *name : {kSpectralPositionLabel}) {
     DMLabel old_label, new_label;
     PetscCall(DMGetLabel(m.dm, name, &old_label));
     PetscInt has = old_label != nullptr;

@@ -3,7 +3,6 @@
 #include "slipwave/mesh/labels.hpp"
 
 #include <cmath>
-#include <map>
 
 namespace slipwave::mesh {
 namespace {
@@ -83,73 +82,124 @@ PetscErrorCode SpectralCellFrame(DM dm, const VertexCoordinates &coords, PetscIn
   PetscFunctionReturn(0);
 }
 
+// The cell across the face of c's frame at axis d = 1 (-1 if none: a boundary).
+static PetscErrorCode frameNeighbour(DM dm, PetscInt c, const PetscInt *lex, PetscInt ncorner, PetscInt d, PetscInt v_start, PetscInt v_end, PetscInt *neighbour) {
+  const PetscInt *cone;
+  PetscInt        ncone;
+  PetscFunctionBeginUser;
+  *neighbour = -1;
+  PetscCall(DMPlexGetConeSize(dm, c, &ncone));
+  PetscCall(DMPlexGetCone(dm, c, &cone));
+  for (PetscInt q = 0; q < ncone && *neighbour < 0; ++q) {
+    PetscInt *closure = nullptr, nclosure;
+    bool      on_side = true;
+    PetscCall(DMPlexGetTransitiveClosure(dm, cone[q], PETSC_TRUE, &nclosure, &closure));
+    for (PetscInt i = 0; i < nclosure; ++i) {
+      const PetscInt v = closure[2 * i];
+      if (v < v_start || v >= v_end) continue;
+      bool found = false;
+      for (PetscInt k = 0; k < ncorner; ++k) found = found || (lex[k] == v && ((k >> d) & 1));
+      on_side = on_side && found;
+    }
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, cone[q], PETSC_TRUE, &nclosure, &closure));
+    if (!on_side) continue;
+    const PetscInt *supp;
+    PetscInt        nsupp;
+    PetscCall(DMPlexGetSupportSize(dm, cone[q], &nsupp));
+    PetscCall(DMPlexGetSupport(dm, cone[q], &supp));
+    for (PetscInt k = 0; k < nsupp; ++k)
+      if (supp[k] != c) *neighbour = supp[k];
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode SpectralLayoutBuild(DM dm, PetscInt degree, SpectralLayout *L) {
-  PetscInt dim, c_start, c_end;
-  DMLabel  region, element = nullptr, position = nullptr;
+  PetscInt dim, c_start, c_end, v_start, v_end;
+  DMLabel  region, position = nullptr;
   PetscFunctionBeginUser;
   PetscCall(DMGetDimension(dm, &dim));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &v_start, &v_end));
   PetscCall(DMGetLabel(dm, kRegionLabel, &region));
   if (degree > 1) {
-    PetscCall(DMGetLabel(dm, kSpectralElementLabel, &element));
     PetscCall(DMGetLabel(dm, kSpectralPositionLabel, &position));
-    PetscCheck(element && position, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "SpectralLayoutBuild: degree %" PetscInt_FMT " but the mesh has no %s/%s labels (not subdivided)", degree,
-               kSpectralElementLabel, kSpectralPositionLabel);
+    PetscCheck(position, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "SpectralLayoutBuild: degree %" PetscInt_FMT " but the mesh has no %s label (not subdivided)", degree,
+               kSpectralPositionLabel);
   }
-  const PetscInt ncell = c_end - c_start, p = degree, nsub = ipow(p, dim), nnode = ipow(p + 1, dim);
+  const PetscInt ncell = c_end - c_start, p = degree, nsub = ipow(p, dim), nnode = ipow(p + 1, dim), ncorner = dim == 2 ? 4 : 8;
   *L        = SpectralLayout();
   L->degree = degree;
   L->dim    = dim;
   L->cell_element.assign(ncell, -1);
-  L->cell_position.assign(ncell, 0);
-  // Elements in increasing serial number: the same order on any rank that holds them.
-  std::map<PetscInt, PetscInt> local_of;
-  for (PetscInt c = c_start; c < c_end; ++c) {
-    PetscInt id = c, pos = 0;
-    if (element) {
-      PetscCall(DMLabelGetValue(element, c, &id));
-      PetscCall(DMLabelGetValue(position, c, &pos));
-      PetscCheck(id >= 0 && pos >= 0 && pos < nsub, PETSC_COMM_SELF, PETSC_ERR_PLIB, "SpectralLayoutBuild: cell %" PetscInt_FMT " has element %" PetscInt_FMT " position %" PetscInt_FMT, c, id, pos);
-    }
-    local_of.emplace(id, 0);
-    L->cell_position[c - c_start] = pos;
-    L->cell_element[c - c_start]  = id; // serial number for now
+  L->cell_position.assign(ncell, degree > 1 ? -1 : 0);
+  // Positions stratum by stratum (a label lookup per cell would search every value).
+  for (PetscInt q = 0; position && q < nsub; ++q) {
+    IS              is;
+    PetscInt        n;
+    const PetscInt *points;
+    PetscCall(DMLabelGetStratumIS(position, q, &is));
+    if (!is) continue;
+    PetscCall(ISGetLocalSize(is, &n));
+    PetscCall(ISGetIndices(is, &points));
+    for (PetscInt i = 0; i < n; ++i)
+      if (points[i] >= c_start && points[i] < c_end) L->cell_position[points[i] - c_start] = q;
+    PetscCall(ISRestoreIndices(is, &points));
+    PetscCall(ISDestroy(&is));
   }
-  for (auto &kv : local_of) {
-    kv.second = L->nelem++;
-    L->element_id.push_back(kv.first);
-  }
-  L->element_cells.assign((size_t)L->nelem * nsub, -1);
-  L->element_nodes.assign((size_t)L->nelem * nnode, -1);
-  L->element_region.assign(L->nelem, -1);
-  VertexCoordinates coords;
+  std::vector<PetscInt> frames((size_t)ncell * 8, -1);
+  VertexCoordinates     coords;
   PetscCall(coords.Open(dm));
   for (PetscInt c = c_start; c < c_end; ++c) {
-    const PetscInt e = local_of[L->cell_element[c - c_start]], pos = L->cell_position[c - c_start];
-    L->cell_element[c - c_start] = e;
-    PetscCheck(L->element_cells[(size_t)e * nsub + pos] < 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "SpectralLayoutBuild: two cells at position %" PetscInt_FMT " of element %" PetscInt_FMT, pos,
-               L->element_id[e]);
-    L->element_cells[(size_t)e * nsub + pos] = c;
-    PetscInt r;
-    if (region) PetscCall(DMLabelGetValue(region, c, &r));
-    else r = -1;
-    L->element_region[e] = r;
-    PetscInt lex[8];
-    PetscCall(SpectralCellFrame(dm, coords, c, lex));
-    const PetscInt i = pos % p, j = (pos / p) % p, k = dim == 3 ? pos / (p * p) : 0;
-    for (PetscInt corner = 0; corner < (dim == 2 ? 4 : 8); ++corner) {
-      const PetscInt a = i + (corner & 1), b = j + ((corner >> 1) & 1), z = k + ((corner >> 2) & 1);
-      PetscInt      &node = L->element_nodes[(size_t)e * nnode + a + (p + 1) * (b + (p + 1) * z)];
-      PetscCheck(node < 0 || node == lex[corner], PETSC_COMM_SELF, PETSC_ERR_PLIB,
-                 "SpectralLayoutBuild: the sub-cells of element %" PetscInt_FMT " disagree on a shared node", L->element_id[e]);
-      node = lex[corner];
-    }
+    PetscCheck(L->cell_position[c - c_start] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "SpectralLayoutBuild: cell %" PetscInt_FMT " has no %s", c, kSpectralPositionLabel);
+    PetscCall(SpectralCellFrame(dm, coords, c, &frames[(size_t)(c - c_start) * 8]));
   }
   PetscCall(coords.Close());
+  // Each element from its position-0 sub-cell, through the faces at x, y, z = 1 of the frames.
+  std::vector<PetscInt> stack;
+  for (PetscInt c0 = c_start; c0 < c_end; ++c0) {
+    if (L->cell_position[c0 - c_start] != 0) continue;
+    const PetscInt e = L->nelem++;
+    L->element_id.push_back(c0);
+    L->element_cells.resize((size_t)L->nelem * nsub, -1);
+    L->element_nodes.resize((size_t)L->nelem * nnode, -1);
+    PetscInt r = -1;
+    if (region) PetscCall(DMLabelGetValue(region, c0, &r));
+    L->element_region.push_back(r);
+    L->cell_element[c0 - c_start] = e;
+    stack.assign(1, c0);
+    while (!stack.empty()) {
+      const PetscInt c = stack.back(), pos = L->cell_position[c - c_start];
+      stack.pop_back();
+      PetscCheck(L->element_cells[(size_t)e * nsub + pos] < 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "SpectralLayoutBuild: two cells at position %" PetscInt_FMT " of the element of cell %" PetscInt_FMT,
+                 pos, c0);
+      L->element_cells[(size_t)e * nsub + pos] = c;
+      const PetscInt *lex = &frames[(size_t)(c - c_start) * 8];
+      const PetscInt  idx[3] = {pos % p, (pos / p) % p, dim == 3 ? pos / (p * p) : 0};
+      for (PetscInt corner = 0; corner < ncorner; ++corner) {
+        const PetscInt a = idx[0] + (corner & 1), b = idx[1] + ((corner >> 1) & 1), z = idx[2] + ((corner >> 2) & 1);
+        PetscInt      &node = L->element_nodes[(size_t)e * nnode + a + (p + 1) * (b + (p + 1) * z)];
+        PetscCheck(node < 0 || node == lex[corner], PETSC_COMM_SELF, PETSC_ERR_PLIB, "SpectralLayoutBuild: the sub-cells of the element of cell %" PetscInt_FMT " disagree on a shared node", c0);
+        node = lex[corner];
+      }
+      for (PetscInt d = 0, stride = 1; d < dim; stride *= p, ++d) {
+        if (idx[d] == p - 1) continue;
+        PetscInt n;
+        PetscCall(frameNeighbour(dm, c, lex, ncorner, d, v_start, v_end, &n));
+        PetscCheck(n >= 0 && L->cell_position[n - c_start] == pos + stride, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                   "SpectralLayoutBuild: cell %" PetscInt_FMT " (position %" PetscInt_FMT ") has no sub-cell of its element beyond its side %" PetscInt_FMT " on this rank", c, pos, d);
+        if (L->cell_element[n - c_start] < 0) {
+          L->cell_element[n - c_start] = e;
+          stack.push_back(n);
+        }
+      }
+    }
+  }
+  for (PetscInt c = c_start; c < c_end; ++c)
+    PetscCheck(L->cell_element[c - c_start] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "SpectralLayoutBuild: cell %" PetscInt_FMT " belongs to no element whole on this rank; partition whole elements", c);
   for (PetscInt e = 0; e < L->nelem; ++e)
-    for (PetscInt s = 0; s < nsub; ++s)
-      PetscCheck(L->element_cells[(size_t)e * nsub + s] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-                 "SpectralLayoutBuild: element %" PetscInt_FMT " is not whole on this rank (sub-cell %" PetscInt_FMT " missing); partition whole elements", L->element_id[e], s);
+    for (PetscInt q = 0; q < nsub; ++q)
+      PetscCheck(L->element_cells[(size_t)e * nsub + q] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "SpectralLayoutBuild: the element of cell %" PetscInt_FMT " is not whole on this rank (sub-cell %" PetscInt_FMT " missing); partition whole elements", L->element_id[e], q);
   PetscFunctionReturn(0);
 }
 

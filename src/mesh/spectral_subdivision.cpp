@@ -233,12 +233,10 @@ PetscErrorCode SpectralSubdivideSerialMesh(DM serial, PetscInt degree, const std
   const char *name;
   PetscCall(PetscObjectGetName((PetscObject)serial, &name));
   PetscCall(PetscObjectSetName((PetscObject)*fine, name));
-  DMLabel region, element, position;
+  DMLabel region, position;
   PetscCall(DMCreateLabel(*fine, kRegionLabel));
-  PetscCall(DMCreateLabel(*fine, kSpectralElementLabel));
   PetscCall(DMCreateLabel(*fine, kSpectralPositionLabel));
   PetscCall(DMGetLabel(*fine, kRegionLabel, &region));
-  PetscCall(DMGetLabel(*fine, kSpectralElementLabel, &element));
   PetscCall(DMGetLabel(*fine, kSpectralPositionLabel, &position));
   PetscInt fc_start;
   PetscCall(DMPlexGetHeightStratum(*fine, 0, &fc_start, nullptr));
@@ -246,7 +244,6 @@ PetscErrorCode SpectralSubdivideSerialMesh(DM serial, PetscInt degree, const std
     for (PetscInt q = 0; q < s.nsub; ++q) {
       const PetscInt sub = fc_start + c * s.nsub + q;
       PetscCall(DMLabelSetValue(region, sub, s.cell_region[c]));
-      PetscCall(DMLabelSetValue(element, sub, c));
       PetscCall(DMLabelSetValue(position, sub, q));
     }
   PetscCall(carryBoundaryLabels(serial, s, boundaries, *fine));

@@ -26,6 +26,8 @@
 
 #include <petscsf.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -89,7 +91,7 @@ PetscErrorCode checkLayout(DM dm, PetscInt degree, PetscInt nelem_global, const 
   double gll[9], w[9];
   slipwave::fem::gllPointsWeights((int)degree, gll, w);
   const PetscInt np1 = degree + 1, nnode = dim == 2 ? np1 * np1 : np1 * np1 * np1, nsub = dim == 2 ? degree * degree : degree * degree * degree;
-  std::vector<PetscInt> seen(nelem_global, 0);
+  std::vector<double> corner0; // per element: the coordinates of its node 0, to count each once over ranks
   double                err = 0;
   bool                  cells_ok = true;
   slipwave::mesh::VertexCoordinates vc;
@@ -97,12 +99,12 @@ PetscErrorCode checkLayout(DM dm, PetscInt degree, PetscInt nelem_global, const 
   if (L) {
     nlocal = L->nelem;
     for (PetscInt e = 0; e < L->nelem; ++e) {
-      if (L->element_id[e] >= 0 && L->element_id[e] < nelem_global) ++seen[L->element_id[e]];
       double X[8][3];
       for (PetscInt k = 0; k < (dim == 2 ? 4 : 8); ++k) {
         const PetscInt a = (k & 1) * degree, b = ((k >> 1) & 1) * degree, z = ((k >> 2) & 1) * degree;
         PetscCall(vc.Get(L->element_nodes[e * nnode + a + np1 * (b + np1 * z)], X[k]));
       }
+      for (PetscInt d = 0; d < 3; ++d) corner0.push_back(d < dim ? X[0][d] : 0);
       for (PetscInt n = 0; n < nnode; ++n) {
         const PetscInt idx[3] = {n % np1, (n / np1) % np1, n / (np1 * np1)};
         double         want[3] = {0, 0, 0}, got[3];
@@ -124,14 +126,25 @@ PetscErrorCode checkLayout(DM dm, PetscInt degree, PetscInt nelem_global, const 
     cells_ok = cells_ok && (PetscInt)L->cell_element.size() == c_end - c_start;
   }
   PetscCall(vc.Close());
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, seen.data(), (int)nelem_global, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
+  // Elements of all ranks on rank 0 by their node 0: all distinct (an element counted on two
+  // ranks would repeat one).
+  PetscMPIInt size, rank;
+  PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
+  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+  int              mine = (int)corner0.size();
+  std::vector<int> counts(size), displs(size, 0);
+  PetscCallMPI(MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, PETSC_COMM_WORLD));
+  for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
+  std::vector<double> all(displs[size - 1] + counts[size - 1]);
+  PetscCallMPI(MPI_Allgatherv(corner0.data(), mine, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, PETSC_COMM_WORLD));
+  std::vector<std::array<double, 3>> keys;
+  for (size_t i = 0; i + 2 < all.size(); i += 3) keys.push_back({all[i], all[i + 1], all[i + 2]});
+  std::sort(keys.begin(), keys.end());
+  bool once = std::adjacent_find(keys.begin(), keys.end()) == keys.end();
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &nlocal, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &err, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD));
   int ok = cells_ok;
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ok, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD));
-  bool once = true;
-  // At p = 1 element_id is the local cell number (MeshDescription::serial_cell has the serial one).
-  for (PetscInt s : seen) once = once && (degree == 1 || s == 1);
   unit::check(nlocal == nelem_global && once, what + ": every element on exactly one rank, whole");
   unit::check(ok, what + ": every sub-cell at its position in its element, frames right-handed");
   unit::near(err, 0, 0, 1e-12, what + ": element nodes lexicographic = the Q1 map of the corners at the GLL points");

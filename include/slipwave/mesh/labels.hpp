@@ -9,9 +9,9 @@ namespace slipwave::mesh {
 inline constexpr char kRegionLabel[] = "region";
 
 // Spectral elements of degree p > 1 (mesh/spectral_subdivision.hpp): every GLL sub-cell;
-// value = number of its element (the parent cell in the serial mesh before subdivision).
-inline constexpr char kSpectralElementLabel[] = "spectral_element";
-// Every GLL sub-cell; value = its lexicographic position in the element (x fastest), 0..p^dim-1.
+// value = its lexicographic position in its element (x fastest), 0..p^dim-1. Which element
+// follows from the topology (spectral_layout.hpp); a label value per element would make
+// DMPlex's labels slow (DMLabelGetValue searches every value).
 inline constexpr char kSpectralPositionLabel[] = "spectral_position";
 
 } // namespace slipwave::mesh

@@ -5,7 +5,7 @@
 //   "region"          (kRegionLabel, mesh/labels.hpp) every cell, value = index of its region in MeshDescription::regions
 //   <boundary name>   faces (height 1), value 1: box sides left/right/bottom/top(/front/back),
 //                     or the Gmsh physical groups of dimension dim-1
-//   spectral_element, spectral_position   (degree > 1, labels.hpp) every GLL sub-cell
+//   spectral_position (degree > 1, labels.hpp) every GLL sub-cell: its place in its element
 // At -element_degree p > 1 the cells are spectral elements subdivided into GLL sub-cells
 // (spectral_subdivision.hpp; SpectralLayoutOf groups them back), partitioned whole, and
 // serial_cell numbers the sub-cells (element e's sub-cells are e p^dim .. e p^dim + p^dim - 1).

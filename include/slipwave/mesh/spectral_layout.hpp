@@ -26,7 +26,7 @@ struct SpectralLayout {
   std::vector<PetscInt> element_nodes; // nelem * (p+1)^dim DM vertices, lexicographic (x fastest)
   std::vector<PetscInt> element_cells; // nelem * p^dim DM cells (the sub-cells), lexicographic
   std::vector<PetscInt> element_region; // per element: its "region" label value
-  std::vector<PetscInt> element_id;    // per element: its number in the serial mesh (spectral_element label); at p = 1 the local cell
+  std::vector<PetscInt> element_id;    // per element: its first sub-cell (position 0), a local cell number
   std::vector<PetscInt> cell_element;  // per local DM cell (c - c_start): its element
   std::vector<PetscInt> cell_position; // per local DM cell: its lexicographic index in the element
 };
@@ -35,9 +35,12 @@ struct SpectralLayout {
 // Errors for other cell types (PETSC_ERR_SUP).
 PetscErrorCode SpectralCellFrame(DM dm, const VertexCoordinates &coords, PetscInt cell, PetscInt *lex_vertices);
 
-// Builds this rank's table from the labels spectral_element / spectral_position (degree > 1;
-// mesh/labels.hpp) or from the cells (degree 1). Not collective. Checks that every element
-// is whole on this rank and that neighbouring sub-cells agree on their shared nodes.
+// Builds this rank's table (degree 1: from the cells). Degree > 1: from the label
+// spectral_position (mesh/labels.hpp) and the topology: sub-cells (i,j,k) and (i+1,j,k) of an
+// element share the face of the first one's frame at x = 1 (likewise y, z), so the sub-cells
+// joined that way from position 0 are its element. Elements are listed in the order of their
+// position-0 sub-cells. Not collective. Checks that every element is whole on this rank and
+// that neighbouring sub-cells agree on their shared nodes.
 PetscErrorCode SpectralLayoutBuild(DM dm, PetscInt degree, SpectralLayout *layout);
 
 // The layout of the mesh's elements, built once per DM and kept on it (a composed object):

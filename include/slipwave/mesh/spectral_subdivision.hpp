@@ -10,8 +10,8 @@
 // lexicographic order of the parent's element frame (spectral_layout.hpp); vertices are
 // numbered in order of first appearance, cell by cell.
 // Labels on the result: "region" (the parent's), every boundary label in `boundaries` on the
-// sub-faces of the labelled faces (same values), spectral_element (the parent cell's number)
-// and spectral_position (the lexicographic index in the element) on every sub-cell.
+// sub-faces of the labelled faces (same values), and spectral_position (the lexicographic
+// index in the element, labels.hpp) on every sub-cell.
 #pragma once
 #include <petscdmplex.h>
 
