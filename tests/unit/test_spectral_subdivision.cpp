@@ -10,7 +10,8 @@
 //  - GLL weights for p = 4 on [-1, 1]: 1/10, 49/90, 32/45, 49/90, 1/10; p = 3: 1/6, 5/6, 5/6,
 //    1/6. A node's assembled face weight is (h/2) w_i, doubled at a node two elements share;
 //    3D: (h/2)^2 w_i w_j. Their sum is the side's length / area.
-//  - an interface along y = 1 of 4 elements of degree 4: 4 p + 1 = 17 pairs with those areas.
+//  - an interface along y = 1 of 4 elements of degree 4: 4 p + 1 = 17 pairs with those areas;
+//    in 3D along z = 1 under 2x2 elements of degree 2: 25 pairs (see interface3d).
 //  - p = 1: one element per cell, its nodes lexicographic (node 1 - node 0 along the first
 //    frame axis, node 2 - node 0 along the second, right-handed).
 //  - -gmsh_file f.msh -gmsh_cells V,E,C (vertices, edges, cells of that 2D quad mesh, from the
@@ -272,6 +273,36 @@ PetscErrorCode interface2d() {
   PetscFunctionReturn(0);
 }
 
+// 3D: 2x2x2 unit hexahedra, the block above z = 1, p = 2 (GLL weights 1/3, 4/3, 1/3):
+// (2*2+1)^2 = 25 pairs; the pair at a corner of the plane (0,0,1) has (h/2)^2 w_0^2 = 1/36,
+// the one at its centre (1,1,1), a corner of 4 elements, 4/36; they sum to the area 4.
+PetscErrorCode interface3d() {
+  DM                              dm;
+  slipwave::mesh::MeshDescription desc;
+  PetscFunctionBeginUser;
+  PetscCall(build({{"-mesh_dim", "3"}, {"-mesh_box_faces", "2,2,2"}, {"-mesh_box_upper", "2,2,2"}, {"-element_degree", "2"}, {"-regions", "soil,block"},
+                   {"-region_block_box", "0,2,0,2,1,2"}, {"-interfaces", "base"}, {"-interface_base_regions", "soil,block"}},
+                  &dm, &desc));
+  PetscCall(slipwave::model::NodeFieldSetSection(dm, 3));
+  slipwave::mesh::InterfacePairs pairs;
+  PetscCall(slipwave::mesh::InterfacePairsBuild(dm, desc.interfaces[0], &pairs));
+  unit::check(pairs.n_global == 25, "3D interface z = 1, 2x2 elements of p = 2: 5^2 = 25 pairs");
+  double sum = 0, corner = 0, centre = 0;
+  for (size_t k = 0; k < pairs.id.size(); ++k) {
+    const double *x = &pairs.coords[3 * k];
+    sum += pairs.area[k];
+    if (std::fabs(x[0]) + std::fabs(x[1]) < 1e-12) corner += pairs.area[k];
+    if (std::fabs(x[0] - 1) + std::fabs(x[1] - 1) < 1e-12) centre += pairs.area[k];
+  }
+  for (double *v : {&sum, &corner, &centre}) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, v, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD));
+  unit::near(sum, 4, 1e-14, 0, "3D interface: areas sum to 4");
+  unit::near(corner, 1. / 36, 1e-13, 0, "3D interface: corner pair (h/2)^2 w_0^2 = 1/36");
+  unit::near(centre, 4. / 36, 1e-13, 0, "3D interface: centre pair, 4 elements' corners, 4/36");
+  PetscCall(checkLayout(dm, 2, 8, "split 3D box p = 2"));
+  PetscCall(DMDestroy(&dm));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode linear() {
   DM                              dm;
   slipwave::mesh::MeshDescription desc;
@@ -310,6 +341,7 @@ PetscErrorCode run(bool) {
   PetscCall(box2d());
   PetscCall(box3d());
   PetscCall(interface2d());
+  PetscCall(interface3d());
   PetscCall(linear());
   PetscFunctionReturn(0);
 }
