@@ -121,8 +121,13 @@ PetscErrorCode checkLayout(DM dm, PetscInt degree, PetscInt nelem_global, const 
         const PetscInt c = L->element_cells[e * nsub + s];
         cells_ok = cells_ok && L->cell_element[c - c_start] == e && L->cell_position[c - c_start] == s;
       }
-      // Right-handed frame: the first two axes of the corners turn counter-clockwise (2D).
+      // Right-handed frame: the first two axes turn counter-clockwise (2D); triple product > 0 (3D).
       if (dim == 2) cells_ok = cells_ok && (X[1][0] - X[0][0]) * (X[2][1] - X[0][1]) - (X[1][1] - X[0][1]) * (X[2][0] - X[0][0]) > 0;
+      if (dim == 3) { // (x1 - x0) x (x2 - x0) . (x4 - x0) > 0: box elements have right angles there
+        double a[3], b[3], c[3];
+        for (int d = 0; d < 3; ++d) a[d] = X[1][d] - X[0][d], b[d] = X[2][d] - X[0][d], c[d] = X[4][d] - X[0][d];
+        cells_ok = cells_ok && (a[1] * b[2] - a[2] * b[1]) * c[0] + (a[2] * b[0] - a[0] * b[2]) * c[1] + (a[0] * b[1] - a[1] * b[0]) * c[2] > 0;
+      }
     }
     cells_ok = cells_ok && (PetscInt)L->cell_element.size() == c_end - c_start;
   }
