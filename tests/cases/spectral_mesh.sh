@@ -2,7 +2,7 @@
 # Spectral elements as GLL sub-cells (-element_degree): tests/unit/test_spectral_subdivision
 # on 1 and 2 ranks (node counts and GLL coordinates, labels, the layout whole on one rank,
 # GLL face weights and interface pair areas against closed forms: see its header), then on an
-# unstructured Gmsh quadrilateral mesh at p = 3, whose node count V + 2E + 4C follows from
+# unstructured Gmsh quadrilateral mesh at p = 3 (1 and 2 ranks), whose node count V + 2E + 4C follows from
 # the mesh's V vertices and C quads (E = V + C - 1 edges: Euler's formula for a disk), and
 # the solver's dry run at p = 4 (mesh built, report printed) and its refusal of triangles.
 set -euo pipefail
@@ -41,10 +41,12 @@ print(f"{V},{V + C - 1},{C}")
 PY
 )
 echo "Gmsh quad mesh: V,E,C = $counts"
-out=$("$bin" -gmsh_file "$dir/quad.msh" -gmsh_cells "$counts" 2>&1) || { echo "$out"; echo "FAIL: Gmsh case"; exit 1; }
-echo "$out"
-if grep -q '^not ok' <<<"$out"; then echo "FAIL: a Gmsh check failed"; exit 1; fi
-grep -q "^ok - Gmsh quads, p = 3: V + 2E + 4C nodes" <<<"$out" || { echo "FAIL: no Gmsh node count check"; exit 1; }
+for n in 1 2; do
+  out=$(mpiexec --oversubscribe $root_flag -n $n "$bin" -gmsh_file "$dir/quad.msh" -gmsh_cells "$counts" 2>&1) || { echo "$out"; echo "FAIL: Gmsh case on $n rank(s)"; exit 1; }
+  echo "$out"
+  if grep -q '^not ok' <<<"$out"; then echo "FAIL: a Gmsh check failed on $n rank(s)"; exit 1; fi
+  grep -q "^ok - Gmsh quads, p = 3: V + 2E + 4C nodes" <<<"$out" || { echo "FAIL: no Gmsh node count check"; exit 1; }
+done
 
 # The solver builds the p = 4 mesh: 4x2 elements -> (4*4+1)(2*4+1) = 153 nodes, 8*16 = 128 sub-cells.
 out=$("$BUILD/slipwave" -mesh_box_faces 4,2 -mesh_box_upper 4,2 -regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 \

@@ -92,7 +92,7 @@ PetscErrorCode checkLayout(DM dm, PetscInt degree, PetscInt nelem_global, const 
   double gll[9], w[9];
   slipwave::fem::gllPointsWeights((int)degree, gll, w);
   const PetscInt np1 = degree + 1, nnode = dim == 2 ? np1 * np1 : np1 * np1 * np1, nsub = dim == 2 ? degree * degree : degree * degree * degree;
-  std::vector<double> corner0; // per element: the coordinates of its node 0, to count each once over ranks
+  std::vector<double> centre; // per element: the mean of its corners, to count each once over ranks
   double                err = 0;
   bool                  cells_ok = true;
   slipwave::mesh::VertexCoordinates vc;
@@ -105,7 +105,11 @@ PetscErrorCode checkLayout(DM dm, PetscInt degree, PetscInt nelem_global, const 
         const PetscInt a = (k & 1) * degree, b = ((k >> 1) & 1) * degree, z = ((k >> 2) & 1) * degree;
         PetscCall(vc.Get(L->element_nodes[e * nnode + a + np1 * (b + np1 * z)], X[k]));
       }
-      for (PetscInt d = 0; d < 3; ++d) corner0.push_back(d < dim ? X[0][d] : 0);
+      for (PetscInt d = 0; d < 3; ++d) {
+        double m = 0;
+        for (PetscInt k = 0; k < (dim == 2 ? 4 : 8); ++k) m += d < dim ? X[k][d] : 0;
+        centre.push_back(m);
+      }
       for (PetscInt n = 0; n < nnode; ++n) {
         const PetscInt idx[3] = {n % np1, (n / np1) % np1, n / (np1 * np1)};
         double         want[3] = {0, 0, 0}, got[3];
@@ -132,17 +136,17 @@ PetscErrorCode checkLayout(DM dm, PetscInt degree, PetscInt nelem_global, const 
     cells_ok = cells_ok && (PetscInt)L->cell_element.size() == c_end - c_start;
   }
   PetscCall(vc.Close());
-  // Elements of all ranks on rank 0 by their node 0: all distinct (an element counted on two
-  // ranks would repeat one).
+  // Elements of all ranks by their centres: all distinct (an element counted on two ranks would
+  // repeat one).
   PetscMPIInt size, rank;
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
-  int              mine = (int)corner0.size();
+  int              mine = (int)centre.size();
   std::vector<int> counts(size), displs(size, 0);
   PetscCallMPI(MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, PETSC_COMM_WORLD));
   for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
   std::vector<double> all(displs[size - 1] + counts[size - 1]);
-  PetscCallMPI(MPI_Allgatherv(corner0.data(), mine, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, PETSC_COMM_WORLD));
+  PetscCallMPI(MPI_Allgatherv(centre.data(), mine, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, PETSC_COMM_WORLD));
   std::vector<std::array<double, 3>> keys;
   for (size_t i = 0; i + 2 < all.size(); i += 3) keys.push_back({all[i], all[i + 1], all[i + 2]});
   std::sort(keys.begin(), keys.end());
