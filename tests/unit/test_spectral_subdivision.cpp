@@ -14,8 +14,8 @@
 //    in 3D along z = 1 under 2x2 elements of degree 2: 25 pairs (see interface3d).
 //  - p = 1: one element per cell, its nodes lexicographic (node 1 - node 0 along the first
 //    frame axis, node 2 - node 0 along the second, right-handed).
-//  - -gmsh_file f.msh -gmsh_cells V,E,C (vertices, edges, cells of that 2D quad mesh, from the
-//    case script): V + E (p-1) + C (p-1)^2 nodes at p = 3.
+//  - -gmsh_file f.msh [-gmsh_cells V,E,C]: a Gmsh quad or hex mesh at p = 3 has
+//    V + E (p-1) + F (p-1)^2 + C (p-1)^dim nodes (see gmsh()).
 #include "slipwave/fem/gll_basis.hpp"
 #include "slipwave/mesh/mesh_builder.hpp"
 #include "slipwave/mesh/spectral_face_weights.hpp"
@@ -325,17 +325,37 @@ PetscErrorCode linear() {
   PetscFunctionReturn(0);
 }
 
+// counts "V,E,C" (2D, from the case script) or empty: the expected node count from the
+// strata of the file's own interpolated mesh, V + E (p-1) + F (p-1)^2 + C (p-1)^3 (each
+// vertex one node, each edge, face and cell its interior GLL nodes).
 PetscErrorCode gmsh(const char *file, const char *counts) {
-  DM                              dm;
+  DM                              dm, parent;
   slipwave::mesh::MeshDescription desc;
-  PetscInt                        V, E, C;
+  PetscInt                        V, E, F = 0, C, dim;
   PetscFunctionBeginUser;
-  PetscCheck(std::sscanf(counts, "%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT, &V, &E, &C) == 3, PETSC_COMM_WORLD, PETSC_ERR_USER, "-gmsh_cells V,E,C");
+  PetscCall(DMPlexCreateFromFile(PETSC_COMM_WORLD, file, "parent", PETSC_TRUE, &parent));
+  PetscCall(DMGetDimension(parent, &dim));
+  PetscInt n[4] = {0, 0, 0, 0};
+  for (PetscInt d = 0; d <= dim; ++d) {
+    PetscInt a, b;
+    PetscCall(DMPlexGetDepthStratum(parent, d, &a, &b));
+    n[d] = b - a;
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, n, 4, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
+  PetscCall(DMDestroy(&parent));
+  V = n[0], E = n[1], C = n[dim];
+  if (dim == 3) F = n[2];
+  if (counts[0]) {
+    PetscInt v2, e2, c2;
+    PetscCheck(std::sscanf(counts, "%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT, &v2, &e2, &c2) == 3, PETSC_COMM_WORLD, PETSC_ERR_USER, "-gmsh_cells V,E,C");
+    unit::check(v2 == V && e2 == E && c2 == C, "Gmsh mesh: the script's V, E = V + C - 1, C agree with the mesh's strata");
+  }
   PetscCall(build({{"-mesh_file", file}, {"-regions", "soil"}, {"-element_degree", "3"}}, &dm, &desc));
   PetscInt nv;
   PetscCall(globalVertexCount(dm, &nv));
-  unit::check(nv == V + 2 * E + 4 * C, "Gmsh quads, p = 3: V + 2E + 4C nodes");
-  PetscCall(checkLayout(dm, 3, C, "Gmsh quads p = 3"));
+  const std::string what = dim == 2 ? "Gmsh quads" : "Gmsh hexes";
+  unit::check(nv == V + 2 * E + 4 * F + 8 * C * (dim == 3) + 4 * C * (dim == 2), what + ", p = 3: V + 2E (+ 4F) + 4C (2D) / 8C (3D) nodes");
+  PetscCall(checkLayout(dm, 3, C, what + " p = 3"));
   PetscCall(DMDestroy(&dm));
   PetscFunctionReturn(0);
 }
