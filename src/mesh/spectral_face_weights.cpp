@@ -29,8 +29,7 @@ PetscErrorCode SpectralFaceWeights(const SpectralLayout &L, const VertexCoordina
   const PetscInt p = L.degree, dim = L.dim, np1 = p + 1;
   PetscFunctionBeginUser;
   const PetscInt  e     = L.cell_element[cell_local];
-  PetscInt        nnode = 1;
-  for (PetscInt d = 0; d < dim; ++d) nnode *= np1;
+  const PetscInt  nnode = SpectralCount(np1, dim);
   const PetscInt *nodes = &L.element_nodes[(size_t)e * nnode];
   // The face's vertices as GLL indices of the element.
   PetscInt idx[4][3] = {{0}};

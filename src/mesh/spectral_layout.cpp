@@ -28,12 +28,6 @@ double centreJacobian(PetscInt dim, const double *x) {
   return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
 }
 
-PetscInt ipow(PetscInt b, PetscInt e) {
-  PetscInt r = 1;
-  for (PetscInt i = 0; i < e; ++i) r *= b;
-  return r;
-}
-
 } // namespace
 
 PetscErrorCode SpectralCellFrame(DM dm, const VertexCoordinates &coords, PetscInt cell, PetscInt *lex) {
@@ -126,7 +120,7 @@ PetscErrorCode SpectralLayoutBuild(DM dm, PetscInt degree, SpectralLayout *L) {
     PetscCheck(position, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "SpectralLayoutBuild: degree %" PetscInt_FMT " but the mesh has no %s label (not subdivided)", degree,
                kSpectralPositionLabel);
   }
-  const PetscInt ncell = c_end - c_start, p = degree, nsub = ipow(p, dim), nnode = ipow(p + 1, dim), ncorner = dim == 2 ? 4 : 8;
+  const PetscInt ncell = c_end - c_start, p = degree, nsub = SpectralCount(p, dim), nnode = SpectralCount(p + 1, dim), ncorner = dim == 2 ? 4 : 8;
   *L        = SpectralLayout();
   L->degree = degree;
   L->dim    = dim;
@@ -227,7 +221,7 @@ PetscErrorCode SpectralLayoutOf(DM dm, const SpectralLayout **layout) {
   }
   if (nsub == 0) PetscFunctionReturn(0); // no cells here: nothing to group
   const PetscInt degree = (PetscInt)std::lround(std::pow((double)nsub, 1.0 / dim));
-  PetscCheck(ipow(degree, dim) == nsub, PETSC_COMM_SELF, PETSC_ERR_PLIB, "SpectralLayoutOf: %" PetscInt_FMT " sub-cells per element is not p^%" PetscInt_FMT, nsub, dim);
+  PetscCheck(SpectralCount(degree, dim) == nsub, PETSC_COMM_SELF, PETSC_ERR_PLIB, "SpectralLayoutOf: %" PetscInt_FMT " sub-cells per element is not p^%" PetscInt_FMT, nsub, dim);
   auto *built = new SpectralLayout;
   PetscCall(SpectralLayoutBuild(dm, degree, built));
   PetscCall(PetscContainerCreate(PETSC_COMM_SELF, &container));

@@ -11,12 +11,6 @@
 namespace slipwave::mesh {
 namespace {
 
-PetscInt ipow(PetscInt b, PetscInt e) {
-  PetscInt r = 1;
-  for (PetscInt i = 0; i < e; ++i) r *= b;
-  return r;
-}
-
 // A node by the parent point it lies in: {kind, ids..., indices...}. kind 0: a vertex {0, v};
 // 1: an edge {1, v_low, v_high, t} with t counted from v_low; 2: a face of a hexahedron
 // {2, origin, v_axis1, v_axis2, s, t}, the origin its lowest vertex and axis 1 towards the
@@ -223,8 +217,8 @@ PetscErrorCode SpectralSubdivideSerialMesh(DM serial, PetscInt degree, const std
   PetscCall(DMGetCoordinateDim(serial, &s.cdim));
   s.p        = degree;
   s.ncorners = s.dim == 2 ? 4 : 8;
-  s.nnode    = ipow(degree + 1, s.dim);
-  s.nsub     = ipow(degree, s.dim);
+  s.nnode    = SpectralCount(degree + 1, s.dim);
+  s.nsub     = SpectralCount(degree, s.dim);
   PetscCall(makeNodes(serial, &s));
   const bool            root  = rank == 0;
   std::vector<PetscInt> cells = subCellList(s);
@@ -260,7 +254,7 @@ PetscErrorCode SpectralPartitionWholeElements(DM parent, PetscPartitioner part, 
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(DMGetDimension(parent, &dim));
   PetscCall(DMPlexGetHeightStratum(parent, 0, &c_start, nullptr));
-  const PetscInt nsub = ipow(degree, dim);
+  const PetscInt nsub = SpectralCount(degree, dim);
   PetscCall(PetscSectionCreate(comm, &parts));
   PetscCall(PetscPartitionerDMPlexPartition(part, parent, nullptr, parts, &assignment));
   std::vector<PetscInt> sizes(size, 0), points;

@@ -31,6 +31,9 @@ struct SpectralLayout {
   std::vector<PetscInt> cell_position; // per local DM cell: its lexicographic index in the element
 };
 
+// n^dim: sub-cells (n = p) or nodes (n = p + 1) of an element.
+inline PetscInt SpectralCount(PetscInt n, PetscInt dim) { return dim == 2 ? n * n : n * n * n; }
+
 // The 4 (quadrilateral) or 8 (hexahedron) vertices of a cell in the element frame above.
 // Errors for other cell types (PETSC_ERR_SUP).
 PetscErrorCode SpectralCellFrame(DM dm, const VertexCoordinates &coords, PetscInt cell, PetscInt *lex_vertices);
@@ -39,7 +42,7 @@ PetscErrorCode SpectralCellFrame(DM dm, const VertexCoordinates &coords, PetscIn
 // spectral_position (mesh/labels.hpp) and the topology: sub-cells (i,j,k) and (i+1,j,k) of an
 // element share the face of the first one's frame at x = 1 (likewise y, z), so the sub-cells
 // joined that way from position 0 are its element. Elements are listed in the order of their
-// position-0 sub-cells. Not collective. Checks that every element is whole on this rank and
+// position-0 sub-cells. Quadrilaterals and hexahedra only (any degree). Not collective. Checks that every element is whole on this rank and
 // that neighbouring sub-cells agree on their shared nodes.
 PetscErrorCode SpectralLayoutBuild(DM dm, PetscInt degree, SpectralLayout *layout);
 
