@@ -119,6 +119,26 @@ void spectralElementForce(int dim, int p, const double *wdet, const double *jinv
   f(g.D, wdet, jinv, m, ue, fe);
 }
 
+namespace {
+
+// |K| column by column: absK[j * n + r] = |(K e_j)_r| (each column written contiguously).
+std::vector<double> absColumns(int dim, int p, const double *wdet, const double *jinv, const LameParameters &m) {
+  const Gll1D         g(p);
+  const ForceFn       f = dim == 2 ? forceOfDegree<2>(p) : forceOfDegree<3>(p);
+  const int           n = dim * spectralNodeCount(dim, p);
+  std::vector<double> absK((size_t)n * n), e(n, 0.0);
+  for (int j = 0; j < n; ++j) {
+    double *col = &absK[(size_t)j * n];
+    e[j]        = 1;
+    f(g.D, wdet, jinv, m, e.data(), col);
+    e[j] = 0;
+    for (int r = 0; r < n; ++r) col[r] = std::fabs(col[r]);
+  }
+  return absK;
+}
+
+} // namespace
+
 void spectralElementStiffness(int dim, int p, const double *wdet, const double *jinv, const LameParameters &m, double *K) {
   const Gll1D         g(p);
   const ForceFn       f = dim == 2 ? forceOfDegree<2>(p) : forceOfDegree<3>(p);
@@ -133,34 +153,31 @@ void spectralElementStiffness(int dim, int p, const double *wdet, const double *
 }
 
 void spectralElementRowAbsSums(int dim, int p, const double *wdet, const double *jinv, const LameParameters &m, double *rowabs) {
-  const int           n = dim * spectralNodeCount(dim, p);
-  std::vector<double> K((size_t)n * n);
-  spectralElementStiffness(dim, p, wdet, jinv, m, K.data());
-  for (int r = 0; r < n; ++r) {
-    double s = 0;
-    for (int c = 0; c < n; ++c) s += std::fabs(K[(size_t)r * n + c]);
-    rowabs[r] = s;
-  }
+  const int  n    = dim * spectralNodeCount(dim, p);
+  const auto absK = absColumns(dim, p, wdet, jinv, m);
+  std::fill(rowabs, rowabs + n, 0.0);
+  for (int j = 0; j < n; ++j)
+    for (int r = 0; r < n; ++r) rowabs[r] += absK[(size_t)j * n + r];
 }
 
 double spectralElementEigenBound(int dim, int p, const double *wdet, const double *jinv, const LameParameters &m, double rho, int iterations) {
-  const int           nq = spectralNodeCount(dim, p), n = dim * nq;
-  std::vector<double> A((size_t)n * n), d(n, 1.0), y(n);
-  spectralElementStiffness(dim, p, wdet, jinv, m, A.data());
-  for (int r = 0; r < n; ++r)
-    for (int c = 0; c < n; ++c) A[(size_t)r * n + c] = std::fabs(A[(size_t)r * n + c]) / (rho * wdet[r / dim]);
-  double best = HUGE_VAL;
+  const int           n    = dim * spectralNodeCount(dim, p);
+  const auto          absK = absColumns(dim, p, wdet, jinv, m);
+  std::vector<double> d(n, 1.0), y(n);
+  double              best = HUGE_VAL;
   for (int it = 0; it <= iterations; ++it) {
+    // y = M_e^{-1} |K_e| d, accumulated column by column.
+    std::fill(y.begin(), y.end(), 0.0);
+    for (int j = 0; j < n; ++j)
+      for (int r = 0; r < n; ++r) y[r] += absK[(size_t)j * n + r] * d[j];
     double bound = 0, ymax = 0;
     for (int r = 0; r < n; ++r) {
-      double s = 0;
-      for (int c = 0; c < n; ++c) s += A[(size_t)r * n + c] * d[c];
-      y[r]  = s;
-      bound = std::max(bound, s / d[r]);
-      ymax  = std::max(ymax, s);
+      y[r] /= rho * wdet[r / dim];
+      bound = std::max(bound, y[r] / d[r]);
+      ymax  = std::max(ymax, y[r]);
     }
     best = std::min(best, bound);
-    // A has a positive diagonal, so y > 0 whenever d > 0: every d stays positive.
+    // |K_e| has a positive diagonal, so y > 0 whenever d > 0: every d stays positive.
     for (int r = 0; r < n; ++r) d[r] = y[r] / ymax;
   }
   return best;
