@@ -1,9 +1,9 @@
 // Throughput of the spectral-element internal force (SpectralOperator::addStiffnessTimes, 1
 // rank, 1 core) on box-like element blocks of degree p = 1, 2, 4, 6: 2D with about 600 GLL
 // nodes per direction, 3D about 60 (so the vectors exceed the caches, as in a real run).
-// All elements share one geometry record, so the loop runs batched across elements (the
-// path of box meshes); "warped" repeats p = 4 with every element its own geometry (the
-// per-element path of unstructured meshes). Each timing is the best of 3 loops of ~0.3 s.
+// All elements share one geometry record, so the loop runs batched across elements with the
+// factors broadcast (the path of box meshes); "warped" repeats p = 4 with every element its
+// own geometry (lane batches with interleaved factors: the path of unstructured meshes). Each timing is the best of 3 loops of ~0.3 s.
 // Rows appended to the CSV:
 //   spectral_operator,<2d|3d>_p<p>[_warped],mdof_updates_per_s,<value>,M/s
 //   build/bench/bench_spectral_operator [--csv FILE] [--quick]

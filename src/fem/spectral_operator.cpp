@@ -13,70 +13,74 @@ namespace {
 
 // Explicit vector types, as in the Q1 loop: the default tuning vectorises at 128 bits only.
 constexpr int kBatch = 8;
+static_assert(sizeof(SpectralOperator::FactorLanes) == kBatch * sizeof(double), "one factor vector per lane batch");
 typedef double BatchVec __attribute__((vector_size(kBatch * sizeof(double))));
 
+// Kinds of groups of a Subset's plan.
+enum GroupKind : PetscInt { kShared = 0, kLanes = 1, kSingle = 2 };
+
 struct Tables {
-  const PetscInt       *node_offset, *record;
+  const PetscInt       *node_offset, *region;
   const double         *wdet, *jinv, *D;
-  const RegionMaterial *record_material; // per record
+  const RegionMaterial *materials, *record_material; // per region, per record
 };
 
-// f += K u over the elements list[0..count) (list == nullptr: elements 0..count-1). Runs of
-// kBatch consecutive elements with one record are gathered transposed (lane b = element b),
-// pushed through the kernel once, and scattered in element order (elements share nodes).
+using Subset = SpectralOperator::Subset;
+
+// f += K u over the plan of s. Batches are gathered transposed (lane b = element b), pushed
+// through the kernel once, and scattered in element order (elements share nodes).
 template <int P, int DIM>
-void applyElements(PetscInt count, const PetscInt *list, const Tables &t, const PetscScalar *__restrict u, PetscScalar *__restrict f) {
+void applyPlan(const Subset &s, const Tables &t, const PetscScalar *__restrict u, PetscScalar *__restrict f) {
   constexpr int NQ = SpectralShape<P, DIM>::NQ;
-  auto          elem = [&](PetscInt i) { return list ? list[i] : i; };
-  PetscInt      i    = 0;
-  while (i < count) {
-    const PetscInt r   = t.record[elem(i)];
-    PetscInt       run = 1;
-    while (run < kBatch && i + run < count && t.record[elem(i + run)] == r) ++run;
-    const double *wdet = t.wdet + (size_t)r * NQ, *jinv = t.jinv + (size_t)r * NQ * DIM * DIM;
-    const LameParameters &m = t.record_material[r].lame;
-    if (run < kBatch) {
-      for (PetscInt k = 0; k < run; ++k) {
-        const PetscInt *__restrict off = t.node_offset + (size_t)elem(i + k) * NQ;
-        double ue[DIM * NQ], fe[DIM * NQ];
-        for (int q = 0; q < NQ; ++q)
-          for (int c = 0; c < DIM; ++c) ue[c * NQ + q] = u[off[q] + c];
-        spectralForce<P, DIM, double>(t.D, wdet, jinv, m.lambda, m.mu, ue, fe);
-        for (int q = 0; q < NQ; ++q)
-          for (int c = 0; c < DIM; ++c) f[off[q] + c] += fe[c * NQ + q];
-      }
-      i += run;
+  BatchVec      ue[DIM * NQ], fe[DIM * NQ];
+  for (size_t g = 0; g + 2 < s.groups.size(); g += 3) {
+    const PetscInt  kind = s.groups[g], data = s.groups[g + 2];
+    const PetscInt *elements = s.elements.data() + s.groups[g + 1];
+    if (kind == kSingle) {
+      const PetscInt *__restrict off = t.node_offset + (size_t)elements[0] * NQ;
+      const LameParameters &m        = t.record_material[data].lame;
+      double                ve[DIM * NQ], vf[DIM * NQ];
+      for (int q = 0; q < NQ; ++q)
+        for (int c = 0; c < DIM; ++c) ve[c * NQ + q] = u[off[q] + c];
+      spectralForce<P, DIM, double>(t.D, t.wdet + (size_t)data * NQ, t.jinv + (size_t)data * NQ * DIM * DIM, m.lambda, m.mu, ve, vf);
+      for (int q = 0; q < NQ; ++q)
+        for (int c = 0; c < DIM; ++c) f[off[q] + c] += vf[c * NQ + q];
       continue;
     }
-    BatchVec ue[DIM * NQ], fe[DIM * NQ];
     for (int b = 0; b < kBatch; ++b) {
-      const PetscInt *__restrict off = t.node_offset + (size_t)elem(i + b) * NQ;
+      const PetscInt *__restrict off = t.node_offset + (size_t)elements[b] * NQ;
       for (int q = 0; q < NQ; ++q)
         for (int c = 0; c < DIM; ++c) ue[c * NQ + q][b] = u[off[q] + c];
     }
-    spectralForce<P, DIM, BatchVec>(t.D, wdet, jinv, m.lambda, m.mu, ue, fe);
+    if (kind == kShared) {
+      const LameParameters &m = t.record_material[data].lame;
+      spectralForce<P, DIM, BatchVec>(t.D, t.wdet + (size_t)data * NQ, t.jinv + (size_t)data * NQ * DIM * DIM, m.lambda, m.mu, ue, fe);
+    } else {
+      const LameParameters &m     = t.materials[t.region[elements[0]]].lame;
+      const BatchVec       *lanes = reinterpret_cast<const BatchVec *>(s.lane_factors.data()) + data;
+      spectralForce<P, DIM, BatchVec, BatchVec>(t.D, lanes, lanes + NQ, m.lambda, m.mu, ue, fe);
+    }
     for (int b = 0; b < kBatch; ++b) {
-      const PetscInt *__restrict off = t.node_offset + (size_t)elem(i + b) * NQ;
+      const PetscInt *__restrict off = t.node_offset + (size_t)elements[b] * NQ;
       for (int q = 0; q < NQ; ++q)
         for (int c = 0; c < DIM; ++c) f[off[q] + c] += fe[c * NQ + q][b];
     }
-    i += kBatch;
   }
 }
 
-using ApplyFn = void (*)(PetscInt, const PetscInt *, const Tables &, const PetscScalar *, PetscScalar *);
+using ApplyFn = void (*)(const Subset &, const Tables &, const PetscScalar *, PetscScalar *);
 
 template <int DIM>
 ApplyFn applyOfDegree(PetscInt p) {
   switch (p) {
-  case 1: return applyElements<1, DIM>;
-  case 2: return applyElements<2, DIM>;
-  case 3: return applyElements<3, DIM>;
-  case 4: return applyElements<4, DIM>;
-  case 5: return applyElements<5, DIM>;
-  case 6: return applyElements<6, DIM>;
-  case 7: return applyElements<7, DIM>;
-  case 8: return applyElements<8, DIM>;
+  case 1: return applyPlan<1, DIM>;
+  case 2: return applyPlan<2, DIM>;
+  case 3: return applyPlan<3, DIM>;
+  case 4: return applyPlan<4, DIM>;
+  case 5: return applyPlan<5, DIM>;
+  case 6: return applyPlan<6, DIM>;
+  case 7: return applyPlan<7, DIM>;
+  case 8: return applyPlan<8, DIM>;
   default: return nullptr;
   }
 }
@@ -89,6 +93,7 @@ PetscErrorCode SpectralOperator::Setup(PetscInt dim, PetscInt degree, PetscInt n
   PetscCheck((dim == 2 || dim == 3) && degree >= 1 && degree <= kMaxSpectralDegree, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
              "spectral elements: dimension %" PetscInt_FMT " degree %" PetscInt_FMT "; allowed: dimension 2 or 3, degree 1 to %d", dim, degree, kMaxSpectralDegree);
   dim_ = dim, degree_ = degree, nelem_ = nelem, nq_ = spectralNodeCount((int)dim, (int)degree);
+  materials_ = materials;
   node_offset_.assign(node_offset, node_offset + (size_t)nelem * nq_);
   region_.assign(region, region + nelem);
   coords_.assign(coords, coords + (size_t)nelem * nq_ * dim);
@@ -135,21 +140,53 @@ PetscErrorCode SpectralOperator::Setup(PetscInt dim, PetscInt degree, PetscInt n
                "spectral element %" PetscInt_FMT " (first node at %g %g %g) is folded or degenerate: det J vanishes or changes sign at its GLL nodes", e, xe[0], xe[1],
                dim == 3 ? xe[2] : 0.0);
   }
+  std::vector<PetscInt> all(nelem);
+  for (PetscInt e = 0; e < nelem; ++e) all[e] = e;
+  all_ = subset(all);
   PetscFunctionReturn(0);
 }
 
 void SpectralOperator::addStiffnessTimes(const PetscScalar *u, PetscScalar *f) const {
-  apply(nelem_, nullptr, u, f);
+  addStiffnessTimes(all_, u, f);
 }
 
-void SpectralOperator::addStiffnessTimes(const std::vector<PetscInt> &elements, const PetscScalar *u, PetscScalar *f) const {
-  apply((PetscInt)elements.size(), elements.data(), u, f);
+SpectralOperator::Subset SpectralOperator::subset(const std::vector<PetscInt> &elements) const {
+  Subset         s;
+  const PetscInt n = (PetscInt)elements.size(), nf = nq_ * (1 + dim_ * dim_);
+  s.elements       = elements;
+  PetscInt i       = 0;
+  while (i < n) {
+    const PetscInt r   = record_[elements[i]];
+    PetscInt       run = 1, same_region = 1;
+    while (run < kBatch && i + run < n && record_[elements[i + run]] == r) ++run;
+    while (same_region < kBatch && i + same_region < n && region_[elements[i + same_region]] == region_[elements[i]]) ++same_region;
+    if (run == kBatch) {
+      s.groups.insert(s.groups.end(), {kShared, i, r});
+      i += kBatch;
+    } else if (same_region == kBatch) {
+      // Lane b's factors at node q: wdet in vector q, jinv entry j in vector nq + q dim^2 + j.
+      const size_t offset = s.lane_factors.size();
+      s.lane_factors.resize(offset + nf);
+      FactorLanes *block = &s.lane_factors[offset];
+      for (int b = 0; b < kBatch; ++b) {
+        const PetscInt rb = record_[elements[i + b]];
+        for (PetscInt q = 0; q < nq_; ++q) block[q].lane[b] = wdet_[(size_t)rb * nq_ + q];
+        for (PetscInt j = 0; j < nq_ * dim_ * dim_; ++j) block[nq_ + j].lane[b] = jinv_[(size_t)rb * nq_ * dim_ * dim_ + j];
+      }
+      s.groups.insert(s.groups.end(), {kLanes, i, (PetscInt)offset});
+      i += kBatch;
+    } else {
+      s.groups.insert(s.groups.end(), {kSingle, i, r});
+      i += 1;
+    }
+  }
+  return s;
 }
 
-void SpectralOperator::apply(PetscInt count, const PetscInt *list, const PetscScalar *u, PetscScalar *f) const {
-  const Tables  t{node_offset_.data(), record_.data(), wdet_.data(), jinv_.data(), D_.data(), record_material_.data()};
+void SpectralOperator::addStiffnessTimes(const Subset &s, const PetscScalar *u, PetscScalar *f) const {
+  const Tables  t{node_offset_.data(), region_.data(), wdet_.data(), jinv_.data(), D_.data(), materials_.data(), record_material_.data()};
   const ApplyFn fn = dim_ == 2 ? applyOfDegree<2>(degree_) : applyOfDegree<3>(degree_);
-  fn(count, list, t, u, f);
+  fn(s, t, u, f);
 }
 
 void SpectralOperator::addLumpedMass(PetscScalar *mass) const {

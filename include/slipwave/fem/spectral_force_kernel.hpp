@@ -23,9 +23,11 @@ struct SpectralShape {
   static constexpr int NQ = DIM == 2 ? N1 * N1 : N1 * N1 * N1;
 };
 
-// D: (P+1)^2 row-major, D[i * (P+1) + j] = l_j'(x_i). f is overwritten.
-template <int P, int DIM, class V>
-inline void spectralForce(const double *__restrict D, const double *__restrict wdet, const double *__restrict jinv, double lambda, double mu,
+// D: (P+1)^2 row-major, D[i * (P+1) + j] = l_j'(x_i). f is overwritten. F, the type of the
+// factors, is double (one element, or a batch sharing its factors) or V (a batch of
+// elements of one material, each lane with its own factors).
+template <int P, int DIM, class V, class F = double>
+inline void spectralForce(const double *__restrict D, const F *__restrict wdet, const F *__restrict jinv, double lambda, double mu,
                           const V *__restrict u, V *__restrict f) {
   constexpr int N1 = P + 1, NQ = SpectralShape<P, DIM>::NQ, NZ = DIM == 3 ? N1 : 1;
   constexpr int stride[3] = {1, N1, N1 * N1};
@@ -49,7 +51,7 @@ inline void spectralForce(const double *__restrict D, const double *__restrict w
             for (int m = 1; m < N1; ++m) s += Dr[m] * line[m * stride[k]];
             g[c][k] = s;
           }
-        const double *__restrict J = jinv + q * DIM * DIM;
+        const F *__restrict J = jinv + q * DIM * DIM;
         V H[DIM][DIM]; // H[c][i] = d u_c / d x_i
 #pragma GCC unroll 3
         for (int c = 0; c < DIM; ++c)
@@ -60,7 +62,7 @@ inline void spectralForce(const double *__restrict D, const double *__restrict w
             for (int k = 1; k < DIM; ++k) s += g[c][k] * J[k * DIM + i];
             H[c][i] = s;
           }
-        const double lw = lambda * wdet[q], mw = mu * wdet[q];
+        const F lw = lambda * wdet[q], mw = mu * wdet[q];
         V            div = H[0][0];
 #pragma GCC unroll 3
         for (int i = 1; i < DIM; ++i) div += H[i][i];

@@ -2,9 +2,11 @@
 // degree p (fem/spectral_kernels), over a rank's elements given as arrays (the mesh side
 // groups the GLL sub-cells into elements; no DM here). Elements of one region whose node
 // coordinates relative to their first node agree (to 1e-12 of the extent: every element of
-// a box-mesh region) share one record of geometric factors, and runs of kBatch consecutive
-// elements sharing a record are computed together, one SIMD lane per element. Elements with
-// their own geometry take the per-element path of the same kernel.
+// a box-mesh region) share one record of geometric factors. The force runs in batches of 8
+// consecutive elements, one SIMD lane per element: with the record's factors broadcast when
+// all 8 share it, with lane-interleaved copies of their factors (built once per element set)
+// when they only share the region (unstructured meshes); elements left over take the
+// per-element path of the same kernel.
 #pragma once
 #include <petscsys.h>
 
@@ -26,8 +28,17 @@ public:
 
   // f_local += K u_local over all elements (local, ghosted arrays; no communication).
   void addStiffnessTimes(const PetscScalar *u_local, PetscScalar *f_local) const;
-  // The same on a subset of elements (ascending local element numbers), through the same loop.
-  void addStiffnessTimes(const std::vector<PetscInt> &elements, const PetscScalar *u_local, PetscScalar *f_local) const;
+  // A list of elements with its batching plan, for the same loop on a subset.
+  struct alignas(64) FactorLanes { // one factor of the 8 elements of a lane batch (one SIMD vector)
+    double lane[8];
+  };
+  struct Subset {
+    std::vector<PetscInt>    elements;
+    std::vector<PetscInt>    groups;       // per group: kind, first position in elements, record or lane-factor offset
+    std::vector<FactorLanes> lane_factors; // interleaved factors of the lane batches
+  };
+  Subset subset(const std::vector<PetscInt> &elements) const;
+  void   addStiffnessTimes(const Subset &elements, const PetscScalar *u_local, PetscScalar *f_local) const;
   // Adds the GLL lumped mass rho w_q |det J_q| to every component of every node.
   void addLumpedMass(PetscScalar *mass_local) const;
   // Adds sum_j |K_e,ij| per dof (element Gershgorin row sums; their assembly bounds the row
@@ -49,13 +60,11 @@ public:
   const double *elementCoordinates(PetscInt e) const { return &coords_[(size_t)e * nq_ * dim_]; }
 
 private:
-  // f += K u over list[0..count) (nullptr: elements 0..count-1).
-  void apply(PetscInt count, const PetscInt *list, const PetscScalar *u_local, PetscScalar *f_local) const;
-
   PetscInt                    dim_ = 0, degree_ = 1, nelem_ = 0, nq_ = 0;
   std::vector<PetscInt>       node_offset_, region_, record_; // record_: per element, its geometry record
   std::vector<double>         coords_, wdet_, jinv_, D_;      // wdet_, jinv_: per record
-  std::vector<RegionMaterial> record_material_;
+  std::vector<RegionMaterial> materials_, record_material_;
+  Subset                      all_;
 };
 
 } // namespace slipwave::fem
