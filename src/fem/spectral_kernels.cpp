@@ -121,20 +121,73 @@ void spectralElementForce(int dim, int p, const double *wdet, const double *jinv
 
 namespace {
 
-// |K| column by column: absK[j * n + r] = |(K e_j)_r| (each column written contiguously).
-std::vector<double> absColumns(int dim, int p, const double *wdet, const double *jinv, const LameParameters &m) {
+// K column by column: cols[j * n + r] = (K e_j)_r (each column written contiguously).
+std::vector<double> stiffnessColumns(int dim, int p, const double *wdet, const double *jinv, const LameParameters &m) {
   const Gll1D         g(p);
   const ForceFn       f = dim == 2 ? forceOfDegree<2>(p) : forceOfDegree<3>(p);
   const int           n = dim * spectralNodeCount(dim, p);
-  std::vector<double> absK((size_t)n * n), e(n, 0.0);
+  std::vector<double> cols((size_t)n * n), e(n, 0.0);
   for (int j = 0; j < n; ++j) {
-    double *col = &absK[(size_t)j * n];
-    e[j]        = 1;
-    f(g.D, wdet, jinv, m, e.data(), col);
+    e[j] = 1;
+    f(g.D, wdet, jinv, m, e.data(), &cols[(size_t)j * n]);
     e[j] = 0;
-    for (int r = 0; r < n; ++r) col[r] = std::fabs(col[r]);
   }
-  return absK;
+  return cols;
+}
+
+// Collatz-Wielandt bound of A = diag(1/mass) |K| from `iterations` power steps.
+double collatzWielandt(int n, const std::vector<double> &cols, const double *mass, int iterations) {
+  std::vector<double> d(n, 1.0), y(n);
+  double              best = HUGE_VAL;
+  for (int it = 0; it <= iterations; ++it) {
+    std::fill(y.begin(), y.end(), 0.0);
+    for (int j = 0; j < n; ++j)
+      for (int r = 0; r < n; ++r) y[r] += std::fabs(cols[(size_t)j * n + r]) * d[j];
+    double bound = 0, ymax = 0;
+    for (int r = 0; r < n; ++r) {
+      y[r] /= mass[r];
+      bound = std::max(bound, y[r] / d[r]);
+      ymax  = std::max(ymax, y[r]);
+    }
+    best = std::min(best, bound);
+    // |K| has a positive diagonal, so y > 0 whenever d > 0: every d stays positive.
+    for (int r = 0; r < n; ++r) d[r] = y[r] / ymax;
+  }
+  return best;
+}
+
+// True when sigma I - S (S = diag(s) K diag(s), s = mass^{-1/2}) is proven positive definite:
+// floating-point Cholesky of B - alpha I succeeds, alpha covering the factorisation's
+// round-off (Rump 2006: gamma_{n+1} / (1 - gamma_{n+1}) trace(B), doubled) and the rounding
+// and asymmetry of B as formed here (n times its largest entry error).
+bool provenAbove(int n, const std::vector<double> &cols, const std::vector<double> &s, double sigma) {
+  const double        eps = 0x1p-53, gamma = (n + 1) * eps / (1 - (n + 1) * eps);
+  std::vector<double> B((size_t)n * n);
+  double              trace = 0, entry_error = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j <= i; ++j) {
+      const double kij = cols[(size_t)j * n + i], kji = cols[(size_t)i * n + j];
+      B[(size_t)i * n + j] = (i == j ? sigma : 0.0) - kij * s[i] * s[j];
+      entry_error          = std::max(entry_error, std::fabs(kij - kji) * s[i] * s[j] + 4 * eps * (std::fabs(B[(size_t)i * n + j]) + (i == j ? sigma : 0.0)));
+      if (i == j) trace += B[(size_t)i * n + i];
+    }
+  if (!(trace > 0)) return false;
+  const double alpha = 2 * gamma / (1 - gamma) * trace + n * entry_error;
+  for (int i = 0; i < n; ++i) B[(size_t)i * n + i] -= alpha;
+  for (int j = 0; j < n; ++j) {
+    double *Lj = &B[(size_t)j * n];
+    double  d  = Lj[j];
+    for (int k = 0; k < j; ++k) d -= Lj[k] * Lj[k];
+    if (!(d > 0)) return false;
+    Lj[j] = std::sqrt(d);
+    for (int i = j + 1; i < n; ++i) {
+      double *Li = &B[(size_t)i * n];
+      double  v  = Li[j];
+      for (int k = 0; k < j; ++k) v -= Li[k] * Lj[k];
+      Li[j] = v / Lj[j];
+    }
+  }
+  return true;
 }
 
 } // namespace
@@ -154,33 +207,39 @@ void spectralElementStiffness(int dim, int p, const double *wdet, const double *
 
 void spectralElementRowAbsSums(int dim, int p, const double *wdet, const double *jinv, const LameParameters &m, double *rowabs) {
   const int  n    = dim * spectralNodeCount(dim, p);
-  const auto absK = absColumns(dim, p, wdet, jinv, m);
+  const auto cols = stiffnessColumns(dim, p, wdet, jinv, m);
   std::fill(rowabs, rowabs + n, 0.0);
   for (int j = 0; j < n; ++j)
-    for (int r = 0; r < n; ++r) rowabs[r] += absK[(size_t)j * n + r];
+    for (int r = 0; r < n; ++r) rowabs[r] += std::fabs(cols[(size_t)j * n + r]);
 }
 
-double spectralElementEigenBound(int dim, int p, const double *wdet, const double *jinv, const LameParameters &m, double rho, int iterations) {
-  const int           n    = dim * spectralNodeCount(dim, p);
-  const auto          absK = absColumns(dim, p, wdet, jinv, m);
-  std::vector<double> d(n, 1.0), y(n);
-  double              best = HUGE_VAL;
-  for (int it = 0; it <= iterations; ++it) {
-    // y = M_e^{-1} |K_e| d, accumulated column by column.
+double spectralElementEigenBound(int dim, int p, const double *wdet, const double *jinv, const LameParameters &m, double rho, EigenBoundKind kind) {
+  const int           nq = spectralNodeCount(dim, p), n = dim * nq;
+  const auto          cols = stiffnessColumns(dim, p, wdet, jinv, m);
+  std::vector<double> mass(n);
+  for (int r = 0; r < n; ++r) mass[r] = rho * wdet[r / dim];
+  if (kind == EigenBoundKind::Gershgorin) return collatzWielandt(n, cols, mass.data(), 0);
+  const double cw = collatzWielandt(n, cols, mass.data(), 30);
+  if (kind == EigenBoundKind::CollatzWielandt) return cw;
+  // lambda~: Rayleigh quotient of S = M^{-1/2} K M^{-1/2} after power steps (a lower bound).
+  std::vector<double> s(n), v(n, 1.0), y(n);
+  for (int r = 0; r < n; ++r) s[r] = 1 / std::sqrt(mass[r]);
+  double lambda = 0;
+  for (int it = 0; it < 300; ++it) {
     std::fill(y.begin(), y.end(), 0.0);
     for (int j = 0; j < n; ++j)
-      for (int r = 0; r < n; ++r) y[r] += absK[(size_t)j * n + r] * d[j];
-    double bound = 0, ymax = 0;
-    for (int r = 0; r < n; ++r) {
-      y[r] /= rho * wdet[r / dim];
-      bound = std::max(bound, y[r] / d[r]);
-      ymax  = std::max(ymax, y[r]);
-    }
-    best = std::min(best, bound);
-    // |K_e| has a positive diagonal, so y > 0 whenever d > 0: every d stays positive.
-    for (int r = 0; r < n; ++r) d[r] = y[r] / ymax;
+      for (int r = 0; r < n; ++r) y[r] += cols[(size_t)j * n + r] * s[j] * v[j];
+    double vy = 0, vv = 0, norm = 0;
+    for (int r = 0; r < n; ++r) y[r] *= s[r], vy += v[r] * y[r], vv += v[r] * v[r], norm = std::max(norm, std::fabs(y[r]));
+    lambda = vy / vv;
+    for (int r = 0; r < n; ++r) v[r] = y[r] / norm;
   }
-  return best;
+  for (int k = 0; k < 5; ++k) {
+    const double sigma = lambda * (1 + 0.005 * std::pow(3.0, k));
+    if (sigma >= cw) break;
+    if (provenAbove(n, cols, s, sigma)) return sigma;
+  }
+  return cw;
 }
 
 void spectralBasisValues(int dim, int p, const double *xi, double *N) {

@@ -207,11 +207,11 @@ void SpectralOperator::addStiffnessRowAbsSums(PetscScalar *rowabs) const {
       for (PetscInt c = 0; c < dim_; ++c) rowabs[node_offset_[e * nq_ + a] + c] += sums[(size_t)record_[e] * n + a * dim_ + c];
 }
 
-double SpectralOperator::maxElementEigenBound(int iterations) const {
+double SpectralOperator::maxElementEigenBound(EigenBoundKind kind) const {
   double bound = 0;
   for (PetscInt r = 0; r < distinctGeometries(); ++r)
     bound = std::max(bound, spectralElementEigenBound((int)dim_, (int)degree_, &wdet_[(size_t)r * nq_], &jinv_[(size_t)r * nq_ * dim_ * dim_], record_material_[r].lame,
-                                                      record_material_[r].rho, iterations));
+                                                      record_material_[r].rho, kind));
   return bound;
 }
 

@@ -9,6 +9,7 @@
 #include "unit_check.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -209,6 +210,30 @@ int main() {
         for (int k = 0; k < 6; ++k) perr = std::max(perr, std::fabs(sigma[k] - want[k]));
       }
       unit::near(perr / std::fabs(kLame.lambda * tr + 2 * kLame.mu * 1e-3), 0, 0, 1e-12, tag + "patch test: linear field gives its constant stress");
+
+      // Eigenvalue bounds of one element, against lambda_max(M_e^{-1} K_e) from below (the
+      // Rayleigh quotient of power steps: a bound under it would be wrong).
+      if (dim == 2 || p <= 4) {
+        const double rho = 2100;
+        std::vector<double> v(n, 1.0), y(n);
+        double              rq = 0;
+        for (int it = 0; it < 3000; ++it) {
+          double vKv = 0, vMv = 0, norm = 0;
+          for (int r = 0; r < n; ++r) {
+            y[r] = 0;
+            for (int c = 0; c < n; ++c) y[r] += K[r * n + c] * v[c];
+            vKv += v[r] * y[r], vMv += v[r] * rho * wdet[r / dim] * v[r];
+          }
+          rq = vKv / vMv;
+          for (int r = 0; r < n; ++r) v[r] = y[r] / (rho * wdet[r / dim]), norm = std::max(norm, std::fabs(v[r]));
+          for (int r = 0; r < n; ++r) v[r] /= norm;
+        }
+        const double gersh = spectralElementEigenBound(dim, p, wdet.data(), jinv.data(), kLame, rho, EigenBoundKind::Gershgorin);
+        const double cw    = spectralElementEigenBound(dim, p, wdet.data(), jinv.data(), kLame, rho, EigenBoundKind::CollatzWielandt);
+        const double cert  = spectralElementEigenBound(dim, p, wdet.data(), jinv.data(), kLame, rho, EigenBoundKind::Certified);
+        unit::check(rq <= cert && cert <= cw && cw <= gersh, tag + "element bounds ordered: lambda <= certified <= Collatz-Wielandt <= Gershgorin");
+        std::printf("# %selement bound / lambda_max: Gershgorin %.3f Collatz-Wielandt %.3f certified %.4f\n", tag.c_str(), gersh / rq, cw / rq, cert / rq);
+      }
 
       // Partition of unity and interpolation (N_a(x_b) = delta_ab) of the tensor basis.
       std::vector<double> N(nq);

@@ -136,17 +136,21 @@ PetscErrorCode checkBounds(int dim, int p) {
   op.addStiffnessRowAbsSums(rowabs.data());
   double gershgorin = 0;
   for (PetscInt i = 0; i < m.ndof; ++i) gershgorin = std::max(gershgorin, rowabs[i] / mass[i]);
-  const double element_gershgorin = op.maxElementEigenBound(0), element_cw = op.maxElementEigenBound(30);
+  const double element_gershgorin = op.maxElementEigenBound(fem::EigenBoundKind::Gershgorin);
+  const double element_cw         = op.maxElementEigenBound(fem::EigenBoundKind::CollatzWielandt);
+  const double element_certified  = op.maxElementEigenBound(fem::EigenBoundKind::Certified);
   const double lambda             = rayleighLowerBound(op, mass, 4000);
   const std::string tag = std::to_string(dim) + "D p=" + std::to_string(p) + " warped ";
   unit::check(gershgorin >= lambda, tag + "global Gershgorin bound >= lambda_max(M^-1 K)");
   unit::check(element_gershgorin >= lambda, tag + "element Gershgorin bound >= lambda_max(M^-1 K)");
   unit::check(element_cw >= lambda, tag + "element Collatz-Wielandt bound >= lambda_max(M^-1 K)");
+  unit::check(element_certified >= lambda, tag + "element certified bound >= lambda_max(M^-1 K)");
   unit::check(element_cw <= element_gershgorin, tag + "Collatz-Wielandt iterations tighten the element Gershgorin bound");
-  std::printf("# %s bound / lambda_max: global Gershgorin %.3f, element Gershgorin %.3f, element Collatz-Wielandt(30) %.3f "
-              "(stable dt ratio = 1/sqrt of these: %.3f %.3f %.3f)\n",
-              tag.c_str(), gershgorin / lambda, element_gershgorin / lambda, element_cw / lambda, 1 / std::sqrt(gershgorin / lambda),
-              1 / std::sqrt(element_gershgorin / lambda), 1 / std::sqrt(element_cw / lambda));
+  unit::check(element_certified <= element_cw, tag + "the certified bound is no looser than Collatz-Wielandt");
+  std::printf("# %s bound / lambda_max: global Gershgorin %.3f, element Gershgorin %.3f, element Collatz-Wielandt %.3f, "
+              "element certified %.3f (stable dt ratio = 1/sqrt of these: %.3f %.3f %.3f %.3f)\n",
+              tag.c_str(), gershgorin / lambda, element_gershgorin / lambda, element_cw / lambda, element_certified / lambda, 1 / std::sqrt(gershgorin / lambda),
+              1 / std::sqrt(element_gershgorin / lambda), 1 / std::sqrt(element_cw / lambda), 1 / std::sqrt(element_certified / lambda));
   PetscFunctionReturn(0);
 }
 

@@ -44,9 +44,9 @@ public:
   // Adds sum_j |K_e,ij| per dof (element Gershgorin row sums; their assembly bounds the row
   // sums of K, so max_i rowabs_i / m_i >= omega_max^2 as for the Q1 operator).
   void addStiffnessRowAbsSums(PetscScalar *rowabs_local) const;
-  // max over this rank's elements of spectralElementEigenBound(..., iterations): a rigorous
+  // max over this rank's geometry records of spectralElementEigenBound(kind): a rigorous
   // bound on omega_max^2 of the assembled bulk (reduce with MPI_MAX across ranks).
-  double maxElementEigenBound(int iterations) const;
+  double maxElementEigenBound(EigenBoundKind kind) const;
   // Stress (xx, yy, zz, xy, yz, xz) in element e at the reference point xi.
   void stressAt(PetscInt e, const double *xi, const PetscScalar *u_local, double *sigma) const;
 
