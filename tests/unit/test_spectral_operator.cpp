@@ -154,8 +154,23 @@ PetscErrorCode checkBounds(int dim, int p) {
   PetscFunctionReturn(0);
 }
 
+// A folded element (the block mirrored in x at one node column) stops Setup with an error.
+PetscErrorCode checkFoldedElementRejected() {
+  PetscFunctionBeginUser;
+  const int ne[3] = {2, 1, 1};
+  auto      m     = unit::spectralBoxMesh(2, 2, ne, 1.0);
+  m.coords[0]     = 1.5; // node 0 of element 0 pushed past its neighbours: det J < 0 there
+  SpectralOperator op;
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
+  const PetscErrorCode ierr = op.Setup(2, 2, m.nelem, m.coords.data(), m.node_offset.data(), m.region.data(), kMaterials);
+  PetscCall(PetscPopErrorHandler());
+  unit::check(ierr == PETSC_ERR_USER_INPUT, "folded element stops Setup with PETSC_ERR_USER_INPUT");
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode run(bool) {
   PetscFunctionBeginUser;
+  PetscCall(checkFoldedElementRejected());
   for (int dim = 2; dim <= 3; ++dim)
     for (int p = 1; p <= kMaxSpectralDegree; ++p) {
       PetscCall(checkForce(dim, p, false));
