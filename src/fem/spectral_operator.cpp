@@ -215,6 +215,11 @@ double SpectralOperator::maxElementEigenBound(EigenBoundKind kind) const {
   return bound;
 }
 
+void SpectralOperator::elementStiffness(PetscInt e, double *K) const {
+  const PetscInt r = record_[e];
+  spectralElementStiffness((int)dim_, (int)degree_, &wdet_[(size_t)r * nq_], &jinv_[(size_t)r * nq_ * dim_ * dim_], record_material_[r].lame, K);
+}
+
 void SpectralOperator::stressAt(PetscInt e, const double *xi, const PetscScalar *u, double *sigma) const {
   double ue[kMaxSpectralDofs];
   for (PetscInt a = 0; a < nq_; ++a)

@@ -75,6 +75,16 @@ PetscErrorCode checkForce(int dim, int p, bool warped) {
   std::fill(f.begin(), f.end(), 0.0);
   op.addStiffnessTimes(op.subset(some), u.data(), f.data());
   unit::near(roundoffDifference(f, elementByElement(m, some, u), rowabs, u), 0, 0, 1e-14, tag + "subset K u = element-by-element K u on the subset");
+  // The element matrix of the last element times its u = the operator on that element alone.
+  {
+    const PetscInt      e = m.nelem - 1, n = op.nodesPerElement() * dim;
+    std::vector<double> K((size_t)n * n), fe(m.ndof, 0.0), want(m.ndof, 0.0);
+    op.elementStiffness(e, K.data());
+    for (PetscInt r = 0; r < n; ++r)
+      for (PetscInt c = 0; c < n; ++c) want[op.elementNodeOffset(e, r / dim) + r % dim] += K[r * n + c] * u[op.elementNodeOffset(e, c / dim) + c % dim];
+    op.addStiffnessTimes(op.subset({e}), u.data(), fe.data());
+    unit::near(roundoffDifference(fe, want, rowabs, u), 0, 0, 1e-14, tag + "elementStiffness x u = the operator on that element");
+  }
   // Mass of the block: rho x its volume per component (box: 4 x 3 (x 2) unit cubes).
   std::vector<double> mass(m.ndof, 0.0);
   op.addLumpedMass(mass.data());

@@ -47,6 +47,9 @@ public:
   // max over this rank's geometry records of spectralElementEigenBound(kind): a rigorous
   // bound on omega_max^2 of the assembled bulk (reduce with MPI_MAX across ranks).
   double maxElementEigenBound(EigenBoundKind kind) const;
+  // Element matrix of element e: (dim (p+1)^dim)^2 values row-major, row a*dim+i (node-major),
+  // the operator addStiffnessTimes applies (for assembling K where a static solve needs it).
+  void elementStiffness(PetscInt e, double *K) const;
   // Stress (xx, yy, zz, xy, yz, xz) in element e at the reference point xi.
   void stressAt(PetscInt e, const double *xi, const PetscScalar *u_local, double *sigma) const;
 
