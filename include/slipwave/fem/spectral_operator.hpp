@@ -28,10 +28,12 @@ public:
 
   // f_local += K u_local over all elements (local, ghosted arrays; no communication).
   void addStiffnessTimes(const PetscScalar *u_local, PetscScalar *f_local) const;
-  // A list of elements with its batching plan, for the same loop on a subset.
-  struct alignas(64) FactorLanes { // one factor of the 8 elements of a lane batch (one SIMD vector)
+  // One geometric factor of the 8 elements of a lane batch (one SIMD vector).
+  struct alignas(64) FactorLanes {
     double lane[8];
   };
+  // A list of elements (local numbers, any order; runs of consecutive elements of one region
+  // batch best) with its batching plan, for the same loop on a subset.
   struct Subset {
     std::vector<PetscInt>    elements;
     std::vector<PetscInt>    groups;       // per group: kind, first position in elements, record or lane-factor offset
@@ -59,6 +61,8 @@ public:
   PetscInt nodesPerElement() const { return nq_; }
   PetscInt distinctGeometries() const { return (PetscInt)record_material_.size(); }
   PetscInt elementRegion(PetscInt e) const { return region_[e]; }
+  // Index of element e's geometry record: elements with the same index share region and shape.
+  PetscInt elementRecord(PetscInt e) const { return record_[e]; }
   PetscInt elementNodeOffset(PetscInt e, PetscInt a) const { return node_offset_[e * nq_ + a]; }
   const double *elementCoordinates(PetscInt e) const { return &coords_[(size_t)e * nq_ * dim_]; }
 
