@@ -4,7 +4,8 @@
 # directly or through another slipwave header.
 set -u
 cd "$(dirname "$0")/../.."
-files=(include/slipwave/physics/*.hpp include/slipwave/fem/element_kernels.hpp src/fem/element_kernels.cpp)
+files=(include/slipwave/physics/*.hpp include/slipwave/fem/element_kernels.hpp src/fem/element_kernels.cpp
+       include/slipwave/fem/gll_basis.hpp include/slipwave/fem/spectral_kernels.hpp include/slipwave/fem/spectral_force_kernel.hpp src/fem/spectral_kernels.cpp)
 [ -e "${files[0]}" ] || { echo "no physics headers found"; exit 1; }
 bad=0
 for f in "${files[@]}"; do
