@@ -1,0 +1,57 @@
+# Speed against error of elements of degree p (issue 14's benchmark), through the real
+# executable: Lamb's line load on an elastic half-space (half model, rollers on x = 0,
+# absorbing right side and base, Ricker f0 10 Hz), six surface receivers at 8-28 minimum S
+# wavelengths, relative L2 error of their velocity traces against the frequency-wavenumber
+# solution (tests/tools/lamb_line_load.py). The domain, window and error are set out in
+# bench/sem_speed_error.py, which also plans the refinement series and analyses the runs.
+# Per p in SEM_BENCH_DEGREES (default "1 2 4 6") a series of meshes (SEM_BENCH_PPW_<p>: target
+# GLL nodes per lambda_min; SEM_BENCH_FULL=1 adds the finest p = 1 mesh); per run: wall time of
+# the time loop (the run report's "done:" line: TSSolve only, no set-up), best of
+# SEM_BENCH_REPEATS (1) on SEM_BENCH_RANKS (1) ranks. Degrees above 1 are skipped, with a note,
+# by a build without -element_degree. Rows to $BENCH_CSV; table and PNG plot to
+# docs/spectral-elements.md (SEM_BENCH_DOC) and the PNG beside it.
+# Default series: ~10 min on one idle core (p = 1 at 48 nodes per wavelength is ~4-5 min).
+set -eu
+cd "$(dirname "$0")/../.."
+BUILD=${BUILD:-build}
+SW="$BUILD/slipwave"
+PY=/usr/bin/python3
+MPIEXEC="mpiexec --oversubscribe"
+[ "$(id -u)" = 0 ] && MPIEXEC="$MPIEXEC --allow-run-as-root"
+RANKS=${SEM_BENCH_RANKS:-1}
+REPEATS=${SEM_BENCH_REPEATS:-1}
+WORK=${SEM_BENCH_WORK:-$BUILD/bench/work/sem_speed_error}
+mkdir -p "$WORK"
+rm -f "$WORK/manifest.txt"
+
+eval "$($PY bench/sem_speed_error.py geometry)"
+LAMB="-mesh_box_upper $L,$H -regions soil -material_soil_rho 2000 -material_soil_vp 692.820323 -material_soil_vs 400
+ -bc_left_type fixed -bc_left_components x -bc_right_type absorbing -bc_bottom_type absorbing
+ -point_forces src -point_force_src_location $SRC -point_force_src_force 0,-5e4 -point_force_src_stf ricker -point_force_src_f0 10 -point_force_src_t0 0.12
+ -ts_max_time $T_END -output_fields 0 -progress_interval 1000 -station_coordinates $STATIONS -station_names $NAMES"
+launch="$SW"
+[ "$RANKS" -gt 1 ] && launch="$MPIEXEC -n $RANKS $SW"
+has_degree=0
+"$SW" -help 2>/dev/null | grep -q -- "-element_degree" && has_degree=1
+
+while read -r p m nx ny; do
+  degree=""
+  if [ "$p" != 1 ]; then
+    if [ "$has_degree" = 0 ]; then
+      [ "${skipped:-}" = "$p" ] || echo "sem_speed_error: p = $p skipped: $SW has no -element_degree"
+      skipped=$p; continue
+    fi
+    degree="-element_degree $p"
+  fi
+  best=""
+  for k in $(seq 1 "$REPEATS"); do
+    out="$WORK/p${p}_${nx}x${ny}_np${RANKS}_$k"
+    $launch $LAMB $degree -mesh_box_faces "$nx,$ny" -output_dir "$out" -output_overwrite > "$out.log"
+    loop=$(sed -n 's/^done: [0-9]* steps in \([0-9.]*\) s wall.*/\1/p' "$out.log")
+    echo "p = $p, $nx x $ny elements: time loop $loop s"
+    if [ -z "$best" ] || $PY -c "import sys; sys.exit(0 if $loop < $best else 1)"; then best=$loop; keep=$out; fi
+  done
+  echo "$p $m $nx $ny $RANKS $keep.log $keep/stations" >> "$WORK/manifest.txt"
+done < <($PY bench/sem_speed_error.py plan)
+
+$PY bench/sem_speed_error.py analyse "$WORK/manifest.txt"

@@ -1,0 +1,306 @@
+#!/usr/bin/env python3
+"""Speed against error of elements of degree p (issue 14's benchmark): the plan of the runs, and
+their analysis (errors against the exact solution, table, CSV rows, markdown, PNG plot).
+
+The problem: Lamb's line load on an elastic half-space (rho 2000, vp 692.8, vs 400: nu = 0.25),
+a vertical load 1e5 N/m x Ricker (f0 10 Hz, t0 0.12 s) at the surface, as in
+tests/cases/lamb_line_load.sh: half model, rollers on the symmetry plane x = 0 (which carries
+half the load), absorbing right side and base. Six surface receivers at 8, 12, ..., 28 minimum
+S wavelengths lambda_min = vs / (2.7638 f0) = 14.47 m (2.7638 f0: the Ricker's top
+frequency, where its spectrum is 5 % of the peak; the issue's lambda_min 62.7 m comes from the
+same definition). Every length is a multiple of 4 lambda_min, so with m elements per
+4 lambda_min every receiver and every side falls on an element vertex at any degree.
+
+Window and domain, chosen so that no wave reflected by an absorbing side reaches any receiver
+before the window ends (the Lysmer dashpots are exact only at normal incidence; this makes the
+error the discretisation's alone). The window ends at T = 1.33 s: the Rayleigh pulse reaches
+the farthest receiver (405.2 m) at t0 + x / c_R = 0.12 + 1.102 = 1.222 s (c_R = 0.9194 vs) and
+has passed it 0.11 s later (the Ricker is below 1e-3 of its peak 0.1 s from t0). The fastest
+echo is a P wave leaving the source at t = 0 (the Ricker there is 2e-5 of its peak):
+  right side at L = 48 lambda_min = 694.7 m: at the farthest receiver after
+    (2 L - 405.2) / vp = 1.421 s > T;
+  base at H = 32 lambda_min = 463.1 m: at the nearest receiver (115.8 m) after
+    sqrt(115.8^2 + (2 H)^2) / vp = 1.347 s > T (the other receivers are farther from it).
+
+Error: relative L2 of the surface velocity traces (v_x and v_y of all six receivers pooled:
+sqrt(sum |v - v_ref|^2 / sum |v_ref|^2) over the station samples in [0, T]) against
+tests/tools/lamb_line_load.py (frequency-wavenumber integral, validated there against Flamant
+and the Rayleigh arrival). The reference velocity is the response to the load's time
+derivative (exact, no numerical differentiation), on a 2.5e-4 s grid, interpolated to the
+station times by a cubic spline.
+
+Usage (bench/cases/sem_speed_error.sh drives it):
+  sem_speed_error.py geometry            shell assignments: the domain, window and receivers
+  sem_speed_error.py plan                one line per run: p m nx ny (from the environment)
+  sem_speed_error.py analyse MANIFEST    MANIFEST lines: p m nx ny ranks log stations_dir
+Environment: SEM_BENCH_DEGREES (default "1 2 4 6"), SEM_BENCH_PPW_<p> (the refinement series
+as target nodes per lambda_min counted in GLL nodes, p x lambda_min / h; each is rounded to
+whole elements per 4 lambda_min), SEM_BENCH_FULL=1 (adds p = 1 meshes at 14 and 56 nodes per lambda_min, ~8 min more),
+BENCH_CSV (rows appended there), SEM_BENCH_DOC (markdown file whose results section is
+replaced; default docs/spectral-elements.md; the PNG goes next to it).
+"""
+import datetime
+import math
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tests", "tools"))
+from lamb_line_load import ricker, surface_response  # noqa: E402
+
+RHO, VP, VS = 2000.0, 692.820323, 400.0
+F, F0, T0 = 1e5, 10.0, 0.12
+LAMBDA_MIN = VS / (2.7638 * F0)
+UNIT = 4 * LAMBDA_MIN                    # every length is a multiple of it (vertices at any degree)
+LENGTH_UNITS, DEPTH_UNITS = 12, 8        # L = 48 lambda_min, H = 32 lambda_min
+RECEIVERS = [8, 12, 16, 20, 24, 28]      # travel in lambda_min
+T_END = 1.33
+TARGET_ERROR = 0.01
+
+# Default refinement series, target GLL nodes per lambda_min. Sized for ~10 min on one core of
+# this machine when idle; p = 1 dominates (48 nodes per wavelength: 7.1 M DOFs, ~3900 steps,
+# ~4-5 min alone) and needs it: its error is 1 % at ~44 (measured 10.2 % at 14, order 2.0).
+DEFAULT_PPW = {1: [10, 20, 28, 40, 48], 2: [5, 6, 8, 10, 14, 20], 4: [3, 4, 5, 6, 7, 8, 10], 6: [4.5, 6, 7.5, 9]}
+FULL_EXTRA_PPW = {1: [14, 56]}
+
+
+def receivers_x():
+    return [k * LAMBDA_MIN for k in RECEIVERS]
+
+
+def geometry():
+    L, H = LENGTH_UNITS * UNIT, DEPTH_UNITS * UNIT
+    c_r = 0.9194 * VS
+    # The margins quoted in the module docstring, checked here so a change of the constants
+    # cannot silently let an echo into the window.
+    right_echo = (2 * L - receivers_x()[-1]) / VP
+    base_echo = math.hypot(receivers_x()[0], 2 * H) / VP
+    assert right_echo > T_END and base_echo > T_END and T0 + receivers_x()[-1] / c_r + 0.1 < T_END
+    coords = ",".join(f"{x:.10g},{H:.10g}" for x in receivers_x())
+    names = ",".join(f"r{k}" for k in RECEIVERS)
+    print(f"L={L:.10g} H={H:.10g} T_END={T_END} STATIONS={coords} NAMES={names}")
+    # The source: a point just inside the corner (0, H); the nearest node (the corner) takes it.
+    print(f"SRC={0.01:.10g},{H - 0.01:.10g}")
+
+
+def series(p):
+    env = os.environ.get(f"SEM_BENCH_PPW_{p}")
+    if env:
+        ppw = [float(v) for v in env.split()]
+    else:
+        ppw = DEFAULT_PPW.get(p, [4, 6, 8, 10])
+        if os.environ.get("SEM_BENCH_FULL") == "1":
+            ppw = ppw + FULL_EXTRA_PPW.get(p, [])
+    # m elements per 4 lambda_min: nodes per lambda_min = p m / 4.
+    ms = sorted({max(1, round(4 * v / p)) for v in ppw})
+    return ms
+
+
+def plan():
+    for p in [int(v) for v in os.environ.get("SEM_BENCH_DEGREES", "1 2 4 6").split()]:
+        for m in series(p):
+            print(p, m, LENGTH_UNITS * m, DEPTH_UNITS * m)
+
+
+def reference(cache):
+    """Surface velocities (v_x, v_y with y up) at the receivers on a fine grid, cached."""
+    key = f"{RHO}_{VP}_{VS}_{F}_{F0}_{T0}_{RECEIVERS}"
+    if os.path.exists(cache):
+        data = np.load(cache)
+        if str(data["key"]) == key:
+            return data["t"], data["vx"], data["vy"]
+    t = np.arange(0.0, 4.0, 2.5e-4)
+    # d/dt of the Ricker: the response to it is the velocity.
+    a = (np.pi * F0 * (t - T0)) ** 2
+    dricker = -2 * (np.pi * F0) ** 2 * (t - T0) * (3 - 2 * a) * np.exp(-a)
+    assert np.allclose(np.gradient(ricker(t, F0, T0), t)[1:-1], dricker[1:-1], atol=2e-3 * np.abs(dricker).max())
+    vx, vy = [], []
+    for x in receivers_x():
+        uz, ux = surface_response(x, t, F * dricker, RHO, VP, VS, f_max=50)
+        # u_z is positive down, the mesh's y up; u_x positive away from the load, as the mesh's x.
+        vx.append(ux)
+        vy.append(-uz)
+    np.savez(cache, key=key, t=t, vx=np.array(vx), vy=np.array(vy))
+    return t, np.array(vx), np.array(vy)
+
+
+def run_error(stations_dir, ref):
+    from scipy.interpolate import CubicSpline
+    t_ref, vx_ref, vy_ref = ref
+    num = den = 0.0
+    per_receiver = []
+    for i, k in enumerate(RECEIVERS):
+        d = np.genfromtxt(os.path.join(stations_dir, f"r{k}.csv"), delimiter=",", names=True)
+        inside = d["t"] <= T_END + 1e-9
+        e2 = r2 = 0.0
+        for name, ref_c in (("v_x", vx_ref[i]), ("v_y", vy_ref[i])):
+            r = CubicSpline(t_ref, ref_c)(d["t"][inside])
+            e2 += np.sum((d[name][inside] - r) ** 2)
+            r2 += np.sum(r ** 2)
+        per_receiver.append(math.sqrt(e2 / r2))
+        num += e2
+        den += r2
+    return math.sqrt(num / den), per_receiver
+
+
+def parse_log(path):
+    text = open(path).read()
+    m = re.search(r"done: (\d+) steps in ([0-9.]+) s wall \(([0-9.eE+-]+) s per step\)", text)
+    steps, wall, per = int(m.group(1)), float(m.group(2)), float(m.group(3))
+    # The time loop (TSSolve: the steps and their monitor, no set-up, no final output);
+    # "s per step" carries 3 significant digits where "s wall" has 2 decimals.
+    loop = max(wall, steps * per) if wall < 10 else wall
+    nodes = re.search(r"cells, (\d+) nodes", text)
+    return steps, loop, int(nodes.group(1)) if nodes else None
+
+
+def at_target(points):
+    """Time at TARGET_ERROR by log-log interpolation between the bracketing runs, or
+    extrapolation from the two nearest ones (flagged). points: (error, time), any order."""
+    pts = sorted(points, key=lambda q: -q[0])
+    if len(pts) < 2:
+        return None, ""
+    for (e1, t1), (e2, t2) in zip(pts, pts[1:]):
+        if e1 >= TARGET_ERROR >= e2:
+            s = math.log(TARGET_ERROR / e1) / math.log(e2 / e1)
+            return math.exp(math.log(t1) + s * math.log(t2 / t1)), "interpolated"
+    (e1, t1), (e2, t2) = (pts[-2], pts[-1]) if pts[-1][0] > TARGET_ERROR else (pts[0], pts[1])
+    if e2 >= e1 or t2 <= t1:
+        return None, ""
+    s = math.log(TARGET_ERROR / e1) / math.log(e2 / e1)
+    return math.exp(math.log(t1) + s * math.log(t2 / t1)), "extrapolated"
+
+
+def fmt(value, spec, missing="n/a"):
+    return missing if value is None else format(value, spec)
+
+
+def analyse(manifest):
+    work = os.path.dirname(os.path.abspath(manifest))
+    ref = reference(os.path.join(work, "reference.npz"))
+    runs = []
+    for line in open(manifest):
+        if not line.strip():
+            continue
+        p, m, nx, ny, ranks, log, stations = line.split()
+        p, m, nx, ny, ranks = int(p), int(m), int(nx), int(ny), int(ranks)
+        steps, loop, nodes = parse_log(log)
+        expected = (nx * p + 1) * (ny * p + 1)
+        if nodes is not None and nodes != expected:
+            print(f"warning: {log}: the run report says {nodes} nodes, (nx p + 1)(ny p + 1) = {expected}")
+        err, per_receiver = run_error(stations, ref)
+        dofs = 2 * expected
+        runs.append(dict(p=p, m=m, nx=nx, ny=ny, ranks=ranks, ppw=p * m / 4, dofs=dofs, steps=steps, loop=loop, err=err,
+                         err_far=per_receiver[-1], rate=dofs * steps / loop / ranks))
+    runs.sort(key=lambda r: (r["p"], r["m"]))
+    degrees = sorted({r["p"] for r in runs})
+    for r in runs:
+        prev = [q for q in runs if q["p"] == r["p"] and q["m"] < r["m"]]
+        r["order"] = math.log(prev[-1]["err"] / r["err"]) / math.log(r["m"] / prev[-1]["m"]) if prev else None
+
+    header = ("| p | elements | h / lambda_min | GLL nodes per lambda_min | DOFs | steps | time loop [s] | error | error, farthest receiver | observed order | M DOF-updates/s/core |\n"
+              "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n")
+    table = header + "".join(
+        f"| {r['p']} | {r['nx']} x {r['ny']} | {4 / r['m']:.3g} | {r['ppw']:.3g} | {r['dofs']} | {r['steps']} | {r['loop']:.3g} | {100 * r['err']:.3g} % | "
+        f"{100 * r['err_far']:.3g} % | {fmt(r['order'], '.2f', '')} | {r['rate'] / 1e6:.1f} |\n" for r in runs)
+
+    summary = {}
+    for p in degrees:
+        mine = [r for r in runs if r["p"] == p]
+        t, how = at_target([(r["err"], r["loop"]) for r in mine])
+        summary[p] = dict(time=t, how=how, rate=mine[-1]["rate"])
+    q1 = summary.get(1, {}).get("time")
+    lines = ("| p | time loop at 1 % error [s] | how | Q1 time / this time (target >= 40) | M DOF-updates/s/core (finest run) |\n"
+             "|---:|---:|---|---:|---:|\n")
+    for p in degrees:
+        s = summary[p]
+        ratio = q1 / s["time"] if q1 and s["time"] else None
+        s["ratio"] = ratio
+        lines += (f"| {p} | {fmt(s['time'], '.3g')} | {s['how'] or 'not bracketed'} | {fmt(ratio, '.3g')} | {s['rate'] / 1e6:.1f} |\n")
+    print(table)
+    print(lines)
+
+    csv = os.environ.get("BENCH_CSV")
+    if csv:
+        with open(csv, "a") as out:
+            for r in runs:
+                case = f"p{r['p']}_{r['nx']}x{r['ny']}"
+                for metric, value, unit in (("degree", r["p"], "1"), ("elements_x", r["nx"], "1"), ("elements_y", r["ny"], "1"),
+                                            ("gll_nodes_per_min_wavelength", r["ppw"], "1"), ("dofs", r["dofs"], "1"), ("steps", r["steps"], "1"),
+                                            ("time_loop_wall_time", r["loop"], "s"), ("l2_error_surface_velocity", r["err"], "1"),
+                                            ("l2_error_farthest_receiver", r["err_far"], "1"), ("dof_updates_per_second_per_core", r["rate"], "1/s")):
+                    out.write(f"sem_speed_error,{case},{metric},{value if isinstance(value, int) else format(value, '.4g')},{unit}\n")
+            for p in degrees:
+                s = summary[p]
+                if s["time"] is not None:
+                    out.write(f"sem_speed_error,p{p},time_loop_at_1pct_error_{s['how']},{s['time']:.4g},s\n")
+                if s["ratio"] is not None:
+                    out.write(f"sem_speed_error,p{p},q1_time_over_time_at_1pct_error,{s['ratio']:.4g},1\n")
+
+    doc = os.environ.get("SEM_BENCH_DOC", os.path.join(ROOT, "docs", "spectral-elements.md"))
+    png = os.path.splitext(doc)[0] + "_speed_error.png"
+    plot(runs, degrees, png)
+    write_doc(doc, os.path.basename(png), table, lines)
+    print(f"table in {doc}, plot in {png}")
+
+
+def plot(runs, degrees, png):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
+    for p in degrees:
+        mine = [r for r in runs if r["p"] == p]
+        ax1.loglog([r["err"] for r in mine], [r["loop"] for r in mine], "o-", label=f"p = {p}")
+        ax2.loglog([r["ppw"] for r in mine], [r["err"] for r in mine], "o-", label=f"p = {p}")
+    for ax in (ax1, ax2):
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend()
+    ax1.axvline(TARGET_ERROR, color="gray", ls="--", lw=1)
+    ax1.set_xlabel("relative L2 error of the surface velocities")
+    ax1.set_ylabel("wall time of the time loop [s]")
+    ax1.invert_xaxis()
+    ax1.set_title("Lamb's line load, receivers at 8-28 lambda_min")
+    ax2.axhline(TARGET_ERROR, color="gray", ls="--", lw=1)
+    ax2.set_xlabel("GLL nodes per minimum S wavelength")
+    ax2.set_ylabel("relative L2 error")
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+
+
+BEGIN, END = "<!-- sem_speed_error: begin (written by bench/sem_speed_error.py) -->", "<!-- sem_speed_error: end -->"
+
+
+def write_doc(doc, png_name, table, lines):
+    try:
+        commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, capture_output=True, text=True).stdout.strip()
+    except OSError:
+        commit = "?"
+    load = os.getloadavg()
+    section = (f"{BEGIN}\n## Results (last `bench/cases/sem_speed_error.sh` run)\n\n"
+               f"{datetime.datetime.utcnow():%Y-%m-%d %H:%M} UTC, commit {commit}, {os.cpu_count()} cores, load average "
+               f"{load[0]:.1f} / {load[1]:.1f} / {load[2]:.1f} (1 / 5 / 15 min) when the analysis ran.\n\n"
+               f"![wall time against error]({png_name})\n\n{table}\n{lines}{END}\n")
+    text = open(doc).read() if os.path.exists(doc) else ""
+    if BEGIN in text and END in text:
+        text = text[:text.index(BEGIN)] + section + text[text.index(END) + len(END) + 1:]
+    else:
+        text = text + ("\n" if text and not text.endswith("\n\n") else "") + section
+    with open(doc, "w") as out:
+        out.write(text)
+
+
+if __name__ == "__main__":
+    command = sys.argv[1] if len(sys.argv) > 1 else ""
+    if command == "geometry":
+        geometry()
+    elif command == "plan":
+        plan()
+    elif command == "analyse" and len(sys.argv) == 3:
+        analyse(sys.argv[2])
+    else:
+        sys.exit(__doc__)
