@@ -76,7 +76,7 @@ PetscErrorCode AttenuationChooseReferences(Attenuation *att, DM dm, const fem::B
   // Gershgorin per dof of the elastic bulk, omega_i^2 = sum_j |K_ij| / m_i (free dofs only), as
   // StableStepCompute bounds it.
   PetscCall(VecDuplicate(mass, &omega2));
-  PetscCall(BulkGershgorinRowSums(dm, bulk, omega2));
+  PetscCall(BulkStiffnessRowBounds(dm, bulk, omega2));
   PetscCall(DMGetLocalVector(dm, &omega2_local));
   PetscCall(VecPointwiseDivide(omega2, omega2, mass));
   PetscCall(VecPointwiseMult(omega2, omega2, free_mask));

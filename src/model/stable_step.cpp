@@ -17,8 +17,8 @@ namespace {
 constexpr PetscReal kSafetyBulk       = 0.9;
 constexpr PetscReal kSafetyInterfaces = 0.5;
 
-// Gershgorin on M^{-1} K (similar to M^{-1/2} K M^{-1/2}): every eigenvalue omega^2 is at most
-// max_i sum_j |K_ij| / m_i. Held dofs do not vibrate.
+// K <= diag(rows) (Gershgorin row sums, or the spectral element bound times M): every
+// eigenvalue omega^2 of M^{-1} K is at most max_i rows_i / m_i. Held dofs do not vibrate.
 PetscErrorCode omegaMax(const Elastodynamics *m, Vec rows, PetscReal *omega) {
   Vec w;
   PetscFunctionBeginUser;
@@ -68,14 +68,14 @@ PetscErrorCode dashpotRowsStep(Elastodynamics *m, Vec stiffness_rows, double *dt
 
 } // namespace
 
-PetscErrorCode BulkGershgorinRowSums(DM dm, const fem::BulkOperator &bulk, Vec rows) {
+PetscErrorCode BulkStiffnessRowBounds(DM dm, const fem::BulkOperator &bulk, Vec rows) {
   Vec          local;
   PetscScalar *a;
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalVector(dm, &local));
   PetscCall(VecZeroEntries(local));
   PetscCall(VecGetArray(local, &a));
-  bulk.addStiffnessRowAbsSums(a);
+  bulk.addStiffnessRowBounds(a);
   PetscCall(VecRestoreArray(local, &a));
   PetscCall(VecZeroEntries(rows));
   PetscCall(DMLocalToGlobal(dm, local, ADD_VALUES, rows));
@@ -87,7 +87,7 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   Vec rowabs;
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(m->mass, &rowabs));
-  PetscCall(BulkGershgorinRowSums(m->dm, m->bulk, rowabs));
+  PetscCall(BulkStiffnessRowBounds(m->dm, m->bulk, rowabs));
   // Saturated regions: the rows of the undrained stiffness K + alpha^2 Q^T S^-1 Q.
   if (m->pore) {
     PetscReal omega_drained;
@@ -122,7 +122,8 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   step->dt_limit                = std::min(step->dt_limit, step->dt_free_field);
   const bool interfaces_matter  = step->dt_bulk < step->dt_without_interfaces * (1 - 1e-12);
   step->governing = std::string(interfaces_matter ? "bulk stiffness and interface penalty springs" : "bulk stiffness") +
-                    (m->rayleigh.beta > 0 ? " with stiffness-proportional damping" : "") + (dashpots ? " and contact dashpots" : "") + " (Gershgorin bound)";
+                    (m->rayleigh.beta > 0 ? " with stiffness-proportional damping" : "") + (dashpots ? " and contact dashpots" : "") +
+                    (m->bulk.degree() > 1 ? " (certified element bound, degree " + std::to_string(m->bulk.degree()) + ")" : " (Gershgorin bound)");
   if (free_field_governs) step->governing = "free-field column (Gershgorin bound)";
   // Saturated regions: the pore-pressure diffusion limits the step unless it is sub-stepped.
   if (m->pore) {

@@ -13,12 +13,14 @@ PetscErrorCode assembleStiffness(Elastodynamics *m, Mat *K) {
   PetscFunctionBeginUser;
   PetscCall(DMCreateMatrix(m->dm, K));
   PetscCall(MatSetOption(*K, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
-  const PetscInt        nen = m->bulk.nodesPerCell(), dim = m->dim, n = nen * dim;
+  const PetscInt        nen = m->bulk.nodesPerElement(), dim = m->dim, n = nen * dim;
   std::vector<PetscInt> rows(n);
-  for (PetscInt c = 0; c < m->bulk.cellCount(); ++c) {
+  std::vector<double>   Ke((size_t)n * n);
+  for (PetscInt e = 0; e < m->bulk.elementCount(); ++e) {
     for (PetscInt a = 0; a < nen; ++a)
-      for (PetscInt i = 0; i < dim; ++i) rows[a * dim + i] = m->bulk.cellNodeOffset(c, a) + i;
-    PetscCall(MatSetValuesLocal(*K, n, rows.data(), n, rows.data(), m->bulk.cellStiffness(c), ADD_VALUES));
+      for (PetscInt i = 0; i < dim; ++i) rows[a * dim + i] = m->bulk.elementNodeOffset(e, a) + i;
+    m->bulk.elementStiffness(e, Ke.data());
+    PetscCall(MatSetValuesLocal(*K, n, rows.data(), n, rows.data(), Ke.data(), ADD_VALUES));
   }
   for (const auto &iface : m->interfaces) PetscCall(iface.AddStickStiffness(*K));
   PetscCall(MatAssemblyBegin(*K, MAT_FINAL_ASSEMBLY));

@@ -2,54 +2,78 @@
 // once (PETSc's pointwise FE residual is ~100x slower here). Element stiffness matrices are
 // stored once per distinct (region, cell geometry): every cell of a box mesh region shares
 // one matrix, so the loop is compute-bound; unstructured meshes store one matrix per cell.
+//
+// Two kinds of "cell": the DM's cells, whose vertices are the nodes (cellCount, cellVertex,
+// cellCoordinates, ... describe them as linear cells, for locating points, output and
+// per-cell labels), and the elements the operators integrate over. At degree 1 they are the
+// same. At degree p > 1 (mesh/spectral_layout.hpp) each element is p^dim DM sub-cells on its
+// GLL nodes, and the operators are the spectral element's (fem/spectral_operator.hpp): the
+// force, the GLL mass, the stable-step bound and the stress come from the element, never from
+// the sub-cells.
 #pragma once
 #include <petscdmplex.h>
 
 #include <vector>
 
 #include "slipwave/fem/element_kernels.hpp"
+#include "slipwave/fem/region_material.hpp"
+#include "slipwave/fem/spectral_operator.hpp"
+#include "slipwave/mesh/spectral_layout.hpp"
 
 namespace slipwave::fem {
-
-struct RegionMaterial {
-  double        rho;
-  LameParameters lame;
-};
 
 class BulkOperator {
 public:
   // dm must carry the "region" label and a local section with dim dofs on every vertex.
+  // Collective (the spectral stable-step bound is reduced over the ranks).
   PetscErrorCode Setup(DM dm, const std::vector<RegionMaterial> &materials);
 
   // f_local += K u_local on the cells of this rank (local, ghosted arrays; no communication).
   void addStiffnessTimes(const PetscScalar *u_local, PetscScalar *f_local) const;
-  // The same on a subset of cells (ascending local cell numbers), through the same loop.
+  // The same on the elements holding a subset of cells (ascending local cell numbers), through
+  // the same loop.
   struct CellSubset {
-    std::vector<PetscInt> dofs, matrix; // per cell of the subset: its node dof offsets, its matrix
+    std::vector<PetscInt>      dofs, matrix; // degree 1, per cell of the subset: its node dof offsets, its matrix
+    SpectralOperator::Subset   elements;     // degree > 1: the elements holding the cells
   };
   CellSubset subset(const std::vector<PetscInt> &cells) const;
   void       addStiffnessTimes(const CellSubset &cells, const PetscScalar *u_local, PetscScalar *f_local) const;
   // Adds the row-sum lumped mass (one value per dof) to a local array.
   void addLumpedMass(PetscScalar *mass_local) const;
-  // Adds sum_j |K_ij| per dof (Gershgorin row sums) to a local array.
-  void addStiffnessRowAbsSums(PetscScalar *rowabs_local) const;
-  // Element stiffness of cell c: (nen dim)^2 values, row a*dim+i (node-major), the same
-  // matrix addStiffnessTimes applies (for assembling K where a static solve needs it).
+  // Adds per dof a row bound r_i with K <= diag(r) (in the sense of quadratic forms), so that
+  // max_i r_i / m_i bounds omega_max^2 and other stiffness can be added row by row.
+  // Degree 1: the Gershgorin row sums sum_j |K_ij| (diagonally dominant remainder). Degree > 1:
+  // r_i = omega2 m_i with omega2 the certified element bound (fem/spectral_kernels.hpp), over
+  // all ranks: K <= omega2 M, and about twice the step of the row sums at p >= 4.
+  void addStiffnessRowBounds(PetscScalar *rows_local) const;
+  // The elements the operators integrate over (degree 1: the cells), with their nodes and
+  // stiffness in node-major order (row a*dim+i), the matrix addStiffnessTimes applies (for
+  // assembling K where a static solve needs it). K: (nodesPerElement dim)^2 values.
+  PetscInt elementCount() const { return degree_ == 1 ? ncell_ : spectral_.elementCount(); }
+  PetscInt nodesPerElement() const { return degree_ == 1 ? nen_ : spectral_.nodesPerElement(); }
+  PetscInt elementNodeOffset(PetscInt e, PetscInt a) const { return degree_ == 1 ? cellNodeOffset(e, a) : spectral_.elementNodeOffset(e, a); }
+  void     elementStiffness(PetscInt e, double *K) const;
+  // Degree 1 only: the stiffness of cell c in the cells' node order (cellNodeOffset), kept in
+  // place for loops that read it every step (the DRM layer).
   const double *cellStiffness(PetscInt c) const { return &stiffness_[(size_t)cell_matrix_[c] * nen_ * dim_ * nen_ * dim_]; }
-  // Cell-centroid stress (6 per cell: xx,yy,zz,xy,yz,xz) of this rank's cells, in cell order.
+  // Stress (6 per cell: xx,yy,zz,xy,yz,xz) at the centroid of each of this rank's cells, in cell
+  // order (degree > 1: by the element's basis at the sub-cell's centre).
   void cellStress(const PetscScalar *u_local, PetscScalar *stress) const;
 
   PetscInt  dimension() const { return dim_; }
   PetscInt  nodesPerCell() const { return nen_; }
   PetscInt  cellCount() const { return ncell_; }
   CellShape shape() const { return shape_; }
-  PetscInt  distinctMatrices() const { return (PetscInt)matrix_count_; }
+  PetscInt  degree() const { return degree_; }
+  // Distinct element matrices (degree > 1: distinct element geometries).
+  PetscInt  distinctMatrices() const { return degree_ == 1 ? (PetscInt)matrix_count_ : spectral_.distinctGeometries(); }
   // Local dof offset of node a of cell c (its x component); nodes in element-kernel order.
   PetscInt  cellNodeOffset(PetscInt c, PetscInt a) const { return cell_dofs_[c * nen_ + a]; }
   // DMPlex point of node a of cell c.
   PetscInt  cellVertex(PetscInt c, PetscInt a) const { return cell_vertices_[c * nen_ + a]; }
   PetscInt  cellRegion(PetscInt c) const { return cell_region_[c]; }
-  // Index of cell c's element matrices: cells with the same index share region and geometry.
+  // Degree 1: index of cell c's element matrices (cells with the same index share region and
+  // geometry).
   PetscInt  cellMatrix(PetscInt c) const { return cell_matrix_[c]; }
   const double *cellCoordinates(PetscInt c) const { return &cell_coords_[c * nen_ * dim_]; }
   // Writes every node's coordinates into a local vector's array of the displacement layout
@@ -59,15 +83,24 @@ public:
       for (PetscInt a = 0; a < nen_; ++a)
         for (PetscInt d = 0; d < dim_; ++d) local[cellNodeOffset(c, a) + d] = cellCoordinates(c)[a * dim_ + d];
   }
+  // The shortest edge or diagonal of a cell (degree > 1: of a sub-cell, the closest GLL nodes).
   double    minCellSize() const { return h_min_; }
+  // The shortest edge or diagonal of an element's corners (degree 1: minCellSize).
+  double    minElementSize() const { return h_elem_min_; }
 
 private:
-  PetscInt              dim_ = 0, nen_ = 0, ncell_ = 0;
+  PetscErrorCode setupSpectral(DM dm, const mesh::SpectralLayout &layout, const std::vector<RegionMaterial> &materials);
+
+  PetscInt              dim_ = 0, nen_ = 0, ncell_ = 0, local_size_ = 0;
   CellShape             shape_ = CellShape::Quad4;
   std::vector<PetscInt> cell_dofs_, cell_vertices_, cell_region_, cell_matrix_;
   std::vector<double>   cell_coords_, stiffness_, stress_op_, lumped_;
   size_t                matrix_count_ = 0;
-  double                h_min_ = 0;
+  double                h_min_ = 0, h_elem_min_ = 0;
+  PetscInt              degree_ = 1;
+  SpectralOperator      spectral_;            // degree > 1
+  double                omega2_bound_ = 0;    // degree > 1: certified bound on omega_max^2, all ranks
+  std::vector<PetscInt> cell_element_, cell_position_; // degree > 1: per cell, its element and place in it
 };
 
 } // namespace slipwave::fem

@@ -12,7 +12,7 @@
 
 #include <vector>
 
-#include "slipwave/fem/bulk_operator.hpp"
+#include "slipwave/fem/region_material.hpp"
 #include "slipwave/fem/spectral_kernels.hpp"
 
 namespace slipwave::fem {

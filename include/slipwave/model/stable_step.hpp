@@ -31,9 +31,10 @@ struct TimeStepOptions {
   PetscBool safety_set = PETSC_FALSE;
 };
 
-// rows_i = sum_j |K_ij| of the bulk stiffness (global vector laid out like u, overwritten):
-// the Gershgorin rows the stable step and the constant-Q reference frequencies bound.
-PetscErrorCode BulkGershgorinRowSums(DM dm, const fem::BulkOperator &bulk, Vec rows);
+// rows_i with K <= diag(rows) for the bulk stiffness (global vector laid out like u,
+// overwritten; fem::BulkOperator::addStiffnessRowBounds): max rows_i / m_i bounds omega_max^2,
+// for the stable step and the constant-Q reference frequencies.
+PetscErrorCode BulkStiffnessRowBounds(DM dm, const fem::BulkOperator &bulk, Vec rows);
 // The limit of the whole model (interfaces and free field set up).
 PetscErrorCode StableStepCompute(Elastodynamics *model, StableStep *step);
 // -time_step_safety (read before the heavy setup, so a bad value stops early).
