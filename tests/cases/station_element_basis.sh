@@ -22,6 +22,12 @@
 #     The accelerations to 1e-9: the node stations n0..n4, whose weights are 1 and 0, differ
 #     by 1e-10 too, so that is the solver's round-off (a = M^-1 (f - K u), whose element
 #     forces are added in another order on 2 ranks), not the stations'.
+#  3. Interface stations keep their rule at p = 2: the footing of
+#     tests/cases/station_interface_side.sh on 1 m elements (20 x 11), `base` on the interface
+#     at (10.3, 10), off the GLL nodes (10, 10.5, 11), records the structure side by default
+#     (equal to `above`, 1e-6 m inside the footing, to 1e-5 of the peak; the other nodes weigh
+#     ~1e-6 there) and the soil with -station_side soil (equal to `below`); the pairs slip and
+#     open, so the two sides differ by more than 1e-2 of the peak; 1 vs 2 ranks to 1e-10.
 set -eu -o pipefail
 . tests/tools/lib.sh
 h=$($PY -c "print(100 / 18)")
@@ -67,4 +73,28 @@ linear = err((1 - w) * record("n1")["v_x"] + w * record("n2")["v_x"], y_mid) / n
 print(f"station mid (off-node, element basis p = 4): L2 error {got:.3e}, bound {bound:.3e} (nodes' error {max(node_err) / norm:.3e}, "
       f"degree-4 interpolation {interp / norm:.3e}, Lebesgue sum {np.sum(np.abs(N)):.3f}); linear sub-cell interpolation {linear:.3e}")
 sys.exit(0 if got <= bound and got < 1e-3 else 1)
+PY
+
+iface="-mesh_box_faces 20,11 -mesh_box_upper 20,11 -element_degree 2 -regions soil,footing -region_soil_box 0,20,0,11 -region_footing_box 8,12,10,11
+ -material_soil_rho 2000 -material_soil_E 1e8 -material_soil_nu 0.3 -material_footing_rho 2500 -material_footing_E 3e10 -material_footing_nu 0.2
+ -interfaces base -interface_base_regions soil,footing -interface_base_phi 30 -bc_bottom_type fixed -initial_velocity_footing 1,-0.5
+ -ts_max_time 0.2 -output_fields 0 -progress_interval 100000 -station_coordinates 10.3,10,10.3,10.000001,10.3,9.999999 -station_names base,above,below"
+for n in 1 2; do $MPIEXEC -n $n $SW $iface -output_dir "$WORK/iface_np$n" > "$WORK/iface_np$n.log"; done
+grep -q "station base at (10.3, 10) lies on interface base (split nodes): records the structure side (footing)" "$WORK/iface_np1.log"
+$CHECK stations-equal "$WORK/iface_np1" "$WORK/iface_np2" --names base,above,below --tol 1e-10
+$SW $iface -station_side soil -output_dir "$WORK/iface_soil" > "$WORK/iface_soil.log"
+$PY - "$WORK" <<'PY'
+import sys
+
+import numpy as np
+
+work = sys.argv[1]
+def v(run, name):
+    return np.genfromtxt(f"{work}/{run}/stations/{name}.csv", delimiter=",", names=True)["v_x"]
+peak = np.max(np.abs(v("iface_np1", "above")))
+structure = np.max(np.abs(v("iface_np1", "base") - v("iface_np1", "above"))) / peak
+soil = np.max(np.abs(v("iface_soil", "base") - v("iface_soil", "below"))) / peak
+sides = np.max(np.abs(v("iface_np1", "above") - v("iface_np1", "below"))) / peak
+print(f"interface station at p = 2: structure side - above {structure:.2e}, soil side - below {soil:.2e} (bound 1e-5); above - below {sides:.2e} (> 1e-2)")
+sys.exit(0 if structure <= 1e-5 and soil <= 1e-5 and sides > 1e-2 else 1)
 PY
