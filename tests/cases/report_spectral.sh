@@ -1,6 +1,6 @@
 # The run report at -element_degree p (issue 14, part 5), dry runs of a two-region box:
 # soil (vs 200 m/s) over rock (vs 800 m/s), 48 x 32 elements, Ricker input f0 = 5 Hz whose
-# top frequency is 2.7638 f0 = 13.82 Hz (model/time_function: 5 % of the spectral peak), so
+# top frequency is 2.7638 f0 = 13.82 Hz (physics/source_time_function.hpp: its spectrum is 1 % of its peak there), so
 # lambda_S = 14.47 m in the soil and 57.89 m in the rock.
 #  1. Mesh line: 48 x 32 = 1536 elements, 1536 x 4^2 = 24576 linear sub-cells, (48*4+1)(32*4+1)
 #     = 24897 nodes at p = 4; the same on 2 ranks (elements summed over the ranks).
