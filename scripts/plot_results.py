@@ -118,8 +118,10 @@ def resolution_note(out):
     try:
         with open(path) as f:
             info = json.load(f)
+        # Spectral elements (degree p > 1) count GLL nodes per wavelength.
+        points = f"GLL nodes at degree {info['element_degree']}" if "element_degree" in info else "points"
         return (f"mesh resolves up to {info['resolved_frequency_hz']:.3g} Hz "
-                f"({info['points_per_wavelength']:g} points per S wavelength in '{info['slowest_region']}'); "
+                f"({info['points_per_wavelength']:g} {points} per S wavelength in '{info['slowest_region']}'); "
                 "content above is numerical")
     except (OSError, ValueError, KeyError):
         return "resolved frequency unknown (no run_info.json)"

@@ -39,20 +39,37 @@ PetscErrorCode reportCost(const model::Elastodynamics &model, double steps) {
   PetscFunctionReturn(0);
 }
 
-// The highest frequency the mesh carries: 10 points per S wavelength in the slowest region
-// (Kuhlemeyer & Lysmer 1973: elements of 1/8 to 1/10 of the shortest wavelength), with the
-// smallest cell size of the mesh.
-constexpr double kPointsPerWavelength = 10;
+// GLL nodes per S wavelength a region needs, counted as p lambda / h (h the element size; at
+// p = 1 the usual points per wavelength), by degree, from published practice:
+//   p = 1: 10 (Kuhlemeyer & Lysmer 1973: elements of 1/8 to 1/10 of the shortest wavelength);
+//   p >= 4: 5 (Komatitsch & Tromp 1999, GJI 139, 806-822, and 2002, GJI 149, 390-412: about
+//   5 GLL points per minimum wavelength at degree 4; Seriani & Priolo 1994 find ~4.5 enough
+//   at degree 8, so 5 is kept for every degree above 4);
+//   p = 2, 3: no published figure; linear between the two (8.3 and 6.7).
+double nodesPerWavelengthNeeded(PetscInt degree) { return degree >= 4 ? 5.0 : 10.0 - 5.0 * (double)(degree - 1) / 3.0; }
 
+const char *nodesPerWavelengthSource(PetscInt degree) {
+  return degree == 1 ? "Kuhlemeyer & Lysmer 1973" : degree >= 4 ? "Komatitsch & Tromp 1999" : "between Kuhlemeyer & Lysmer 1973 at p = 1 and Komatitsch & Tromp 1999 at p = 4";
+}
+
+// GLL nodes per S wavelength at frequency f in a region of S speed vs, with the mesh's
+// smallest element (its corners' shortest edge or diagonal; p = 1: the smallest cell).
+double nodesPerWavelength(const model::Elastodynamics &model, double vs, double f) {
+  return (double)model.bulk.degree() * vs / f / model.bulk.minElementSize();
+}
+
+// The highest frequency the mesh carries: nodesPerWavelengthNeeded GLL nodes per S
+// wavelength in the slowest region, with the smallest element of the mesh.
 struct Resolution {
   double      frequency = 0; // Hz
   std::string region;
 };
 
 Resolution resolvedFrequency(const model::Elastodynamics &model) {
-  Resolution res;
+  const PetscInt p = model.bulk.degree();
+  Resolution     res;
   for (const auto &m : model.materials) {
-    const double f = m.elastic.vs / (kPointsPerWavelength * model.bulk.minCellSize());
+    const double f = (double)p * m.elastic.vs / (nodesPerWavelengthNeeded(p) * model.bulk.minElementSize());
     if (res.region.empty() || f < res.frequency) res = {f, m.region};
   }
   return res;
@@ -84,7 +101,8 @@ void WriteRunInfo(const model::Elastodynamics &model, const std::string &output_
   const std::string path = output_dir + "/run_info.json";
   if (FILE *f = std::fopen(path.c_str(), "w")) {
     std::fprintf(f, "{\"resolved_frequency_hz\": %.6g, \"points_per_wavelength\": %g, \"slowest_region\": \"%s\", \"h_min_m\": %.6g,\n", res.frequency,
-                 kPointsPerWavelength, res.region.c_str(), model.bulk.minCellSize());
+                 nodesPerWavelengthNeeded(model.bulk.degree()), res.region.c_str(), model.bulk.minCellSize());
+    if (model.bulk.degree() > 1) std::fprintf(f, " \"element_degree\": %d, \"element_size_m\": %.6g,\n", (int)model.bulk.degree(), model.bulk.minElementSize());
     std::fprintf(f, " \"input_top_frequency_hz\": %.6g, \"time_step_s\": %.10g}\n", model.bc.input.active() ? model.bc.input.topFrequency() : 0.0, dt);
     std::fclose(f);
   }
@@ -101,18 +119,41 @@ PetscErrorCode ReportSetup(const model::Elastodynamics &model, const model::Stab
   PetscCallMPI(MPI_Allreduce(&ncell_local, &ncell, 1, MPIU_INT, MPI_SUM, comm));
   PetscCall(PetscPrintf(comm, "slipwave: explicit elastodynamics, %" PetscInt_FMT "D %s, %d rank%s (partitioner %s)\n", model.dim, model.dim == 2 ? "plane strain" : "", size,
                         size > 1 ? "s" : "", model.mesh.partitioner.c_str()));
-  PetscCall(PetscPrintf(comm, "  mesh: %s, %" PetscInt_FMT " cells, %" PetscInt_FMT " nodes, %" PetscInt_FMT " distinct element matrices on rank 0\n",
-                        model.mesh.source.c_str(), ncell, n_nodes / model.dim, model.bulk.distinctMatrices()));
+  const PetscInt p = model.bulk.degree();
+  if (p == 1)
+    PetscCall(PetscPrintf(comm, "  mesh: %s, %" PetscInt_FMT " cells, %" PetscInt_FMT " nodes, %" PetscInt_FMT " distinct element matrices on rank 0\n",
+                          model.mesh.source.c_str(), ncell, n_nodes / model.dim, model.bulk.distinctMatrices()));
+  else {
+    PetscInt nelem_local = model.bulk.elementCount(), nelem;
+    PetscCallMPI(MPI_Allreduce(&nelem_local, &nelem, 1, MPIU_INT, MPI_SUM, comm));
+    PetscCall(PetscPrintf(comm,
+                          "  mesh: %s, spectral elements of degree %" PetscInt_FMT " (GLL): %" PetscInt_FMT " element%s in %" PetscInt_FMT " linear sub-cells, %" PetscInt_FMT
+                          " nodes, %" PetscInt_FMT " distinct element geometries on rank 0\n",
+                          model.mesh.source.c_str(), p, nelem, nelem == 1 ? "" : "s", ncell, n_nodes / model.dim, model.bulk.distinctMatrices()));
+  }
   const double fmax = model.bc.input.active() ? model.bc.input.topFrequency() : 0.0;
+  const double h    = model.bulk.minElementSize();
   for (const auto &m : model.materials) {
     PetscCall(PetscPrintf(comm, "  region %-10s rho %8.1f kg/m3  vp %8.1f m/s  vs %8.1f m/s", m.region.c_str(), m.elastic.rho, m.elastic.vp, m.elastic.vs));
-    if (fmax > 0)
-      PetscCall(PetscPrintf(comm, "  %5.1f points per S wavelength at %.2f Hz (h_min %.3g m)", m.elastic.vs / fmax / model.bulk.minCellSize(), fmax, model.bulk.minCellSize()));
+    if (fmax > 0 && p == 1) PetscCall(PetscPrintf(comm, "  %5.1f points per S wavelength at %.2f Hz (h_min %.3g m)", nodesPerWavelength(model, m.elastic.vs, fmax), fmax, h));
+    else if (fmax > 0)
+      PetscCall(PetscPrintf(comm, "  %5.1f GLL nodes per S wavelength at %.2f Hz (degree %" PetscInt_FMT ", element size %.3g m)", nodesPerWavelength(model, m.elastic.vs, fmax),
+                            fmax, p, h));
     PetscCall(PetscPrintf(comm, "\n"));
   }
+  for (const auto &m : model.materials)
+    if (fmax > 0 && nodesPerWavelength(model, m.elastic.vs, fmax) < nodesPerWavelengthNeeded(p))
+      PetscCall(PetscPrintf(comm,
+                            "  warning: region %s is under-resolved for the input's top frequency %.2f Hz: %.1f %s per S wavelength, below the %.3g that elements of degree %" PetscInt_FMT " need (%s); refine the mesh or raise -element_degree\n",
+                            m.region.c_str(), fmax, nodesPerWavelength(model, m.elastic.vs, fmax), p == 1 ? "points" : "GLL nodes", nodesPerWavelengthNeeded(p), p,
+                            nodesPerWavelengthSource(p)));
   const Resolution res = resolvedFrequency(model);
-  PetscCall(PetscPrintf(comm, "  resolution: S waves up to %.3g Hz (%d points per wavelength in region %s, h_min %.3g m)\n", res.frequency, (int)kPointsPerWavelength,
-                        res.region.c_str(), model.bulk.minCellSize()));
+  if (p == 1)
+    PetscCall(PetscPrintf(comm, "  resolution: S waves up to %.3g Hz (%d points per wavelength in region %s, h_min %.3g m)\n", res.frequency, (int)nodesPerWavelengthNeeded(p),
+                          res.region.c_str(), h));
+  else
+    PetscCall(PetscPrintf(comm, "  resolution: S waves up to %.3g Hz (%.3g GLL nodes per wavelength at degree %" PetscInt_FMT " in region %s, element size %.3g m)\n",
+                          res.frequency, nodesPerWavelengthNeeded(p), p, res.region.c_str(), h));
   std::string bcs;
   for (size_t i = 0; i < model.bc.names.size(); ++i) bcs += " " + model.bc.names[i] + "=" + model::boundaryTypeName(model.bc.types[i]);
   PetscCall(PetscPrintf(comm, "  boundaries:%s\n", bcs.c_str()));

@@ -20,6 +20,8 @@
 #include "slipwave/core/option_choice.hpp"
 #include "slipwave/core/option_rules.hpp"
 #include "slipwave/core/options_check.hpp"
+#include "slipwave/fem/spectral_kernels.hpp"
+#include "slipwave/mesh/spectral_layout.hpp"
 
 namespace slipwave::io {
 namespace {
@@ -62,6 +64,37 @@ PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, st
     }
   }
   PetscCheck(!names->empty(), comm, PETSC_ERR_USER_INPUT, "-station_file = %s: no station rows; allowed: a CSV file with rows name,x,y%s", file, z());
+  PetscFunctionReturn(0);
+}
+
+// Degree p > 1: the weights of the station at x on the nodes of the element holding sub-cell
+// `cell`, so the record has the element's order, not the sub-cell's linear interpolation.
+// The element's reference coordinates come from its Q1 corner map, which is exact: every GLL
+// node lies on it (mesh/spectral_subdivision); the weights are the tensor Lagrange basis on
+// its (p+1)^dim GLL nodes (at a node: 1 there, 0 elsewhere, to round-off).
+PetscErrorCode elementWeights(DM dm, const fem::BulkOperator &bulk, PetscInt cell, const double *x, std::vector<PetscInt> *offsets, std::vector<double> *weights) {
+  // The element kernels' corner order (cyclic, fem/element_kernels.hpp) as lexicographic
+  // corners (x fastest) of the element frame.
+  constexpr PetscInt          kLexCorner[8] = {0, 1, 3, 2, 4, 5, 7, 6};
+  const mesh::SpectralLayout *layout;
+  mesh::VertexCoordinates     vc;
+  PetscFunctionBeginUser;
+  PetscCall(mesh::SpectralLayoutOf(dm, &layout));
+  const PetscInt dim = bulk.dimension(), p = bulk.degree(), n1 = p + 1, nq = bulk.nodesPerElement(), element = layout->cell_element[cell];
+  double         corners[8 * 3], xi[3];
+  PetscCall(vc.Open(dm));
+  for (PetscInt k = 0; k < (dim == 2 ? 4 : 8); ++k) {
+    const PetscInt lex = kLexCorner[k], node = (lex & 1) * p + n1 * (((lex >> 1) & 1) * p + n1 * ((lex >> 2) & 1) * p);
+    PetscCall(vc.Get(layout->element_nodes[element * nq + node], &corners[k * dim]));
+  }
+  PetscCall(vc.Close());
+  // The point lies in one of the element's sub-cells, hence in the element.
+  PetscCheck(fem::referenceCoordinates(dim == 2 ? fem::CellShape::Quad4 : fem::CellShape::Hex8, corners, x, xi, 1e-8), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "station: no reference coordinates in element %" PetscInt_FMT " although its sub-cell %" PetscInt_FMT " holds the point", element, cell);
+  weights->resize(nq);
+  fem::spectralBasisValues((int)dim, (int)p, xi, weights->data());
+  offsets->resize(nq);
+  for (PetscInt a = 0; a < nq; ++a) (*offsets)[a] = bulk.elementNodeOffset(element, a);
   PetscFunctionReturn(0);
 }
 
@@ -183,10 +216,13 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const mesh:
       double N[8];
       Local  l;
       l.station = (PetscInt)s;
-      fem::shapeFunctions(shape, xi, N);
-      for (PetscInt a = 0; a < nen; ++a) {
-        l.offsets.push_back(bulk.cellNodeOffset(found, a));
-        l.shape.push_back(N[a]);
+      if (bulk.degree() > 1) PetscCall(elementWeights(dm, bulk, found, x, &l.offsets, &l.shape));
+      else {
+        fem::shapeFunctions(shape, xi, N);
+        for (PetscInt a = 0; a < nen; ++a) {
+          l.offsets.push_back(bulk.cellNodeOffset(found, a));
+          l.shape.push_back(N[a]);
+        }
       }
       local_.push_back(std::move(l));
     }

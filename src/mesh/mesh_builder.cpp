@@ -396,15 +396,20 @@ PetscErrorCode checkSpectralCells(MPI_Comm comm, DM serial, PetscInt degree) {
   PetscFunctionReturn(0);
 }
 
-// The reader holds the whole mesh on rank 0; what follows (split, distribution, operators)
-// needs the estimate's memory.
-PetscErrorCode checkMemoryOfFile(MPI_Comm comm, DM serial, PetscInt dim, const std::string &file) {
-  PetscInt v_start, v_end;
+// The reader holds the whole mesh on rank 0; what follows (subdivision, split, distribution,
+// operators) needs the estimate's memory. Degree p: the GLL nodes, (p-1)^d inside each point
+// of depth d (V + (p-1) E + (p-1)^2 F + (p-1)^3 C; the file's vertices at p = 1).
+PetscErrorCode checkMemoryOfFile(MPI_Comm comm, DM serial, PetscInt dim, PetscInt degree, const std::string &file) {
+  double nodes = 0, inside = 1; // inside: GLL nodes inside one point of the depth
   PetscFunctionBeginUser;
-  PetscCall(DMPlexGetDepthStratum(serial, 0, &v_start, &v_end));
-  double vertices = (double)(v_end - v_start);
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &vertices, 1, MPI_DOUBLE, MPI_SUM, comm));
-  PetscCall(MemoryCheck(comm, vertices, dim, ("-mesh_file = " + file).c_str()));
+  for (PetscInt depth = 0; depth <= dim; ++depth, inside *= (double)(degree - 1)) {
+    PetscInt start, end;
+    PetscCall(DMPlexGetDepthStratum(serial, depth, &start, &end));
+    nodes += inside * (double)(end - start);
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &nodes, 1, MPI_DOUBLE, MPI_SUM, comm));
+  const std::string what = "-mesh_file = " + file + (degree > 1 ? " at -element_degree " + std::to_string(degree) : "");
+  PetscCall(MemoryCheck(comm, nodes, dim, what.c_str()));
   PetscFunctionReturn(0);
 }
 
@@ -425,7 +430,7 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
     PetscCall(createFromGmsh(comm, o.file.c_str(), &serial, desc->regions, &desc->boundaries));
     PetscCall(DMGetDimension(serial, &desc->dim));
     PetscCall(core::OptionsValidateForDimension(comm, desc->dim, false));
-    PetscCall(checkMemoryOfFile(comm, serial, desc->dim, o.file));
+    PetscCall(checkMemoryOfFile(comm, serial, desc->dim, o.degree, o.file));
     desc->source = o.file;
   } else {
     PetscCall(core::OptionsValidateForDimension(comm, desc->dim, true));

@@ -1,6 +1,7 @@
 // Stations: points given by coordinates (-station_coordinates x1,y1,x2,y2,... with
 // -station_names, or -station_file with rows name,x,y[,z]) where u, v, a are interpolated
-// with the cell's shape functions every step. At every output time (Flush) rank 0 appends the
+// with the cell's shape functions every step (spectral elements of degree p > 1: with the
+// basis of the element holding the point, on its (p+1)^dim GLL nodes). At every output time (Flush) rank 0 appends the
 // rows sampled since the last flush to DIR/stations/<name>.csv and to DIR/stations.h5
 // (extendible datasets, file closed after each append), so a killed run keeps every row up to
 // its last output time. The records stay in memory too: a checkpoint holds them all, and the
@@ -56,8 +57,8 @@ public:
 private:
   struct Local {
     PetscInt            station;
-    std::vector<PetscInt> offsets; // local dof offsets of the cell's nodes
-    std::vector<double> shape;     // shape function values at the station
+    std::vector<PetscInt> offsets; // local dof offsets of the cell's (degree > 1: the element's) nodes
+    std::vector<double> shape;     // shape function (basis) values at the station
     std::vector<double> record;    // rows of t, u[dim], v[dim], a[dim]
   };
   PetscInt                 dim_ = 0;
