@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "best_time.hpp"
+
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/fem/element_kernels.hpp"
 #include "slipwave/model/elastodynamics.hpp"
@@ -26,26 +28,10 @@
 #include "slipwave/time/central_difference.hpp"
 
 using namespace slipwave;
+using bench::bestTime;
+using bench::now;
 
 namespace {
-
-double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
-
-// Seconds per call of f: f is run in a loop sized to ~0.3 s; the best of 3 such loops.
-template <class F>
-double bestTime(F &&f, double target = 0.3) {
-  const double t0 = now();
-  f();
-  const double once = std::max(now() - t0, 1e-7);
-  const int    reps = std::max(1, (int)std::lround(target / once));
-  double       best = 1e300;
-  for (int k = 0; k < 3; ++k) {
-    const double t = now();
-    for (int r = 0; r < reps; ++r) f();
-    best = std::min(best, (now() - t) / reps);
-  }
-  return best;
-}
 
 struct Row {
   std::string case_name;

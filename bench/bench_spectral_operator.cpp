@@ -18,29 +18,16 @@
 #include <string>
 #include <vector>
 
+#include "best_time.hpp"
+
 #include "../tests/unit/spectral_box_mesh.hpp"
 #include "slipwave/fem/spectral_operator.hpp"
 
 using namespace slipwave;
+using bench::bestTime;
+using bench::now;
 
 namespace {
-
-double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
-
-template <class F>
-double bestTime(F &&f, double target = 0.3) {
-  const double t0 = now();
-  f();
-  const double once = std::max(now() - t0, 1e-7);
-  const int    reps = std::max(1, (int)std::lround(target / once));
-  double       best = 1e300;
-  for (int k = 0; k < 3; ++k) {
-    const double t = now();
-    for (int r = 0; r < reps; ++r) f();
-    best = std::min(best, (now() - t) / reps);
-  }
-  return best;
-}
 
 void warpNodes(double *X) {
   X[0] += 0.02 * std::sin(1.3 * X[1] + 0.4 * X[2]);

@@ -6,6 +6,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "slipwave/fem/geometry_key.hpp"
 #include "slipwave/fem/gll_basis.hpp"
 #include "slipwave/mesh/labels.hpp"
 #include "slipwave/mesh/spectral_layout.hpp"
@@ -197,7 +198,6 @@ PetscErrorCode BulkOperator::Setup(DM dm, const std::vector<RegionMaterial> &mat
   const double quantum = 1e-12 * (extent > 0 ? extent : 1.0);
 
   std::unordered_map<std::string, PetscInt> seen;
-  std::vector<double>                       rel(nen_ * dim_);
   h_min_ = 1e300;
   stiffness_.clear();
   stress_op_.clear();
@@ -206,16 +206,8 @@ PetscErrorCode BulkOperator::Setup(DM dm, const std::vector<RegionMaterial> &mat
   PetscCall(mesh::SpectralLayoutOf(dm, &layout));
   degree_ = layout ? layout->degree : 1;
   for (PetscInt c = 0; c < ncell_ && degree_ == 1; ++c) {
-    const double *x = cellCoordinates(c);
-    for (PetscInt a = 0; a < nen_; ++a)
-      for (PetscInt i = 0; i < dim_; ++i) rel[a * dim_ + i] = x[a * dim_ + i] - x[i];
-    // Cells with the same region and the same vertex positions relative to their first vertex
-    // (to 1e-12 of the mesh extent) share their element matrices.
-    std::string key(reinterpret_cast<const char *>(&cell_region_[c]), sizeof(PetscInt));
-    for (double r : rel) {
-      const long long q = std::llround(r / quantum);
-      key.append(reinterpret_cast<const char *>(&q), sizeof q);
-    }
+    const double *x   = cellCoordinates(c);
+    std::string   key = geometryKey(cell_region_[c], x, (int)nen_, (int)dim_, quantum);
     auto found = seen.find(key);
     if (found != seen.end()) {
       cell_matrix_[c] = found->second;

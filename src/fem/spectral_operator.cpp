@@ -5,6 +5,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "slipwave/fem/geometry_key.hpp"
 #include "slipwave/fem/gll_basis.hpp"
 #include "slipwave/fem/spectral_force_kernel.hpp"
 
@@ -119,12 +120,7 @@ PetscErrorCode SpectralOperator::Setup(PetscInt dim, PetscInt degree, PetscInt n
     PetscCheck(region[e] >= 0 && region[e] < (PetscInt)materials.size(), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "spectral element %" PetscInt_FMT " has region %" PetscInt_FMT " of %zu", e,
                region[e], materials.size());
     const double *xe = elementCoordinates(e);
-    std::string   key(reinterpret_cast<const char *>(&region[e]), sizeof(PetscInt));
-    for (PetscInt a = 0; a < nq_; ++a)
-      for (PetscInt i = 0; i < dim; ++i) {
-        const long long q = std::llround((xe[a * dim + i] - xe[i]) / quantum);
-        key.append(reinterpret_cast<const char *>(&q), sizeof q);
-      }
+    std::string   key = geometryKey(region[e], xe, (int)nq_, (int)dim, quantum);
     auto found = seen.find(key);
     if (found != seen.end()) {
       record_[e] = found->second;
