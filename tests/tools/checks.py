@@ -34,9 +34,12 @@ def column(args):
     peak = np.max(np.abs(ref))
     # The surface reflection reaches the base at t0 + 2H/c; a reflection there would be back
     # at the surface from t0 + 3H/c on, minus the half-width of the wavelet (1.5/f0 holds
-    # all but 1e-6 of a Ricker pulse's envelope exp(-(pi f0 t)^2)).
+    # all but 1e-6 of a Ricker pulse's envelope exp(-(pi f0 t)^2)). What is measured there is
+    # the departure from the closed form: where 2H/c < 3/f0 (the P column: 0.5 s < 0.6 s) the
+    # window still holds the tail of the surface pulse itself (1e-3 of its peak at 0.2 s
+    # from its centre), which is no reflection.
     late = t > args.t0 + 3 * args.height / args.speed - 1.5 / args.f0
-    late_max = np.max(np.abs(v[late])) if np.any(late) else 0.0
+    late_max = np.max(np.abs((v - ref)[late])) if np.any(late) else 0.0
     print(f"column: L2 error {l2:.4e} (bound {args.l2_max:.1e}); late motion {late_max / peak:.2e} of peak (bound {args.late_max:.1e}), "
           f"{np.count_nonzero(late)} late samples")
     ok = l2 <= args.l2_max and (args.late_max <= 0 or (np.any(late) and late_max <= args.late_max * peak))
