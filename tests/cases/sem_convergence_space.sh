@@ -17,36 +17,43 @@
 # also at 2 dt; the field difference is 3x the time error at dt (central differences are
 # second order, see sem_convergence_time.sh), and it must stay below 0.1 of the space error,
 # so the time error is at most 3 % of it and moves a rate by at most 0.05.
+# SEM_DIM=3 runs the column as hexahedra (5 m x 5 m x 100 m, y and z held) at p = 2, 3, 4
+# (tests/cases/sem_convergence_hex.sh); the errors equal the 2D ones to 4 digits.
 set -eu
 . tests/tools/lib.sh
-column="$COLUMN -mesh_box_upper 5,100 -input_wave sv -constrain_components y -input_t0 0.4 -ts_max_time 0.8
- -output_fields 1 -output_interval 0.8 -energy_interval 1000000 -progress_interval 1e7"
+common="$COLUMN -input_wave sv -input_t0 0.4 -ts_max_time 0.8 -output_fields 1 -output_interval 0.8 -energy_interval 1000000 -progress_interval 1e7"
 # degree: element counts along the column; dt [s]
-cases="1:100,200,400:1e-4 2:20,40,80:4e-5 3:10,20,40:2e-5 4:14,20,28:8e-6 5:16,20,24:3e-6 6:8,12,16:2.5e-6"
+if [ "${SEM_DIM:-2}" = 3 ]; then
+  column="$common -mesh_dim 3 -mesh_box_upper 5,5,100 -constrain_components y,z"; across=1,1; vertical=2
+  cases="2:20,40,80:4e-5 3:10,20,40:2e-5 4:14,20,28:8e-6"
+else
+  column="$common -mesh_box_upper 5,100 -constrain_components y"; across=1; vertical=1
+  cases="1:100,200,400:1e-4 2:20,40,80:4e-5 3:10,20,40:2e-5 4:14,20,28:8e-6 5:16,20,24:3e-6 6:8,12,16:2.5e-6"
+fi
 for c in $cases; do
   IFS=: read -r p meshes dt <<<"$c"
   for n in ${meshes//,/ }; do
-    $SW $column -element_degree $p -mesh_box_faces 1,$n -ts_dt $dt -output_dir "$WORK/p${p}_n$n" > "$WORK/p${p}_n$n.log"
+    $SW $column -element_degree $p -mesh_box_faces $across,$n -ts_dt $dt -output_dir "$WORK/p${p}_n$n" > "$WORK/p${p}_n$n.log"
   done
   dt2=$($PY -c "print(2 * $dt)")
-  $SW $column -element_degree $p -mesh_box_faces 1,$n -ts_dt $dt2 -output_dir "$WORK/p${p}_n${n}_2dt" > "$WORK/p${p}_n${n}_2dt.log"
+  $SW $column -element_degree $p -mesh_box_faces $across,$n -ts_dt $dt2 -output_dir "$WORK/p${p}_n${n}_2dt" > "$WORK/p${p}_n${n}_2dt.log"
 done
-$PY - "$WORK" $cases <<'PY'
+$PY - "$WORK" $vertical $cases <<'PY'
 import sys
 sys.path.insert(0, "tests/tools")
 from column_field_error import column_exact, l2_distance, profile
 from convergence_rates import cases, space_ok
-work, ok = sys.argv[1], True
-for p, meshes, dt in cases(sys.argv[2:]):
+work, vertical, ok = sys.argv[1], int(sys.argv[2]), True
+for p, meshes, dt in cases(sys.argv[3:]):
     meshes = [int(n) for n in meshes]
     errs = []
     for n in meshes:
-        t, ys, us, spread = profile(f"{work}/p{p}_n{n}")
+        t, ys, us, spread = profile(f"{work}/p{p}_n{n}", vertical=vertical)
         exact = lambda y: column_exact(y, t, 100.0, 200.0, 0.1, 5.0, 0.4)
         norm = l2_distance(ys, 0 * us, p, exact)
         errs.append(l2_distance(ys, us, p, exact) / norm)
         ok &= abs(t - 0.8) < 1e-9 and spread <= 1e-12 * max(abs(us))
-    _, _, us2, _ = profile(f"{work}/p{p}_n{meshes[-1]}_2dt")
+    _, _, us2, _ = profile(f"{work}/p{p}_n{meshes[-1]}_2dt", vertical=vertical)
     ok &= space_ok(f"elements {meshes}, dt {dt} s", p, meshes, errs, l2_distance(ys, us - us2, p, lambda y: 0 * y) / norm)
 sys.exit(0 if ok else 1)
 PY

@@ -29,16 +29,19 @@ def column_exact(y, t, height, speed, amplitude, f0, t0):
     return ricker_displacement(t - y / speed, amplitude, f0, t0) + ricker_displacement(t - (2 * height - y) / speed, amplitude, f0, t0)
 
 
-def profile(out_dir, component="x", frame=-1):
-    """(time, node heights, displacement component along the left edge, largest difference
-    between nodes at the same height: the field must be 1D) of one output frame."""
+def profile(out_dir, component="x", frame=-1, vertical=1):
+    """(time, node heights, displacement component along the column's edge at the smallest
+    other coordinates, largest difference between nodes at the same height: the field must be
+    1D) of one output frame; `vertical` is the index of the height coordinate (1 in 2D, 2 in 3D)."""
     f = Frames(out_dir)
     u = f.field("displacement", frame)[:, "xyz".index(component)]
-    x, y = f.geometry[:, 0], f.geometry[:, 1]
+    y = f.geometry[:, vertical]
     spread = max(np.ptp(u[np.isclose(y, h, atol=1e-9, rtol=0)]) for h in np.unique(np.round(y, 9)))
-    left = np.isclose(x, x.min())
-    order = np.argsort(y[left])
-    return f.times[frame], y[left][order], u[left][order], spread
+    edge = np.ones(len(y), dtype=bool)
+    for d in range(vertical):
+        edge &= np.isclose(f.geometry[:, d], f.geometry[:, d].min())
+    order = np.argsort(y[edge])
+    return f.times[frame], y[edge][order], u[edge][order], spread
 
 
 def lagrange(nodes, x):
