@@ -51,6 +51,6 @@ for p, meshes, dt in cases(sys.argv[2:]):
     u2 = Frames(f"{work}/p{p}_{names[-1]}_2dt").field("displacement", -1)[:, 0]
     time_change = l2_distance(f"{work}/{names[-1]}.msh", p, f.geometry, u - u2, lambda x, y: 0 * y) / norm
     ny = [int(m.split("x")[1]) for m in names]
-    ok &= space_ok(f"cells nx x ny per macro cell {names}, dt {dt} s", p, ny, errs, time_change)
+    ok &= space_ok(f"displacement L2, cells nx x ny per macro cell {names}, dt {dt} s", p, ny, errs, time_change)
 sys.exit(0 if ok else 1)
 PY

@@ -29,6 +29,25 @@ def column_exact(y, t, height, speed, amplitude, f0, t0):
     return ricker_displacement(t - y / speed, amplitude, f0, t0) + ricker_displacement(t - (2 * height - y) / speed, amplitude, f0, t0)
 
 
+def column_strain_exact(y, t, height, speed, amplitude, f0, t0):
+    """du/dy of column_exact: U' is the Ricker velocity, so du/dy = (-U'(t - y/c) + U'(t - (2H - y)/c)) / c."""
+    def velocity(tau):
+        a = (math.pi * f0 * (tau - t0)) ** 2
+        return amplitude * (1 - 2 * a) * np.exp(-a)
+    return (-velocity(t - y / speed) + velocity(t - (2 * height - y) / speed)) / speed
+
+
+def shear_stress_error(out_dir, shear_modulus, exact_strain, frame=-1, vertical=1):
+    """Relative RMS difference over the output cells between the shear stress sigma_x,vertical
+    slipwave writes per cell (at its centre, by the element basis at p > 1) and mu du/dy of
+    the closed form at the cell centres: the derivative, order p at degree p."""
+    f = Frames(out_dir)
+    stress = f.field("stress", frame)[:, vertical]   # 3 x 3 tensor rows: x row, column `vertical`
+    centres = f.geometry[f.topology, vertical].mean(axis=1)
+    exact = shear_modulus * exact_strain(centres)
+    return float(np.linalg.norm(stress - exact) / np.linalg.norm(exact))
+
+
 def profile(out_dir, component="x", frame=-1, vertical=1):
     """(time, node heights, displacement component along the column's edge at the smallest
     other coordinates, largest difference between nodes at the same height: the field must be
