@@ -151,6 +151,10 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   std::vector<SaturatedRegion> saturated;
   bool                         any_saturated = false;
   PetscCall(PorePressureReadMaterials(comm, &m->materials, &saturated, &any_saturated));
+  // The pore pressure couples through each cell's Q1 matrices (model/pore_pressure.cpp), which
+  // spectral elements do not have.
+  PetscCheck(!any_saturated || m->mesh.degree == 1, comm, PETSC_ERR_USER_INPUT,
+             "-material_<r>_saturated with -element_degree = %" PetscInt_FMT "; allowed: -element_degree 1 for saturated regions", m->mesh.degree);
   PetscCall(readDamping(m));
   PetscCall(AttenuationCreate(comm, &m->materials, &m->attenuation));
   auto setupBulk = [m]() {
