@@ -144,7 +144,7 @@ void stresses() {
   s[2 + 3 + 2] = 0.001;  // u_z top: eps_zz = 5e-4
   unit::check(col.setState(s) && (int)s.size() == 2 + 4 * n, "column state round trip");
   double sig[9];
-  col.segmentStress(0, sig);
+  col.stress(0, 0, sig);
   unit::near(sig[0 * 3 + 2], mu * 1e-3, 1e-14, 0, "tau_xz = mu du_x/dz");
   unit::near(sig[2 * 3 + 0], mu * 1e-3, 1e-14, 0, "tau_zx = tau_xz");
   unit::near(sig[1 * 3 + 2], -mu * 2e-3, 1e-14, 0, "tau_yz = mu du_y/dz");
