@@ -25,8 +25,9 @@ PetscErrorCode addStiffness(Elastodynamics *m, bool with_values, Mat K) {
 
 // K preallocated from its own entries: the DM's preallocation covers the DM cells' adjacency,
 // which misses the couplings inside a spectral element (its nodes share no sub-cell) and
-// those of the interface pairs; entries allocated on the fly cost a copy each (minutes at
-// p = 4). A MATPREALLOCATOR pass records the exact pattern first.
+// those of the interface pairs; entries allocated on the fly cost a copy each (40 x 40
+// elements at p = 4: 460 s, against 3.3 s preallocated). A MATPREALLOCATOR pass records the
+// exact pattern first.
 PetscErrorCode assembleStiffness(Elastodynamics *m, Mat *K) {
   Mat                    pattern;
   PetscInt               rows_local, cols_local, rows, cols;
