@@ -80,4 +80,13 @@ void lagrangeDerivativeMatrix(int p, const double *x, double *D) {
   }
 }
 
+double gllEndNodeStiffness(int p) {
+  double x[kMaxSpectralDegree + 1], w[kMaxSpectralDegree + 1], D[(kMaxSpectralDegree + 1) * (kMaxSpectralDegree + 1)];
+  gllPointsWeights(p, x, w);
+  lagrangeDerivativeMatrix(p, x, D);
+  double integral = 0; // int l_0'^2, exact by the GLL rule (degree 2p - 2)
+  for (int q = 0; q <= p; ++q) integral += w[q] * D[q * (p + 1)] * D[q * (p + 1)];
+  return 2 * integral;
+}
+
 } // namespace slipwave::fem

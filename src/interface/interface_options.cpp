@@ -61,7 +61,7 @@ PetscErrorCode InterfaceOptionsRead(MPI_Comm comm, const char *prefix, Interface
   PetscCall(PetscOptionsReal("-sigma_N0", "Initial normal traction [Pa], tension positive (compression < 0)",
                              "InterfaceOptionsRead", sigma_N0, &sigma_N0, nullptr));
   if (use == InterfaceUse::Mesh) {
-    PetscCall(PetscOptionsReal("-penalty_factor", "E, G given as auto: factor x (lambda+2mu)/h and factor x mu/h of the softer side [-], > 0", "InterfaceOptionsRead",
+    PetscCall(PetscOptionsReal("-penalty_factor", "E, G given as auto: factor x (lambda+2mu)/h and factor x mu/h of the softer side (h: the cell size; at -element_degree p, 3 h_e/(p^2+p+1)) [-], > 0", "InterfaceOptionsRead",
                                o.penalty_factor, &o.penalty_factor, nullptr));
     PetscCall(PetscOptionsReal("-contact_damping",
                                "normal dashpot of closed pairs, fraction of the critical damping of the pair's penalty spring between its two nodal masses [-], 0..1",

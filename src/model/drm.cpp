@@ -487,6 +487,10 @@ PetscErrorCode DrmCreate(const Elastodynamics &m, Drm **out) {
     delete d;
     PetscFunctionReturn(0);
   }
+  // The layer forces use each cell's Q1 stiffness (cellStiffness), which spectral elements
+  // do not have: the layer would be the sub-cells', not the elements' operator.
+  PetscCheck(m.bulk.degree() == 1, comm, PETSC_ERR_USER_INPUT,
+             "-input_method drm with -element_degree = %" PetscInt_FMT "; allowed: -element_degree 1, or -input_method base", m.bulk.degree());
   PetscCheck(m.bc.input_wave == InputWave::None, comm, PETSC_ERR_USER_INPUT,
              "-input_wave = %s with -input_method drm; allowed: -input_wave none (DRM brings the wave in through its layer, -drm_wave)", inputWaveName(m.bc.input_wave));
   d->wave    = (physics::PlaneWaveType)o.wave;

@@ -6,6 +6,7 @@
 
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/fem/cell_quality_check.hpp"
+#include "slipwave/fem/gll_basis.hpp"
 #include "slipwave/model/attenuation.hpp"
 #include "slipwave/model/body_force.hpp"
 #include "slipwave/model/drm.hpp"
@@ -109,6 +110,9 @@ PetscErrorCode assembleDampingBlocks(Elastodynamics *m) {
 // The penalty `auto`: the interface as stiff as factor x one layer of the softer adjacent
 // material one cell thick, E = factor (lambda + 2 mu)/h, G = factor mu/h (h: the smallest
 // cell size). Factor 1 adds about as much to a surface node's Gershgorin row as its cells do.
+// Degree p: a face node of an element of size h_e sees M (p^2 + p + 1)/(3 h_e) per unit area
+// (fem/gll_basis.hpp, gllEndNodeStiffness), so h is h_e 3/(p^2 + p + 1) (h_e: the smallest
+// element; p = 1: the cell size as before).
 PetscErrorCode createInterfaces(Elastodynamics *m) {
   PetscFunctionBeginUser;
   for (const mesh::InterfaceSpec &spec : m->mesh.interfaces) {
@@ -122,7 +126,7 @@ PetscErrorCode createInterfaces(Elastodynamics *m) {
         m_soft  = std::min(m_soft, info.fe.lame.lambda + 2 * info.fe.lame.mu);
         mu_soft = std::min(mu_soft, info.fe.lame.mu);
       }
-    const double h = m->bulk.minCellSize();
+    const double h = m->bulk.minElementSize() / fem::gllEndNodeStiffness((int)m->bulk.degree());
     char         note[256];
     std::snprintf(note, sizeof note, "interface %s: E = %.4g Pa/m%s, G = %.4g Pa/m%s (penalty factor %g, h = %.3g m)", spec.name.c_str(),
                   opt.E_auto ? factor * m_soft / h : opt.params.E, opt.E_auto ? " (auto)" : "", opt.G_auto ? factor * mu_soft / h : opt.params.G,
@@ -151,6 +155,10 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   std::vector<SaturatedRegion> saturated;
   bool                         any_saturated = false;
   PetscCall(PorePressureReadMaterials(comm, &m->materials, &saturated, &any_saturated));
+  // The pore pressure couples through each cell's Q1 matrices (model/pore_pressure.cpp), which
+  // spectral elements do not have.
+  PetscCheck(!any_saturated || m->mesh.degree == 1, comm, PETSC_ERR_USER_INPUT,
+             "-material_<r>_saturated with -element_degree = %" PetscInt_FMT "; allowed: -element_degree 1 for saturated regions", m->mesh.degree);
   PetscCall(readDamping(m));
   PetscCall(AttenuationCreate(comm, &m->materials, &m->attenuation));
   auto setupBulk = [m]() {

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <utility>
 
-#include "slipwave/model/attenuation.hpp"
+#include "slipwave/fem/gll_basis.hpp"
+#include "slipwave/mesh/spectral_layout.hpp"
 #include "slipwave/mesh/vertex_coordinates.hpp"
+#include "slipwave/model/attenuation.hpp"
 #include "slipwave/model/boundary_faces.hpp"
 #include "slipwave/physics/absorbing_boundary.hpp"
 
@@ -119,7 +121,22 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
     // drives free-field sides of saturated sites (model/elastodynamics.cpp).
     seg_mat[e] = boundaryElastic(a);
   }
-  const std::string problem = side->column.setup((int)dim, heights, seg_mat, rayleigh.alpha, rayleigh.beta);
+  // Spectral elements: the column is the 1D element of the mesh's degree on the side's GLL
+  // nodes (physics/free_field_column.hpp), so a height-only motion is an exact discrete
+  // solution of the main mesh at any degree.
+  const mesh::SpectralLayout *layout = nullptr;
+  PetscCall(mesh::SpectralLayoutOf(dm, &layout));
+  physics::ColumnElement element;
+  if (layout && layout->degree > 1) {
+    const int p    = (int)layout->degree;
+    element.degree = p;
+    element.x.resize(p + 1);
+    element.w.resize(p + 1);
+    element.D.resize((p + 1) * (p + 1));
+    fem::gllPointsWeights(p, element.x.data(), element.w.data());
+    fem::lagrangeDerivativeMatrix(p, element.x.data(), element.D.data());
+  }
+  const std::string problem = side->column.setup((int)dim, heights, seg_mat, rayleigh.alpha, rayleigh.beta, element);
   PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "-bc_%s_type freefield: %s", name.c_str(), problem.c_str());
   if (att) {
     // The column's segments carry the damping of the side's cells, so that the free-field
@@ -185,10 +202,10 @@ PetscErrorCode FreeFieldUpdate(FreeField *ff, DM dm, TS ts, PetscReal t, double 
   PetscCall(VecGetArray(ff->force_local, &f));
   for (FreeFieldSide &side : ff->sides) {
     const physics::FreeFieldColumn &col = side.trial;
-    std::vector<double>             stress(col.segmentCount() * dim * dim);
-    for (int e = 0; e < col.segmentCount(); ++e) col.segmentStress(e, &stress[e * dim * dim]);
     for (const FreeFieldTerm &term : side.terms) {
-      const double *sig = &stress[term.segment * dim * dim];
+      // The face's element's stress at the term's node (GLL face rule; degree 1: the segment's).
+      double sig[9];
+      col.stress(term.segment, term.node, sig);
       for (PetscInt i = 0; i < dim; ++i) {
         double fi = 0;
         for (PetscInt j = 0; j < dim; ++j) fi += term.C[i * dim + j] * col.velocity(term.node, (int)j) + term.weight * sig[i * dim + j] * term.normal[j];

@@ -115,8 +115,9 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   for (const auto &info : m->materials) vp_max = std::max({vp_max, info.elastic.vp, info.vp_undrained});
   step->dt_cfl   = m->bulk.minCellSize() / vp_max;
   step->dt_limit = step->dt_bulk;
-  // The free-field columns are 1D chains of the side's cells, so their Gershgorin bound is
-  // normally below the mesh's; checked anyway, since they step with the same dt.
+  // The free-field columns are the 1D version of the side's elements, so their bound
+  // (Gershgorin at degree 1, the element eigenvalue at p > 1) is normally below the mesh's;
+  // checked anyway, since they step with the same dt.
   step->dt_free_field           = FreeFieldStableStep(m->free_field);
   const bool free_field_governs = step->dt_free_field < step->dt_limit;
   step->dt_limit                = std::min(step->dt_limit, step->dt_free_field);
@@ -124,7 +125,7 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   step->governing = std::string(interfaces_matter ? "bulk stiffness and interface penalty springs" : "bulk stiffness") +
                     (m->rayleigh.beta > 0 ? " with stiffness-proportional damping" : "") + (dashpots ? " and contact dashpots" : "") +
                     (m->bulk.degree() > 1 ? " (certified element bound, degree " + std::to_string(m->bulk.degree()) + ")" : " (Gershgorin bound)");
-  if (free_field_governs) step->governing = "free-field column (Gershgorin bound)";
+  if (free_field_governs) step->governing = m->bulk.degree() > 1 ? "free-field column (element bound)" : "free-field column (Gershgorin bound)";
   // Saturated regions: the pore-pressure diffusion limits the step unless it is sub-stepped.
   if (m->pore) {
     step->dt_diffusion    = m->pore->dt_diffusion;

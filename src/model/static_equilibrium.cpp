@@ -6,23 +6,52 @@
 namespace slipwave::model {
 namespace {
 
-// K: the element matrices of the bulk operator (the very matrices the explicit steps apply)
-// plus the interface stick springs. The DM's preallocation covers the cells; a pair couples
-// two nodes that share no cell, so those few entries are allowed to allocate.
-PetscErrorCode assembleStiffness(Elastodynamics *m, Mat *K) {
+// Adds the element matrices of the bulk operator (the very matrices the explicit steps apply)
+// and the interface stick springs to K; with_values false adds zeros (for the pattern).
+PetscErrorCode addStiffness(Elastodynamics *m, bool with_values, Mat K) {
   PetscFunctionBeginUser;
-  PetscCall(DMCreateMatrix(m->dm, K));
-  PetscCall(MatSetOption(*K, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
   const PetscInt        nen = m->bulk.nodesPerElement(), dim = m->dim, n = nen * dim;
   std::vector<PetscInt> rows(n);
-  std::vector<double>   Ke((size_t)n * n);
+  std::vector<double>   Ke((size_t)n * n, 0.0);
   for (PetscInt e = 0; e < m->bulk.elementCount(); ++e) {
     for (PetscInt a = 0; a < nen; ++a)
       for (PetscInt i = 0; i < dim; ++i) rows[a * dim + i] = m->bulk.elementNodeOffset(e, a) + i;
-    m->bulk.elementStiffness(e, Ke.data());
-    PetscCall(MatSetValuesLocal(*K, n, rows.data(), n, rows.data(), Ke.data(), ADD_VALUES));
+    if (with_values) m->bulk.elementStiffness(e, Ke.data());
+    PetscCall(MatSetValuesLocal(K, n, rows.data(), n, rows.data(), Ke.data(), ADD_VALUES));
   }
-  for (const auto &iface : m->interfaces) PetscCall(iface.AddStickStiffness(*K));
+  for (const auto &iface : m->interfaces) PetscCall(iface.AddStickStiffness(K));
+  PetscFunctionReturn(0);
+}
+
+// K preallocated from its own entries: the DM's preallocation covers the DM cells' adjacency,
+// which misses the couplings inside a spectral element (its nodes share no sub-cell) and
+// those of the interface pairs; entries allocated on the fly cost a copy each (40 x 40
+// elements at p = 4: 460 s, against 3.3 s preallocated). A MATPREALLOCATOR pass records the
+// exact pattern first.
+PetscErrorCode assembleStiffness(Elastodynamics *m, Mat *K) {
+  Mat                    pattern;
+  PetscInt               rows_local, cols_local, rows, cols;
+  ISLocalToGlobalMapping l2g;
+  PetscFunctionBeginUser;
+  PetscCall(DMSetMatrixPreallocateSkip(m->dm, PETSC_TRUE));
+  PetscCall(DMCreateMatrix(m->dm, K));
+  PetscCall(DMSetMatrixPreallocateSkip(m->dm, PETSC_FALSE));
+  PetscCall(MatGetLocalSize(*K, &rows_local, &cols_local));
+  PetscCall(MatGetSize(*K, &rows, &cols));
+  PetscCall(MatGetLocalToGlobalMapping(*K, &l2g, nullptr));
+  PetscCall(MatCreate(m->comm, &pattern));
+  PetscCall(MatSetType(pattern, MATPREALLOCATOR));
+  PetscCall(MatSetSizes(pattern, rows_local, cols_local, rows, cols));
+  PetscCall(MatSetLocalToGlobalMapping(pattern, l2g, l2g));
+  PetscCall(MatSetUp(pattern));
+  PetscCall(addStiffness(m, false, pattern));
+  PetscCall(MatAssemblyBegin(pattern, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(pattern, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatPreallocatorPreallocate(pattern, PETSC_FALSE, *K));
+  PetscCall(MatDestroy(&pattern));
+  // The pattern is complete: an entry outside it would be a bug, not a slow path.
+  PetscCall(MatSetOption(*K, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PetscCall(addStiffness(m, true, *K));
   PetscCall(MatAssemblyBegin(*K, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(*K, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);

@@ -8,8 +8,49 @@
 
 namespace slipwave::physics {
 
-std::string FreeFieldColumn::setup(int dim, const std::vector<double> &heights, const std::vector<ElasticMaterial> &materials, double alpha, double beta) {
-  char buf[200];
+namespace {
+
+// Largest eigenvalue of a symmetric n x n matrix (row-major, overwritten) by cyclic Jacobi
+// rotations, to round-off (n <= 9 here).
+double symmetricLambdaMax(int n, std::vector<double> A) {
+  for (int sweep = 0; sweep < 100; ++sweep) {
+    double off = 0, diag = 0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) (i == j ? diag : off) += A[i * n + j] * A[i * n + j];
+    if (off <= 1e-32 * diag) break;
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j) {
+        const double aij = A[i * n + j];
+        if (aij == 0.0) continue;
+        const double theta = (A[j * n + j] - A[i * n + i]) / (2 * aij);
+        const double t     = (theta >= 0 ? 1.0 : -1.0) / (std::fabs(theta) + std::sqrt(theta * theta + 1));
+        const double c = 1 / std::sqrt(t * t + 1), sn = t * c;
+        for (int k = 0; k < n; ++k) { // columns i, j
+          const double ki = A[k * n + i], kj = A[k * n + j];
+          A[k * n + i] = c * ki - sn * kj;
+          A[k * n + j] = sn * ki + c * kj;
+        }
+        for (int k = 0; k < n; ++k) { // rows i, j
+          const double ik = A[i * n + k], jk = A[j * n + k];
+          A[i * n + k] = c * ik - sn * jk;
+          A[j * n + k] = sn * ik + c * jk;
+        }
+      }
+  }
+  double top = A[0];
+  for (int i = 1; i < n; ++i) top = std::max(top, A[i * n + i]);
+  return top;
+}
+
+bool sameElastic(const ElasticMaterial &a, const ElasticMaterial &b) { return a.rho == b.rho && a.vp == b.vp && a.vs == b.vs; }
+
+} // namespace
+
+std::string FreeFieldColumn::setup(int dim, const std::vector<double> &heights, const std::vector<ElasticMaterial> &materials, double alpha, double beta,
+                                   const ColumnElement &given) {
+  ColumnElement element = given;
+  if (element.degree == 1 && element.x.empty()) element.x = {-1, 1}, element.w = {1, 1}, element.D = {-0.5, 0.5, -0.5, 0.5};
+  char buf[240];
   if (dim != 2 && dim != 3) return "the dimension must be 2 or 3";
   if (heights.size() < 2) return "a free-field column needs at least two node heights";
   if (materials.size() != heights.size() - 1) return "a free-field column needs one material per segment";
@@ -23,19 +64,54 @@ std::string FreeFieldColumn::setup(int dim, const std::vector<double> &heights, 
     if (!p.empty()) return p;
   }
   if (!(alpha >= 0) || !(beta >= 0)) return "Rayleigh coefficients must be >= 0";
+  const int p = element.degree, nseg = (int)heights.size() - 1;
+  if (p < 1 || p > kMaxColumnDegree || (int)element.x.size() != p + 1 || (int)element.w.size() != p + 1 || (int)element.D.size() != (p + 1) * (p + 1))
+    return "the column's reference element needs p+1 points and weights and a (p+1)^2 derivative matrix";
+  if (nseg % p != 0) {
+    std::snprintf(buf, sizeof buf, "a free-field column of degree %d needs a multiple of %d node intervals; the side has %d", p, p, nseg);
+    return buf;
+  }
+  for (int e = 0; e < nseg / p; ++e) {
+    const double z0 = heights[e * p], L = heights[(e + 1) * p] - z0;
+    for (int a = 0; a <= p; ++a) {
+      if (a < p && !sameElastic(materials[e * p + a], materials[e * p])) {
+        std::snprintf(buf, sizeof buf, "the element of degree %d from height %g to %g has segments of different materials", p, z0, z0 + L);
+        return buf;
+      }
+      if (std::fabs(heights[e * p + a] - (z0 + (1 + element.x[a]) * L / 2)) > 1e-6 * L) {
+        std::snprintf(buf, sizeof buf, "node height %g is not at the GLL point %d of the element of degree %d from height %g to %g", heights[e * p + a], a, p, z0, z0 + L);
+        return buf;
+      }
+    }
+  }
   dim_   = dim;
   z_     = heights;
   mat_   = materials;
   alpha_ = alpha;
   beta_  = beta;
-  const int n = (int)z_.size();
+  p_     = p;
+  ref_w_ = element.w;
+  ref_D_ = element.D;
+  ref_S2_.assign((p + 1) * (p + 1), 0.0);
+  for (int a = 0; a <= p; ++a)
+    for (int b = 0; b <= p; ++b) {
+      double sum = 0;
+      for (int q = 0; q <= p; ++q) sum += ref_w_[q] * ref_D_[q * (p + 1) + a] * ref_D_[q * (p + 1) + b];
+      ref_S2_[a * (p + 1) + b] = 2 * sum;
+    }
+  // W^-1/2 S2 W^-1/2 has the eigenvalues of W^-1 S2.
+  std::vector<double> scaled(ref_S2_);
+  for (int a = 0; a <= p; ++a)
+    for (int b = 0; b <= p; ++b) scaled[a * (p + 1) + b] /= std::sqrt(ref_w_[a] * ref_w_[b]);
+  ref_lambda_ = symmetricLambdaMax(p + 1, scaled);
+  const int n = (int)z_.size(), ne = elementCount();
   mass_.assign(n, 0.0);
-  k_.assign((n - 1) * dim_, 0.0);
-  for (int e = 0; e < n - 1; ++e) {
-    const double L = z_[e + 1] - z_[e];
-    const auto   lm = lame(mat_[e]);
-    mass_[e] += mat_[e].rho * L / 2;
-    mass_[e + 1] += mat_[e].rho * L / 2;
+  k_.assign(ne * dim_, 0.0);
+  for (int e = 0; e < ne; ++e) {
+    const double L  = elementLength(e);
+    const auto  &m  = mat_[e * p_];
+    const auto   lm = lame(m);
+    for (int a = 0; a <= p_; ++a) mass_[e * p_ + a] += m.rho * L / 2 * ref_w_[a];
     for (int c = 0; c < dim_; ++c) k_[e * dim_ + c] = (c == dim_ - 1 ? lm.lambda + 2 * lm.mu : lm.mu) / L;
   }
   modulus_factor_.assign(n - 1, 1.0);
@@ -59,12 +135,14 @@ std::string FreeFieldColumn::setAttenuation(const std::vector<ConstantQModel> &m
   memory_weight_.assign(nseg * L, 0.0);
   for (int e = 0; e < nseg; ++e) {
     if (!models[e].omega.empty() && models[e].omega != memory_omega_) return "damped free-field segments must share the relaxation frequencies";
+    if (factor[e] != factor[e - e % p_]) return "the segments of a free-field element must share their damping";
     for (size_t l = 0; l < models[e].weight.size(); ++l) memory_weight_[e * L + l] = models[e].weight[l];
     modulus_factor_[e] = factor[e];
-    for (int c = 0; c < dim_; ++c) k_[e * dim_ + c] *= factor[e];
   }
-  zeta_.assign(nseg * dim_ * L, 0.0);
-  spring_old_.assign(nseg * dim_, 0.0);
+  for (int e = 0; e < elementCount(); ++e)
+    for (int c = 0; c < dim_; ++c) k_[e * dim_ + c] *= factor[e * p_];
+  zeta_.assign(elementCount() * dim_ * (p_ + 1) * L, 0.0);
+  spring_old_.assign(elementCount() * dim_ * (p_ + 1), 0.0);
   return "";
 }
 
@@ -73,39 +151,54 @@ void FreeFieldColumn::setInput(int component, bool p_wave) {
   input_impedance_ = mat_.empty() ? 0.0 : mat_[0].rho * (p_wave ? mat_[0].vp : mat_[0].vs);
 }
 
-void FreeFieldColumn::internalForce(const std::vector<double> &x, std::vector<double> &f) const {
-  std::fill(f.begin(), f.end(), 0.0);
-  const int n = (int)z_.size();
-  for (int e = 0; e < n - 1; ++e)
-    for (int c = 0; c < dim_; ++c) {
-      const double s = k_[e * dim_ + c] * (x[(e + 1) * dim_ + c] - x[e * dim_ + c]);
-      f[e * dim_ + c] -= s;
-      f[(e + 1) * dim_ + c] += s;
-    }
+double FreeFieldColumn::scaledGradient(const std::vector<double> &x, int e, int c, int q) const {
+  double g = 0;
+  for (int b = 0; b <= p_; ++b) g += ref_D_[q * (p_ + 1) + b] * x[(e * p_ + b) * dim_ + c];
+  return 2 * g;
 }
 
-// The springs' memory over a step of h ending at u_ (spring forces k_U Δu linear in time from
-// spring_old_), and its force on the nodes: each spring pulls with k_U Δu - sum_l zeta_l.
+void FreeFieldColumn::internalForce(const std::vector<double> &x, std::vector<double> &f) const {
+  std::fill(f.begin(), f.end(), 0.0);
+  const int n1 = p_ + 1;
+  for (int e = 0; e < elementCount(); ++e)
+    for (int c = 0; c < dim_; ++c)
+      for (int a = 0; a <= p_; ++a) {
+        double s = 0;
+        for (int b = 0; b <= p_; ++b) s += ref_S2_[a * n1 + b] * x[(e * p_ + b) * dim_ + c];
+        f[(e * p_ + a) * dim_ + c] += k_[e * dim_ + c] * s;
+      }
+}
+
+// The memory over a step of h ending at u_ (the unrelaxed elastic stress k_U 2 sum_b D_qb u_b
+// at each GLL point, linear in time from spring_old_), and its force on the nodes: the stress
+// k_U u' - sum_l zeta_l integrated against the basis, f_a = sum_q w_q D_qa sigma_q, whose
+// elastic part is K u.
 void FreeFieldColumn::memoryForce(double h, std::vector<double> &f) {
   const size_t L = memory_omega_.size();
   if (L == 0) return;
   MemoryUpdate upd[8];
   for (size_t l = 0; l < L; ++l) upd[l] = memoryUpdate(memory_omega_[l], h);
-  const int nseg = (int)z_.size() - 1;
-  for (int e = 0; e < nseg; ++e)
+  const int n1 = p_ + 1;
+  double    total[kMaxColumnDegree + 1];
+  for (int e = 0; e < elementCount(); ++e)
     for (int c = 0; c < dim_; ++c) {
-      const int    j      = e * dim_ + c;
-      const double spring = k_[j] * (u_[(e + 1) * dim_ + c] - u_[e * dim_ + c]);
-      double       total  = 0;
-      for (size_t l = 0; l < L; ++l) {
-        const double y = memory_weight_[e * L + l];
-        double      &z = zeta_[j * L + l];
-        z              = upd[l].decay * z + y * (upd[l].end * spring + upd[l].start * spring_old_[j]);
-        total += z;
+      for (int q = 0; q <= p_; ++q) {
+        const int    j      = (e * dim_ + c) * n1 + q;
+        const double spring = k_[e * dim_ + c] * scaledGradient(u_, e, c, q);
+        total[q]            = 0;
+        for (size_t l = 0; l < L; ++l) {
+          const double y = memory_weight_[e * p_ * L + l];
+          double      &z = zeta_[j * L + l];
+          z              = upd[l].decay * z + y * (upd[l].end * spring + upd[l].start * spring_old_[j]);
+          total[q] += z;
+        }
+        spring_old_[j] = spring;
       }
-      spring_old_[j] = spring;
-      f[e * dim_ + c] += total;
-      f[(e + 1) * dim_ + c] -= total;
+      for (int a = 0; a <= p_; ++a) {
+        double pull = 0;
+        for (int q = 0; q <= p_; ++q) pull += ref_w_[q] * ref_D_[q * n1 + a] * total[q];
+        f[(e * p_ + a) * dim_ + c] -= pull;
+      }
     }
 }
 
@@ -158,20 +251,21 @@ void FreeFieldColumn::step(double h, double v_in_new) {
   t_ += h;
 }
 
-void FreeFieldColumn::segmentStress(int e, double *sigma) const {
-  const double L  = z_[e + 1] - z_[e];
-  auto         lm = lame(mat_[e]);
-  lm.lambda *= modulus_factor_[e];
-  lm.mu *= modulus_factor_[e];
+void FreeFieldColumn::stress(int segment, int node, double *sigma) const {
+  const int    e = segment / p_, q = node - e * p_;
+  const double L = elementLength(e);
+  auto         lm = lame(mat_[e * p_]);
+  lm.lambda *= modulus_factor_[e * p_];
+  lm.mu *= modulus_factor_[e * p_];
   const int    z  = dim_ - 1;
   const size_t nm = memory_omega_.size();
   auto memory = [&](int c) {
     double total = 0;
-    for (size_t l = 0; l < nm; ++l) total += zeta_[(e * dim_ + c) * nm + l];
+    for (size_t l = 0; l < nm; ++l) total += zeta_[((e * dim_ + c) * (p_ + 1) + q) * nm + l];
     return total;
   };
   for (int k = 0; k < dim_ * dim_; ++k) sigma[k] = 0.0;
-  auto grad = [&](const std::vector<double> &x, int c) { return (x[(e + 1) * dim_ + c] - x[e * dim_ + c]) / L; };
+  auto grad = [&](const std::vector<double> &x, int c) { return scaledGradient(x, e, c, q) / L; };
   for (int c = 0; c < z; ++c) {
     const double tau = lm.mu * (grad(u_, c) + beta_ * grad(v_half_, c)) - memory(c);
     sigma[c * dim_ + z] = tau;
@@ -191,9 +285,14 @@ int FreeFieldColumn::findNode(double zq, double tol) const {
 }
 
 double FreeFieldColumn::omegaMax() const {
+  double    w2 = 0;
+  const int n  = (int)z_.size();
+  if (p_ > 1) {
+    for (int e = 0; e < elementCount(); ++e)
+      for (int c = 0; c < dim_; ++c) w2 = std::max(w2, 2 * k_[e * dim_ + c] / (mat_[e * p_].rho * elementLength(e)) * ref_lambda_);
+    return std::sqrt(w2);
+  }
   // Gershgorin on M^{-1} K per chain: row i sums to 2 (k_left + k_right) / m_i.
-  double w2 = 0;
-  const int n = (int)z_.size();
   for (int i = 0; i < n; ++i)
     for (int c = 0; c < dim_; ++c) {
       double row = 0;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "slipwave/fem/gll_basis.hpp"
 #include "slipwave/physics/constant_q.hpp"
 #include "slipwave/physics/elastic_material.hpp"
 #include "slipwave/physics/free_field_column.hpp"
@@ -144,7 +145,7 @@ void stresses() {
   s[2 + 3 + 2] = 0.001;  // u_z top: eps_zz = 5e-4
   unit::check(col.setState(s) && (int)s.size() == 2 + 4 * n, "column state round trip");
   double sig[9];
-  col.segmentStress(0, sig);
+  col.stress(0, 0, sig);
   unit::near(sig[0 * 3 + 2], mu * 1e-3, 1e-14, 0, "tau_xz = mu du_x/dz");
   unit::near(sig[2 * 3 + 0], mu * 1e-3, 1e-14, 0, "tau_zx = tau_xz");
   unit::near(sig[1 * 3 + 2], -mu * 2e-3, 1e-14, 0, "tau_yz = mu du_y/dz");
@@ -193,7 +194,70 @@ void constantQ() {
 
 } // namespace
 
+// A column of degree p from the GLL rule (fem/gll_basis) on nel equal elements of [0, H].
+slipwave::physics::ColumnElement gllElement(int p) {
+  slipwave::physics::ColumnElement el;
+  el.degree = p;
+  el.x.resize(p + 1), el.w.resize(p + 1), el.D.resize((p + 1) * (p + 1));
+  slipwave::fem::gllPointsWeights(p, el.x.data(), el.w.data());
+  slipwave::fem::lagrangeDerivativeMatrix(p, el.x.data(), el.D.data());
+  return el;
+}
+std::vector<double> gllHeights(double H, int nel, const slipwave::physics::ColumnElement &el) {
+  std::vector<double> z{0.0};
+  for (int e = 0; e < nel; ++e)
+    for (int a = 1; a <= el.degree; ++a) z.push_back(a == el.degree ? H * (e + 1) / nel : H * (e + (1 + el.x[a]) / 2) / nel);
+  return z;
+}
+
+// Degree p (spectral elements):
+// - one element of degree 2, length L: M^-1 K has the eigenvalues 0, 6 and 12 times
+//   (M/rho)/L^2 (modes (1,1,1), (1,0,-1), (1,-1/2,1) of W^-1 S2 with W = diag(1/3, 4/3, 1/3),
+//   S2 = [7 -8 1; -8 16 -8; 1 -8 7]/3), so omega_max = sqrt(24) vp / L on the P chain;
+// - a uniform strain gives the same stress at every node of an element (the derivative of
+//   the linear field is exact);
+// - degree 4, 70 elements: the surface velocity of the homogeneous SV column against
+//   2 v_in(t - H/c) as in closedForm (bound 1.5e-2, issue 2), with a quarter of its elements;
+// - heights off the GLL points and an interval count that is not a multiple of p are refused.
+void degreeP() {
+  const ElasticMaterial m{2000, 400, 200};
+  const auto            el2 = gllElement(2);
+  FreeFieldColumn       col;
+  unit::check(col.setup(2, gllHeights(2, 1, el2), {m, m}, 0, 0, el2).empty(), "degree-2 column setup");
+  unit::near(col.omegaMax(), std::sqrt(24.0) * 400 / 2, 1e-13, 0, "degree 2: omega_max = sqrt(24) vp / L");
+  std::vector<double> s = col.state();
+  for (int i = 0; i < 3; ++i) s[2 + i * 2 + 0] = 1e-3 * gllHeights(2, 1, el2)[i]; // u_x = 1e-3 z
+  col.setState(s);
+  double top[4], mid[4];
+  col.stress(1, 2, top);
+  col.stress(0, 1, mid);
+  unit::near(top[1], 2000 * 200.0 * 200 * 1e-3, 1e-13, 0, "degree 2: tau_xz = mu du_x/dz at the top node");
+  unit::near(mid[1], top[1], 1e-13, 0, "degree 2: the same at the middle node");
+  unit::check(!col.setup(2, {0, 0.4, 2}, {m, m}, 0, 0, el2).empty(), "degree 2: a middle node off the GLL point is refused");
+  unit::check(!col.setup(2, {0, 1, 2, 3}, {m, m, m}, 0, 0, el2).empty(), "degree 2: three intervals are refused");
+
+  const auto   el4 = gllElement(4);
+  const double H = 100, c = m.vs;
+  unit::check(col.setup(2, gllHeights(H, 70, el4), std::vector<ElasticMaterial>(280, m), 0, 0, el4).empty(), "degree-4 column setup");
+  col.setInput(0, false);
+  const RickerWavelet w{0.1, 5, 0.24};
+  const double        h = 0.9 * col.stableStep(), t_end = 0.24 + H / c + 0.4;
+  col.start(0, slipwave::physics::velocity(w, 0));
+  double num = 0, den = 0;
+  while (col.time() < t_end) {
+    const double t = col.time() + h;
+    col.step(h, slipwave::physics::velocity(w, t));
+    const double got = col.velocity(col.nodeCount() - 1, 0), want = 2 * slipwave::physics::velocity(w, t - H / c);
+    num += (got - want) * (got - want);
+    den += want * want;
+  }
+  char what[160];
+  std::snprintf(what, sizeof what, "degree 4 SV column: surface velocity = 2 v_in(t - H/c), L2 error %.3e <= 1.5e-2", std::sqrt(num / den));
+  unit::check(std::sqrt(num / den) <= 0.015, what);
+}
+
 int main() {
+  degreeP();
   closedForm(false);
   closedForm(true);
   classicRecurrence();

@@ -59,6 +59,8 @@ int main() {
     for (int j = 0; j <= p; ++j) one += l[j], xp += l[j] * std::pow(x[j], p);
     unit::near(one, 1, 0, 1e-14, tag + "basis sums to one");
     unit::near(xp, std::pow(0.3141, p), 0, 1e-14, tag + "basis reproduces x^p");
+    // The end node's stiffness factor against the closed form (p^2 + p + 1)/3 (gll_basis.hpp).
+    unit::near(gllEndNodeStiffness(p), (p * p + p + 1) / 3.0, 1e-12, 0, tag + "end-node stiffness (p^2 + p + 1)/3");
   }
   return unit::failures();
 }

@@ -24,4 +24,12 @@ void lagrangeValues(int p, const double *x, double xi, double *l);
 // Rows sum to zero (the derivative of a constant).
 void lagrangeDerivativeMatrix(int p, const double *x, double *D);
 
+// The stiffness of an end node of a 1D degree-p GLL element of length h and modulus M is
+// K_00 = (M/h) 2 int_{-1}^{1} l_0'(xi)^2 dxi; this returns that factor, (p^2 + p + 1)/3
+// (1 at p = 1: M/h). Integrating by parts, int l_0'^2 = -l_0'(-1) - int l_0 l_0'' with
+// l_0'(-1) = -p(p+1)/4, and the GLL rule (exact for the degree 2p - 2 integrand) leaves
+// only the node -1 in the last integral. What a face node of a spectral element sees in the
+// normal direction per unit face area (its tributary area cancels).
+double gllEndNodeStiffness(int p);
+
 } // namespace slipwave::fem

@@ -4,7 +4,7 @@
 // sideways. Plain C++ (no PETSc), replicated on every rank.
 //
 // Discretisation, chosen so that a main-mesh column with rollers and this column give the
-// same motion to round-off:
+// same motion to round-off (described at degree 1; at degree p see "Degree p" below):
 //  - segment e between heights z_e and z_{e+1} (length L_e) has the material of the
 //    main-mesh region next to it; lumped mass m_i = sum over adjacent segments rho L/2;
 //  - every component is an independent chain: horizontal components (0 .. dim-2) are shear
@@ -23,6 +23,16 @@
 //      a* = (f_in(t_{n+1}) - K u_{n+1} - beta K v_{n+1/2}) / m
 //      (1 + h/2 D) v_{n+1} = v_{n+1/2} + h/2 a*;  a_{n+1} = a* - D v_{n+1},  D = c/m + alpha.
 //
+// Degree p (spectral elements, the main mesh's -element_degree): the side's nodes are the GLL
+// nodes of its elements, and every p consecutive segments from the base are one 1D element of
+// degree p, the 1D restriction of the main mesh's element (a height-only motion of a tensor
+// GLL element gives exactly these nodal forces: the horizontal GLL weights sum to the face):
+// GLL lumped mass m_a = rho L/2 w_a, stiffness K_ab = (M/L) 2 sum_q w_q D_qa D_qb (D the GLL
+// derivative matrix, w the weights on [-1, 1]: ColumnElement). The stress is per element and
+// varies along it: stress(segment, node) evaluates it at a node of the segment's element, as
+// the main mesh's GLL face rule does; constant-Q memory lives at the element's GLL points. At
+// p = 1 all of this is the chain above, operation for operation.
+//
 // Free-field stress of a vertically propagating wave (vertical axis z = last axis, u = u(z)):
 // the only strains are eps_xz = u_x'/2 (and eps_yz in 3D) for SV and eps_zz = u_z' for P, so
 //   tau_xz = mu u_x',  tau_yz = mu u_y',  sigma_zz = (lambda + 2 mu) u_z',
@@ -39,11 +49,23 @@
 
 namespace slipwave::physics {
 
+// The column's reference element on [-1, 1]: its degree, GLL points x and weights w (p+1
+// each) and derivative matrix D[i*(p+1) + j] = l_j'(x_i) (the caller takes them from
+// fem/gll_basis). Left empty: degree 1 (points -1, 1, weights 1, D rows (-1/2, 1/2)).
+constexpr int kMaxColumnDegree = 8;
+struct ColumnElement {
+  int                 degree = 1;
+  std::vector<double> x, w, D;
+};
+
 class FreeFieldColumn {
 public:
   // heights: strictly ascending node heights (node 0 is the base); materials: one per segment
-  // (heights.size() - 1). Returns "" or a sentence naming the problem.
-  std::string setup(int dim, const std::vector<double> &heights, const std::vector<ElasticMaterial> &materials, double alpha, double beta);
+  // (heights.size() - 1). Degree p > 1: the segments count p per element, the segments of an
+  // element share their material and its nodes lie at the element's GLL points (to 1e-6 of
+  // its length). Returns "" or a sentence naming the problem.
+  std::string setup(int dim, const std::vector<double> &heights, const std::vector<ElasticMaterial> &materials, double alpha, double beta,
+                    const ColumnElement &element = ColumnElement());
   // The incident wave: particle-velocity component (0 .. dim-1) and its speed (vs for an S
   // wave, vp for a P wave). Without a call the base only absorbs.
   void setInput(int component, bool p_wave);
@@ -69,13 +91,16 @@ public:
   double velocity(int node, int c) const { return v_[node * dim_ + c]; }
   double acceleration(int node, int c) const { return a_[node * dim_ + c]; }
   const ElasticMaterial &material(int segment) const { return mat_[segment]; }
-  // Stress of segment e (dim x dim, row-major): elastic at u_{n+1} plus beta times the
-  // viscous stress of v_{n+1/2}.
-  void segmentStress(int e, double *sigma) const;
+  // Stress (dim x dim, row-major) of the element holding segment e at node `node` of that
+  // element (degree 1: constant over the segment): elastic at u_{n+1}, plus beta times the
+  // viscous stress of v_{n+1/2}, less the memory.
+  void stress(int segment, int node, double *sigma) const;
   // Node whose height is within tol of z, or -1.
   int findNode(double z, double tol) const;
-  // Gershgorin bound on the column's highest angular frequency and its stable step (with
-  // the stiffness-proportional damping), for comparison with the main model's.
+  // A bound on the column's highest angular frequency and its stable step (with the
+  // stiffness-proportional damping), for comparison with the main model's. Degree 1:
+  // Gershgorin. Degree p: the largest element's omega^2 = 2 k_e/(rho L_e) lambda_max(W^-1 S2)
+  // (K = sum K_e <= max_e omega_e^2 M; the reference eigenvalue by Jacobi rotations).
   double omegaMax() const;
   double stableStep() const;
 
@@ -90,7 +115,11 @@ private:
   int                          dim_ = 2;
   std::vector<double>          z_, mass_;
   std::vector<ElasticMaterial> mat_;
-  std::vector<double>          k_; // per segment and component: modulus / L
+  int                          p_ = 1;             // element degree: p_ segments per element
+  std::vector<double>          ref_w_, ref_D_;     // reference GLL weights and derivative matrix
+  std::vector<double>          ref_S2_;            // 2 sum_q w_q D_qa D_qb, (p+1)^2
+  double                       ref_lambda_ = 2;    // lambda_max(W^-1 S2)
+  std::vector<double>          k_; // per element and component: modulus / L
   double                       alpha_ = 0, beta_ = 0;
   int                          input_component_ = -1;
   double                       input_impedance_ = 0; // rho c of the base segment for the input
@@ -99,7 +128,13 @@ private:
   std::vector<double>          modulus_factor_;     // per segment: M_U / (rho c^2), 1 if elastic
   std::vector<double>          memory_omega_;       // w_l shared by the damped segments
   std::vector<double>          memory_weight_;      // Y_l per segment ([e * L + l]; 0 if elastic)
-  std::vector<double>          zeta_, spring_old_;  // [(e * dim + c) * L + l], [e * dim + c]
+  // Per element, component and GLL point q (j = (e * dim + c) * (p+1) + q): the memory
+  // variables zeta_[j * L + l] and the last unrelaxed elastic stress spring_old_[j].
+  std::vector<double>          zeta_, spring_old_;
+  int    elementCount() const { return segmentCount() / p_; }
+  double elementLength(int e) const { return z_[(e + 1) * p_] - z_[e * p_]; }
+  // 2 sum_b D_qb x_b at point q of element e, component c: the derivative times the length.
+  double scaledGradient(const std::vector<double> &x, int e, int c, int q) const;
   void                         memoryForce(double h, std::vector<double> &f); // updates zeta_, adds its force
   double                       t_ = 0;
   bool                         started_ = false;
