@@ -18,10 +18,12 @@ namespace slipwave::app {
 namespace {
 
 constexpr PetscInt kMagic   = 0x53574350; // "SWCP"
-constexpr PetscInt kVersion = 6; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
+constexpr PetscInt kVersion = 7; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
                                  // 4: state only (no RHS force parts, no attenuation trial);
                                  // 5: the scene options after the header, a seal at the end;
-                                 // 6: the pore pressure state and the ledger's fluid terms
+                                 // 6: the pore pressure state and the ledger's fluid terms;
+                                 // 7: free-field columns keep constant-Q memory at every GLL
+                                 //    point of a segment (both ends at p = 1)
 constexpr PetscInt kHeader  = 10;
 
 // The ledger as a flat array, in a fixed order.
