@@ -14,9 +14,11 @@
 # base (R = (1 - alpha)/(1 + alpha) = 0.67), so after 10 s the motion is below 1e-5 of its
 # peak; the Fourier transform of the complete transient is then evaluated directly on a
 # 1e-4 Hz grid (exact zero padding: the resolution is not limited by the record length).
+# SEM_DEGREE / FREE_FIELD_FACES: the same site at another element degree and mesh
+# (tests/cases/sem_free_field_transfer.sh).
 set -eu
 . tests/tools/lib.sh
-$SW -regions rock,soil -region_soil_box 0,4,0,30 -mesh_box_faces 4,40 -mesh_box_lower 0,-10 -mesh_box_upper 4,30 \
+$SW -regions rock,soil -region_soil_box 0,4,0,30 -mesh_box_faces "${FREE_FIELD_FACES:-4,40}" -element_degree "$DEGREE" -mesh_box_lower 0,-10 -mesh_box_upper 4,30 \
   -material_soil_rho 1900 -material_soil_vp 500 -material_soil_vs 200 -material_rock_rho 2400 -material_rock_vp 1600 -material_rock_vs 800 \
   -bc_bottom_type absorbing -bc_left_type freefield -bc_right_type freefield -input_wave sv -input_boundary bottom \
   -input_stf ricker -input_f0 2 -input_t0 0.6 -input_amplitude 0.1 -ts_max_time 10 -output_fields 0 -progress_interval 100000 \
