@@ -1,7 +1,9 @@
 # Where a step's time goes, through the real executable with -log_view: the 2D 1024^2 and 3D
 # 64^3 Q1 boxes (edge 100 m, one soil region) with absorbing base and sides, an SV Ricker
 # input through the base, the energy ledger at its default interval, no field output; 1 and 2
-# ranks. Per case, best of BENCH_REPEATS (2) runs (other jobs share the machine): the whole
+# ranks. Per case, best of BENCH_REPEATS (5) runs, the 1- and 2-rank runs of a box interleaved
+# (other jobs and the VM's neighbours share the machine; the slower rank changes from run to
+# run, so single runs measure the noise, not the code): the whole
 # step ("s per step" of the run report), the bulk force (SW:Bulk:Force), the boundary terms
 # (SW:Boundary:Apply), the ledger (SW:Energy:Ledger) per step (max over ranks), the ratio
 # whole step / bulk force of the same run, DOF-updates per second per core and the 2-rank
@@ -19,14 +21,14 @@ MPIEXEC="mpiexec --oversubscribe"
 N2=${BENCH_STEP_2D:-1024}
 N3=${BENCH_STEP_3D:-64}
 DEGREES=${BENCH_STEP_DEGREES:-1 4}
-REPEATS=${BENCH_REPEATS:-2}
+REPEATS=${BENCH_REPEATS:-5}
 WORK="$BUILD/bench/work/step_cost"
 mkdir -p "$WORK"
 SOIL="-regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -input_wave sv -input_boundary bottom -input_stf ricker -input_f0 5
  -input_t0 0.24 -input_amplitude 0.1 -output_fields 0 -progress_interval 1000 -log_view"
 logs=()
-run_box() { # dim n steps ranks degree
-  local dim=$1 n=$2 steps=$3 ranks=$4 p=$5 faces upper sides
+run_box() { # dim n steps ranks degree repeat
+  local dim=$1 n=$2 steps=$3 ranks=$4 p=$5 k=$6 faces upper sides
   local e=$((n / p))
   if [ "$dim" = 2 ]; then faces="$e,$e"; upper="100,100"; sides="bottom left right"
   else faces="$e,$e,$e"; upper="100,100,100"; sides="bottom left right front back"; fi
@@ -34,18 +36,20 @@ run_box() { # dim n steps ranks degree
   for s in $sides; do bc="$bc -bc_${s}_type absorbing"; done
   local launch="$SW"
   [ "$ranks" -gt 1 ] && launch="$MPIEXEC -n $ranks $SW"
-  for k in $(seq 1 "$REPEATS"); do
-    local log="$WORK/box${dim}d_${n}_p${p}_np${ranks}_$k.log"
-    $launch -mesh_dim "$dim" -mesh_box_faces "$faces" -mesh_box_upper "$upper" -element_degree "$p" $SOIL $bc -ts_max_steps "$steps" -ts_max_time 100 \
-      -output_dir "$WORK/box${dim}d_${n}_p${p}_np${ranks}" -output_overwrite > "$log"
-    logs+=("$dim $n $ranks $p $log")
-  done
+  local log="$WORK/box${dim}d_${n}_p${p}_np${ranks}_$k.log"
+  $launch -mesh_dim "$dim" -mesh_box_faces "$faces" -mesh_box_upper "$upper" -element_degree "$p" $SOIL $bc -ts_max_steps "$steps" -ts_max_time 100 \
+    -output_dir "$WORK/box${dim}d_${n}_p${p}_np${ranks}" -output_overwrite > "$log"
+  logs+=("$dim $n $ranks $p $log")
 }
 for p in $DEGREES; do
-  run_box 2 "$N2" 100 1 "$p"
-  run_box 2 "$N2" 100 2 "$p"
-  run_box 3 "$N3" 40 1 "$p"
-  run_box 3 "$N3" 40 2 "$p"
+  for k in $(seq 1 "$REPEATS"); do
+    run_box 2 "$N2" 100 1 "$p" "$k"
+    run_box 2 "$N2" 100 2 "$p" "$k"
+  done
+  for k in $(seq 1 "$REPEATS"); do
+    run_box 3 "$N3" 40 1 "$p" "$k"
+    run_box 3 "$N3" 40 2 "$p" "$k"
+  done
 done
 $PY - "${BENCH_CSV:-}" "${logs[@]}" <<'PY'
 import re, sys
