@@ -30,6 +30,7 @@ import sys
 import numpy as np
 sys.path.insert(0, "tests/tools")
 from constant_q import model_from_report, complex_speed
+from spectra import dtft
 out = sys.argv[1]
 fl, Y, fr = model_from_report(open(f"{out}/log").read(), "soil")
 d = np.genfromtxt(f"{out}/stations/surface.csv", delimiter=",", names=True)
@@ -39,12 +40,7 @@ tau = np.pi * f0 * (t - t0)
 vin = A * (1 - 2 * tau**2) * np.exp(-tau**2)
 late = np.abs(v[t > 7.5]).max() / np.abs(v).max()
 f = np.arange(1.0, 10.0, 1e-3)
-def dtft(x):
-    out = np.empty(len(f), complex)
-    for i in range(0, len(f), 500):
-        out[i:i + 500] = np.exp(-2j * np.pi * np.outer(f[i:i + 500], t)) @ x
-    return out
-ratio = np.abs(dtft(v)) / np.abs(2 * dtft(vin))
+ratio = np.abs(dtft(f, t, v)) / np.abs(2 * dtft(f, t, vin))
 def closed_form(vstar):
     k = 2 * np.pi * f / vstar
     alpha = 1900 * vstar / (2400 * 800)

@@ -30,11 +30,13 @@
 # 0.066 (at a0 = 2; 0.03 below 1.9). About 40 s on one core.
 set -eu
 . tests/tools/lib.sh
-$PY tests/tools/strip_impedance.py
 . tests/tools/strip_footing.sh
-strip_footing_run vertical 80 40 0.5 6 "-structure_load_force 0,1e5"
-strip_footing_run rocking_h 40 20 0.5 3 "-structure_load_moment 1e5"
-strip_footing_run rocking_h2 40 20 0.25 3 "-structure_load_moment 1e5"
+. tests/tools/together.sh
+together $PY tests/tools/strip_impedance.py
+together strip_footing_run vertical 80 40 0.5 6 "-structure_load_force 0,1e5"
+together strip_footing_run rocking_h 40 20 0.5 3 "-structure_load_moment 1e5"
+together strip_footing_run rocking_h2 40 20 0.25 3 "-structure_load_moment 1e5"
+together_wait
 $PY - "$WORK" <<'PY'
 import sys
 import numpy as np

@@ -8,13 +8,15 @@
 # of each quantity's peak. All runs use the same step (-ts_dt 1e-4, below every limit).
 set -eu
 . tests/tools/lib.sh
+. tests/tools/together.sh
 grep -v "^interface" config/scenes/default.yaml > "$WORK/unsplit.yaml"
 O="-mesh_box_faces 60,30 -ts_max_time 3 -output_fields 0 -progress_interval 100 -ts_dt 1e-4"
-$SW -options_file "$WORK/unsplit.yaml" $O -output_dir "$WORK/unsplit" > "$WORK/unsplit.log"
+together $SW -options_file "$WORK/unsplit.yaml" $O -output_dir "$WORK/unsplit" > "$WORK/unsplit.log"
 tie="-interface_base_phi 0 -interface_base_c 1e12 -interface_base_tensile_strength 1e12 -interface_base_e_ini 1"
 for f in 30 300; do
-  $SW -options_file config/scenes/default.yaml $O $tie -interface_base_penalty_factor $f -output_dir "$WORK/tied$f" > "$WORK/tied$f.log"
+  together $SW -options_file config/scenes/default.yaml $O $tie -interface_base_penalty_factor $f -output_dir "$WORK/tied$f" > "$WORK/tied$f.log"
 done
+together_wait
 names=block_top,block_base_left,block_base_right,free_field,bedrock
 d30=$($CHECK stations-equal "$WORK/unsplit" "$WORK/tied30" --names $names --tol 1 | sed 's/.*difference \([0-9.e+-]*\) .*/\1/')
 d300=$($CHECK stations-equal "$WORK/unsplit" "$WORK/tied300" --names $names --tol 1 | sed 's/.*difference \([0-9.e+-]*\) .*/\1/')

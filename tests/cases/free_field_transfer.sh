@@ -26,6 +26,8 @@ $SW -regions rock,soil -region_soil_box 0,4,0,30 -mesh_box_faces "${FREE_FIELD_F
 $PY - "$WORK" <<'PY'
 import sys
 import numpy as np
+sys.path.insert(0, "tests/tools")
+from spectra import dtft
 d = np.genfromtxt(f"{sys.argv[1]}/stations/surface.csv", delimiter=",", names=True)
 t, v = d["t"], d["v_x"]
 f0, t0, A = 2.0, 0.6, 0.1
@@ -33,12 +35,7 @@ tau = np.pi * f0 * (t - t0)
 vin = A * (1 - 2 * tau**2) * np.exp(-tau**2)
 late = np.abs(v[t > 9.5]).max() / np.abs(v).max()
 f = np.arange(1.40, 1.95, 1e-4)
-def dtft(x):
-    out = np.empty(len(f), complex)
-    for i in range(0, len(f), 200):
-        out[i:i + 200] = np.exp(-2j * np.pi * np.outer(f[i:i + 200], t)) @ x
-    return out
-ratio = np.abs(dtft(v)) / np.abs(2 * dtft(vin))
+ratio = np.abs(dtft(f, t, v)) / np.abs(2 * dtft(f, t, vin))
 k = int(np.argmax(ratio))
 # parabola through the three grid points around the maximum
 y0, y1, y2 = ratio[k - 1], ratio[k], ratio[k + 1]

@@ -25,6 +25,7 @@
 # (tests/cases/sem_convergence_hex.sh); the errors equal the 2D ones to 4 digits.
 set -eu
 . tests/tools/lib.sh
+. tests/tools/together.sh
 common="$COLUMN -input_wave sv -input_t0 0.4 -ts_max_time 0.8 -output_fields 1 -output_interval 0.8 -energy_interval 1000000 -progress_interval 1e7"
 # degree: element counts along the column; dt [s]
 if [ "${SEM_DIM:-2}" = 3 ]; then
@@ -37,11 +38,12 @@ fi
 for c in $cases; do
   IFS=: read -r p meshes dt <<<"$c"
   for n in ${meshes//,/ }; do
-    $SW $column -element_degree $p -mesh_box_faces $across,$n -ts_dt $dt -output_dir "$WORK/p${p}_n$n" > "$WORK/p${p}_n$n.log"
+    together $SW $column -element_degree $p -mesh_box_faces $across,$n -ts_dt $dt -output_dir "$WORK/p${p}_n$n" > "$WORK/p${p}_n$n.log"
   done
   dt2=$($PY -c "print(2 * $dt)")
-  $SW $column -element_degree $p -mesh_box_faces $across,$n -ts_dt $dt2 -output_dir "$WORK/p${p}_n${n}_2dt" > "$WORK/p${p}_n${n}_2dt.log"
+  together $SW $column -element_degree $p -mesh_box_faces $across,$n -ts_dt $dt2 -output_dir "$WORK/p${p}_n${n}_2dt" > "$WORK/p${p}_n${n}_2dt.log"
 done
+together_wait
 $PY - "$WORK" $vertical $cases <<'PY'
 import sys
 sys.path.insert(0, "tests/tools")

@@ -1,0 +1,24 @@
+# Independent runs of one test two at a time: the suite is sized for a 2-core machine, and a
+# test's runs on one rank each leave a core idle when run one after another. Sourced by the
+# tests that have such runs (after tests/tools/lib.sh). TEST_JOBS=1 runs them in sequence.
+# `together COMMAND...` starts COMMAND in the background (redirections given to `together`
+# apply to it), first waiting for the oldest run while TEST_JOBS are going; `together_wait`
+# waits for the rest and fails if any run failed, so a failed run fails the test as it did
+# in sequence. Runs on 2 ranks (mpiexec) stay outside: they use both cores themselves.
+TEST_JOBS=${TEST_JOBS:-2}
+together_pids=()
+together_failed=0
+together() {
+  if [ ${#together_pids[@]} -ge "$TEST_JOBS" ]; then
+    wait "${together_pids[0]}" || together_failed=1
+    together_pids=("${together_pids[@]:1}")
+  fi
+  "$@" &
+  together_pids+=($!)
+}
+together_wait() {
+  local pid
+  for pid in "${together_pids[@]}"; do wait "$pid" || together_failed=1; done
+  together_pids=()
+  [ "$together_failed" = 0 ]
+}
