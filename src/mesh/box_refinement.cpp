@@ -373,27 +373,6 @@ PetscErrorCode boxElementFrame(DM coarse, ElementFrame *frame) {
   PetscFunctionReturn(0);
 }
 
-// SpectralLayoutOf reads each sub-cell's frame from its own cone (spectral_layout.hpp), and the
-// sub-cells of an element must share the element's. DMPlex's regular refinement gives every
-// child its parent's frame (a quadrilateral's or hexahedron's children list their vertices
-// from the corner and in the direction of their parent's: checked here, 0 cells differ in the
-// tests), so the box's frame carries down to the sub-cells.
-PetscErrorCode checkCellFrames(DM dm, const ElementFrame &frame) {
-  PetscInt          c_start, c_end, differ = -1;
-  VertexCoordinates coords;
-  PetscFunctionBeginUser;
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
-  PetscCall(coords.Open(dm));
-  for (PetscInt c = c_start; c < c_end && differ < 0; ++c) {
-    ElementFrame f;
-    PetscCall(cellFrame(dm, coords, c, &f));
-    if (f.code() != frame.code()) differ = c;
-  }
-  PetscCall(coords.Close());
-  PetscCheck(differ < 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "refined cell %" PetscInt_FMT " has another element frame than its parent; build with -mesh_build serial", differ);
-  PetscFunctionReturn(0);
-}
-
 // Every vertex from its lattice point to its GLL node: along each axis, lattice index i lies in
 // element e = min(i / p, n - 1) at node j = i - e p, at lower + h (e + (1 + xi_j) / 2), h the
 // element size (the serial subdivision's Q1 map of a box element). The position is a function
@@ -511,11 +490,12 @@ PetscErrorCode BoxRefineDistributed(DM *dm, PetscInt levels, PetscInt degree, co
     PetscCall(labelPairs(*dm, s, spec, structure));
   }
   PetscCall(numberCells(*dm, s, serial_cell));
-  // The lattice positions above are read from the uniform fine grid; the GLL nodes come last.
-  if (degree > 1) {
-    PetscCall(checkCellFrames(*dm, s.frame));
-    PetscCall(moveToGll(*dm, s, box));
-  }
+  // SpectralLayoutOf reads each sub-cell's frame from its own cone, and positions are read in
+  // the element's frame: DMPlex's regular refinement gives every child its parent's frame (its
+  // vertices listed from the corner and in the direction of its parent's; no cell differed in
+  // the tests), and SpectralLayoutBuild stops on a sub-cell whose frame or position disagrees
+  // with its neighbours'. The lattice positions are read on the uniform grid: GLL nodes last.
+  if (degree > 1) PetscCall(moveToGll(*dm, s, box));
   PetscFunctionReturn(0);
 }
 
