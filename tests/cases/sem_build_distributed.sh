@@ -14,10 +14,10 @@
 #     where it bends, the serial subdivision's vertex order that numbers the pairs is not the
 #     lattice order: pair ids in lattice order fail interface-equal at 1.0 of the peak), with
 #     cohesion 1e12 Pa against sliding (without gravity it opens under tension, 30 of 33 pairs
-#     at the end, so the contact law switches too;
-#     with gravity but no geostatic stage the block drops onto the soil and its stick-slip
-#     switching lifts the accelerations' round-off to 7.5e-9 of their peak already between 1
-#     and 2 ranks of the serial build), absorbing sides and base with an SV Ricker input;
+#     at the end, so the contact law switches too; gravity without the geostatic stage drops
+#     the block, and its stick-slip switching lifts the accelerations' round-off above 1e-9
+#     already between 1 and 2 ranks of the serial build: 7.5e-9 with the block on the
+#     surface), absorbing sides and base with an SV Ricker input;
 #     16 x 8 elements (refined once from 8 x 4, then twice into the sub-cells). Serial on 1
 #     rank against distributed on 1 and 2 ranks (on 2, the partition cuts pairs).
 #  2. 3D two layers at p = 2 (4 x 4 x 6 hexahedra, refined once from 2 x 2 x 3, then once),
