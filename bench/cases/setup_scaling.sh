@@ -1,4 +1,5 @@
-# Set-up cost of a 3D box (BENCH_SETUP_3D^3 hexahedra, default 64) through the executable
+# Set-up cost of a 3D box (BENCH_SETUP_3D^3 hexahedra, default 64; BENCH_SETUP_DEGREE p,
+# default 1: that many elements of degree p, p^3 GLL sub-cells each) through the executable
 # (-dry_run: everything up to the first step), serial build (-mesh_build serial: the whole mesh
 # built, labelled and partitioned on rank 0) against the distributed build (-mesh_build
 # distributed with auto's level: a coarse box refined on the distributed mesh), on 1 and 2
@@ -12,12 +13,13 @@ BUILD=${BUILD:-build}
 SW="$BUILD/slipwave"
 PY=/usr/bin/python3
 N=${BENCH_SETUP_3D:-64}
+P=${BENCH_SETUP_DEGREE:-1}
 RANKS=${BENCH_SETUP_RANKS:-"1 2"}
 MPIEXEC="mpiexec --oversubscribe"
 [ "$(id -u)" = 0 ] && MPIEXEC="$MPIEXEC --allow-run-as-root"
-WORK="$BUILD/bench/work/setup_scaling"
+WORK="$BUILD/bench/work/setup_scaling${BENCH_SETUP_DEGREE:+_p$P}"
 mkdir -p "$WORK"
-BOX="-mesh_dim 3 -mesh_box_faces $N,$N,$N -mesh_box_upper 100,100,100 -regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200
+BOX="-mesh_dim 3 -element_degree $P -mesh_box_faces $N,$N,$N -mesh_box_upper 100,100,100 -regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200
  -bc_bottom_type absorbing -input_wave sv -input_boundary bottom -input_stf ricker -input_f0 5 -input_t0 0.24 -input_amplitude 0.1 -output_fields 0 -dry_run"
 logs=()
 for n in $RANKS; do
@@ -26,11 +28,11 @@ for n in $RANKS; do
     logs+=("$build np$n $WORK/${build}_np$n.log")
   done
 done
-$PY - "${BENCH_CSV:-}" "$N" "${logs[@]}" <<'PY'
+$PY - "${BENCH_CSV:-}" "$N" "$P" "${logs[@]}" <<'PY'
 import re, sys
-csv, n = sys.argv[1], sys.argv[2]
+csv, n, p = sys.argv[1], sys.argv[2], sys.argv[3]
 rows = []
-for entry in sys.argv[3:]:
+for entry in sys.argv[4:]:
     build, ranks, log = entry.split()
     text = open(log).read()
     m = re.search(r"set-up: ([0-9.]+) s wall \(mesh ([0-9.]+) s\); peak memory per rank ([0-9.]+) / ([0-9.]+) / ([0-9.]+) MB .*rank 0 ([0-9.]+) MB", text)
@@ -39,7 +41,7 @@ for entry in sys.argv[3:]:
         continue
     setup, mesh, low, avg, high, root = map(float, m.groups())
     how = "distributed" if "built distributed" in text else "serial"
-    case = f"3d_{n}^3_{how}_{ranks}"
+    case = f"3d_{n}^3{'_p' + p if p != '1' else ''}_{how}_{ranks}"
     print(f"{case:28s} set-up {setup:7.2f} s (mesh {mesh:6.2f} s), peak memory rank 0 {root:7.1f} MB, avg {avg:7.1f} MB, max {high:7.1f} MB, rank 0 / avg {root / avg:.2f}")
     rows += [(case, "setup_wall", setup, "s"), (case, "mesh_wall", mesh, "s"), (case, "rank0_peak_rss", root, "MB"), (case, "avg_peak_rss", avg, "MB"),
              (case, "max_peak_rss", high, "MB")]

@@ -136,8 +136,8 @@ PetscErrorCode labelBoxSides(DM dm, const BoxSpec &box, std::vector<std::string>
 }
 
 // Builds `built` (the requested box, or its coarse version when refined later); the memory
-// check and the description are those of the requested box.
-PetscErrorCode createBox(MPI_Comm comm, PetscInt dim, PetscInt degree, DM *dm, const BoxSpec &built, const BoxSpec &requested, std::string *source) {
+// check and the description are those of the requested box (whole: rank 0 will hold all of it).
+PetscErrorCode createBox(MPI_Comm comm, PetscInt dim, PetscInt degree, bool whole, DM *dm, const BoxSpec &built, const BoxSpec &requested, std::string *source) {
   double      vertices = 1;
   std::string faces    = "-mesh_box_faces = ";
   PetscFunctionBeginUser;
@@ -145,8 +145,6 @@ PetscErrorCode createBox(MPI_Comm comm, PetscInt dim, PetscInt degree, DM *dm, c
     vertices *= requested.faces[d] * (double)degree + 1.0; // GLL nodes
     faces += (d ? "," : "") + std::to_string(requested.faces[d]);
   }
-  bool whole = true; // the serial build holds the whole box on rank 0
-  for (PetscInt d = 0; d < dim; ++d) whole = whole && built.faces[d] == requested.faces[d];
   PetscCall(MemoryCheck(comm, vertices, dim, faces.c_str(), whole));
   PetscCall(DMPlexCreateBoxMesh(comm, dim, PETSC_FALSE, built.faces, built.lower, built.upper, nullptr, PETSC_TRUE, dm));
   char buf[128];
@@ -297,38 +295,44 @@ PetscErrorCode removeVoidRegions(MPI_Comm comm, DM *dm, const std::vector<std::s
 }
 
 // The box of the serial build, labelled (regions, voids removed, sides): the requested one, or
-// with `levels` > 0 its coarse version (2^levels fewer cells per axis).
-PetscErrorCode createLabelledBox(MPI_Comm comm, PetscInt levels, MeshOptions *o, DM *dm, MeshDescription *desc) {
+// with `levels` > 0 its coarse version (2^levels fewer cells per axis); refined: to be refined
+// on the distributed mesh (box_refinement.hpp).
+PetscErrorCode createLabelledBox(MPI_Comm comm, PetscInt levels, bool refined, MeshOptions *o, DM *dm, MeshDescription *desc) {
   BoxSpec built = o->box;
   PetscFunctionBeginUser;
   for (PetscInt d = 0; d < desc->dim; ++d) built.faces[d] >>= levels;
   desc->regions = o->regions;
   desc->boundaries.clear();
   std::vector<std::vector<PetscReal>> bounds = o->region_boxes;
-  PetscCall(createBox(comm, desc->dim, o->degree, dm, built, o->box, &desc->source));
+  PetscCall(createBox(comm, desc->dim, o->degree, !refined, dm, built, o->box, &desc->source));
   PetscCall(labelBoxRegions(comm, *dm, desc->regions, bounds, built));
   PetscCall(removeVoidRegions(comm, dm, o->voids, &desc->regions, &bounds, built));
   PetscCall(labelBoxSides(*dm, built, &desc->boundaries));
   PetscFunctionReturn(0);
 }
 
-// -mesh_build: the number of refinements of a distributed build (0: serial), after checking on
-// the coarse box that its split refines into the fine split; `serial` receives the box to
-// split and distribute (coarse or whole).
+// -mesh_build: the number of refinements of a distributed build (0: serial; at degree p = 2,
+// 4, 8 log2(p) of them make the GLL sub-cells), after checking on the coarse box that its
+// split refines into the fine split; `serial` receives the box to split and distribute (coarse,
+// the elements, or whole).
 PetscErrorCode createBoxForBuild(MPI_Comm comm, MeshOptions *o, DM *serial, MeshDescription *desc, PetscInt *levels) {
   PetscMPIInt size;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   std::vector<std::vector<PetscReal>> cuts = o->region_boxes; // voids are among the regions
-  PetscCheck(o->degree == 1 || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
-             "-mesh_build = distributed with -element_degree = %" PetscInt_FMT "; allowed: auto or serial (spectral elements are subdivided on the serial mesh)", o->degree);
-  // Spectral elements are subdivided on the serial mesh: auto builds serially.
-  *levels = o->degree > 1 ? 0 : BoxRefinementLevels(desc->dim, o->box, cuts, size, o->build);
-  PetscCheck(*levels > 0 || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
+  const PetscInt spectral = BoxSpectralRefinements(o->degree);
+  PetscCheck(spectral >= 0 || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
+             "-mesh_build = distributed with -element_degree = %" PetscInt_FMT "; allowed: -element_degree 1, 2, 4 or 8 (GLL sub-cells made by refinement), or -mesh_build auto or serial",
+             o->degree);
+  // Degrees that are no power of 2 are subdivided on the serial mesh: auto builds serially.
+  *levels = spectral < 0 ? 0 : BoxRefinementLevels(desc->dim, o->box, cuts, size, o->build);
+  PetscCheck(*levels > 0 || spectral > 0 || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
              "-mesh_build = distributed, but the box cannot be refined from a coarser one (every -mesh_box_faces entry even, region box bounds on the coarse grid, at "
              "least one coarse cell per rank); allowed: auto or serial");
-  PetscCall(createLabelledBox(comm, *levels, o, serial, desc));
-  if (*levels == 0 || o->interfaces.empty()) PetscFunctionReturn(0);
+  const bool refined = *levels > 0 || (spectral > 0 && o->build != kMeshBuildSerial);
+  PetscCall(createLabelledBox(comm, *levels, refined, o, serial, desc));
+  if (refined) *levels += spectral;
+  if (!refined || o->interfaces.empty()) PetscFunctionReturn(0);
   PetscBool refinable;
   PetscCall(BoxInterfacesRefinable(*serial, desc->regions, o->interfaces, &refinable));
   PetscCheck(refinable || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
@@ -336,7 +340,7 @@ PetscErrorCode createBoxForBuild(MPI_Comm comm, MeshOptions *o, DM *serial, Mesh
   if (refinable) PetscFunctionReturn(0);
   PetscCall(DMDestroy(serial));
   *levels = 0;
-  PetscCall(createLabelledBox(comm, 0, o, serial, desc));
+  PetscCall(createLabelledBox(comm, 0, false, o, serial, desc));
   PetscFunctionReturn(0);
 }
 
@@ -441,8 +445,12 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   DM parent    = nullptr; // spectral elements: the mesh of whole elements, partitioned for the sub-cells
   if (o.degree > 1) {
     PetscCall(checkSpectralCells(comm, serial, o.degree));
-    // The elements' shape, not their GLL sub-cells' (whose aspect comes from the GLL spacing).
+    // The elements' shape, not their GLL sub-cells' (whose aspect comes from the GLL spacing);
+    // a box built distributed has its coarse cells here, its elements scaled by 2^k on every
+    // axis: the same aspect and Jacobian ratio.
     PetscCall(fem::CellQualityCheckSerialMesh(serial));
+  }
+  if (o.degree > 1 && levels == 0) {
     parent = serial;
     PetscCall(SpectralSubdivideSerialMesh(parent, o.degree, desc->boundaries, &serial));
   }
@@ -481,8 +489,9 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   if (levels == 0) PetscCall(recordSerialCells(*dm, migration, &desc->serial_cell));
   PetscCall(PetscSFDestroy(&migration));
   if (levels > 0) {
-    PetscCall(BoxRefineDistributed(dm, levels, o.box, desc->regions, desc->boundaries, desc->interfaces, &desc->serial_cell));
+    PetscCall(BoxRefineDistributed(dm, levels, o.degree, o.box, desc->regions, desc->boundaries, desc->interfaces, &desc->serial_cell));
     desc->source += ", built distributed: refined " + std::to_string(levels) + " times";
+    if (o.degree > 1) desc->source += " (" + std::to_string(BoxSpectralRefinements(o.degree)) + " into the GLL sub-cells)";
   }
   PetscLogDouble end;
   PetscCall(PetscTime(&end));

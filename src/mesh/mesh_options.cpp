@@ -142,8 +142,8 @@ PetscErrorCode MeshOptionsRead(MPI_Comm comm, PetscInt *dim, MeshOptions *o) {
   from_file = (PetscBool)(from_file && file[0]);
   PetscBool build_set = PETSC_FALSE;
   PetscCall(PetscOptionsEList("-mesh_build",
-                              "how a box mesh is built: auto (distributed where the box allows it and has >= 1000 coarse cells per rank), serial (whole mesh on rank 0, "
-                              "then distributed), distributed (a coarse box refined on the distributed mesh)",
+                              "how a box mesh is built: auto (distributed where the box allows it and has >= 1000 coarse cells per rank, or at -element_degree 2, 4, 8), "
+                              "serial (whole mesh on rank 0, then distributed), distributed (a coarse box refined on the distributed mesh)",
                               "MeshCreate", kMeshBuildNames, 3, kMeshBuildNames[o->build], &o->build, &build_set));
   PetscCheck(!(build_set && from_file && o->build == kMeshBuildDistributed), comm, PETSC_ERR_USER_INPUT,
              "-mesh_build = distributed with -mesh_file = %s; allowed: auto or serial (a Gmsh file is read, not built by refinement)", file);

@@ -11,10 +11,14 @@
 //     faces by position), positions equal to 1e-12 of the box (refinement averages corners,
 //     the box scales a lattice: round-off apart). Scenes: a 2D block embedded in the soil
 //     beside a void (the interface bends at the block's corners and ends at the surface) and
-//     a 3D block on the surface of a soil with a void above.
+//     a 3D block on the surface of a soil with a void above; the same at -element_degree 4 (2D)
+//     and 2 (3D), where the sub-cells also carry spectral_position (the serial subdivision's)
+//     and the distributed build's vertices sit at the GLL nodes (its global coordinates made
+//     from the local ones: equal), and SpectralLayoutOf groups the sub-cells back on every rank.
 #include "slipwave/mesh/box_refinement.hpp"
 #include "slipwave/mesh/mesh_builder.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
+#include "slipwave/mesh/spectral_layout.hpp"
 
 #include "petsc_test_main.hpp"
 
@@ -64,26 +68,45 @@ PetscErrorCode gatherRows(MPI_Comm comm, size_t width, const Rows &mine, Rows *a
 struct Signature {
   Rows cells, pairs;
   std::vector<Rows> faces; // per label of `face_labels`
+  double            coordinates_gap = 0; // |global coordinates scattered to local - local coordinates|
+  PetscInt          elements = 0;        // SpectralLayoutOf's elements over all ranks (p > 1)
 };
 
 PetscErrorCode signatureOf(DM dm, const slipwave::mesh::MeshDescription &desc, const std::vector<std::string> &face_labels, Signature *sig) {
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   PetscInt c_start, c_end, v_start, v_end, f_start, f_end;
-  DMLabel  region;
+  DMLabel  region, position;
   Rows     mine;
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &v_start, &v_end));
   PetscCall(DMPlexGetHeightStratum(dm, 1, &f_start, &f_end));
   PetscCall(DMGetLabel(dm, slipwave::mesh::kRegionLabel, &region));
+  PetscCall(DMGetLabel(dm, slipwave::mesh::kSpectralPositionLabel, &position));
   for (PetscInt c = c_start; c < c_end; ++c) {
     PetscReal x[3] = {0, 0, 0};
-    PetscInt  r;
+    PetscInt  r, pos = -1;
     PetscCall(slipwave::mesh::MeshPointCentroid(dm, c, x));
     PetscCall(DMLabelGetValue(region, c, &r));
-    mine.push_back({(double)desc.serial_cell[c - c_start], (double)r, x[0], x[1], x[2]});
+    if (position) PetscCall(DMLabelGetValue(position, c, &pos));
+    mine.push_back({(double)desc.serial_cell[c - c_start], (double)r, (double)pos, x[0], x[1], x[2]});
   }
-  PetscCall(gatherRows(comm, 5, mine, &sig->cells));
+  PetscCall(gatherRows(comm, 6, mine, &sig->cells));
+  const slipwave::mesh::SpectralLayout *layout;
+  PetscCall(slipwave::mesh::SpectralLayoutOf(dm, &layout));
+  sig->elements = layout ? layout->nelem : 0;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &sig->elements, 1, MPIU_INT, MPI_SUM, comm));
+  Vec global, local, scattered;
+  DM  cdm;
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMGetCoordinates(dm, &global));
+  PetscCall(DMGetCoordinatesLocal(dm, &local));
+  PetscCall(VecDuplicate(local, &scattered));
+  PetscCall(DMGlobalToLocal(cdm, global, INSERT_VALUES, scattered));
+  PetscCall(VecAXPY(scattered, -1, local));
+  PetscCall(VecNorm(scattered, NORM_INFINITY, &sig->coordinates_gap));
+  PetscCall(VecDestroy(&scattered));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &sig->coordinates_gap, 1, MPI_DOUBLE, MPI_MAX, comm));
   mine.clear();
   for (const auto &spec : desc.interfaces) {
     DMLabel pair, side;
@@ -175,6 +198,8 @@ PetscErrorCode compareBuilds(const std::string &tag, const char *options) {
     bool faces_same = sig[0].faces.size() == sig[1].faces.size();
     for (size_t l = 0; l < sig[0].faces.size() && faces_same; ++l) faces_same = sameRows(sig[0].faces[l], sig[1].faces[l]);
     unit::check(faces_same, tag + ": same boundary and interface faces (" + std::to_string(sig[0].faces.size()) + " labels), and no other points under them");
+    unit::check(sig[1].coordinates_gap == 0, tag + ": global and local coordinates agree (gap " + std::to_string(sig[1].coordinates_gap) + ")");
+    unit::check(sig[0].elements == sig[1].elements, tag + ": the layout groups " + std::to_string(sig[1].elements) + " elements, as serially (" + std::to_string(sig[0].elements) + ")");
   }
   PetscFunctionReturn(0);
 }
@@ -186,6 +211,12 @@ PetscErrorCode Run(bool) {
   PetscCall(compareBuilds("3D block on the surface", "-mesh_dim 3 -mesh_box_faces 16,16,8 -mesh_box_upper 16,16,8 -regions soil,air,block "
                                                      "-region_air_box 0,16,0,16,4,8 -region_block_box 4,12,4,12,4,8 -void_regions air -interfaces base "
                                                      "-interface_base_regions soil,block"));
+  PetscCall(compareBuilds("2D embedded block, p = 4", "-element_degree 4 -mesh_dim 2 -mesh_box_faces 16,8 -mesh_box_upper 32,16 -regions soil,air,block "
+                                                      "-region_air_box 0,32,12,16 -region_block_box 12,20,8,16 -void_regions air -interfaces base "
+                                                      "-interface_base_regions soil,block"));
+  PetscCall(compareBuilds("3D block on the surface, p = 2", "-element_degree 2 -mesh_dim 3 -mesh_box_faces 8,8,4 -mesh_box_upper 16,16,8 -regions soil,air,block "
+                                                            "-region_air_box 0,16,0,16,4,8 -region_block_box 4,12,4,12,4,8 -void_regions air -interfaces base "
+                                                            "-interface_base_regions soil,block"));
   PetscFunctionReturn(0);
 }
 

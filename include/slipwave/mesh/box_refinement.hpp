@@ -13,6 +13,14 @@
 // point whose vertices are all split; the fine split duplicates only the vertices of interface
 // faces. The two agree unless (3D) a soil and a structure cell share an edge that lies on no
 // interface face, or the interface is restricted to a face label (BoxInterfacesRefinable).
+//
+// Spectral elements of degree p = 2, 4, 8 (-element_degree): log2(p) more refinements make
+// each element's p^dim GLL sub-cells (2^levels coarse cells per element and axis before),
+// whole on one rank by construction; the vertices are then moved to the GLL nodes. Every
+// sub-cell has the spectral_position, serial_cell (e p^dim + position) and element frame (from
+// its cone: refinement keeps the parent's, spectral_layout.hpp), and the interface pairs have
+// the ids, of the serial build, which subdivides the whole box on rank 0
+// (spectral_subdivision.hpp). Other degrees are no powers of 2 and are built serially.
 #pragma once
 #include <petscdmplex.h>
 
@@ -43,11 +51,17 @@ PetscInt BoxRefinementLevels(PetscInt dim, const BoxSpec &box, const std::vector
 // refinement gives the fine split (see the header comment). Collective; rank 0 decides.
 PetscErrorCode BoxInterfacesRefinable(DM coarse, const std::vector<std::string> &regions, const std::vector<InterfaceSpec> &specs, PetscBool *refinable);
 
-// Refines the distributed coarse box `levels` times in place and puts back the labels of the
-// serial build: region on cells, boundaries and interface_<name> on faces only (refinement
-// spreads a label to every child point), interface_<name>_pair/_side on every split vertex.
-// serial_cell receives the number each local cell has in the serially built box.
-PetscErrorCode BoxRefineDistributed(DM *dm, PetscInt levels, const BoxSpec &box, const std::vector<std::string> &regions, const std::vector<std::string> &boundaries,
-                                    const std::vector<InterfaceSpec> &specs, std::vector<PetscInt> *serial_cell);
+// Degree p of spectral elements built by refinement: log2(p) refinements into the GLL
+// sub-cells for p = 2, 4, 8 (0 at p = 1); -1 for a degree that cannot be.
+PetscInt BoxSpectralRefinements(PetscInt degree);
+
+// Refines the distributed coarse box `levels` times in place (at degree p > 1 the last
+// BoxSpectralRefinements(p) of them make the GLL sub-cells of `box`'s elements) and puts back
+// the labels of the serial build: region on cells, boundaries and interface_<name> on faces
+// only (refinement spreads a label to every child point), interface_<name>_pair/_side on every
+// split vertex, spectral_position at p > 1. serial_cell receives the number each local cell
+// has in the serially built box.
+PetscErrorCode BoxRefineDistributed(DM *dm, PetscInt levels, PetscInt degree, const BoxSpec &box, const std::vector<std::string> &regions,
+                                    const std::vector<std::string> &boundaries, const std::vector<InterfaceSpec> &specs, std::vector<PetscInt> *serial_cell);
 
 } // namespace slipwave::mesh

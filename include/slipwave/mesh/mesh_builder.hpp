@@ -8,7 +8,9 @@
 //   spectral_position (degree > 1, labels.hpp) every GLL sub-cell: its place in its element
 // At -element_degree p > 1 the cells are spectral elements subdivided into GLL sub-cells
 // (spectral_subdivision.hpp; SpectralLayoutOf groups them back), partitioned whole, and
-// serial_cell numbers the sub-cells (element e's sub-cells are e p^dim .. e p^dim + p^dim - 1).
+// serial_cell numbers the sub-cells (element e's sub-cells are e p^dim .. e p^dim + p^dim - 1);
+// boxes at p = 2, 4, 8 get the same sub-cells by refinement on the distributed mesh
+// (box_refinement.hpp).
 // The vertical axis is the last coordinate (y in 2D, z in 3D).
 #pragma once
 #include <petscdmplex.h>
