@@ -9,10 +9,9 @@
 //
 // When is this exact? Refinement keeps a coarse cell's region for its children, so every
 // region and void box bound inside the mesh must lie on a coarse grid line
-// (BoxRefinementLevels). Splitting the coarse mesh duplicates the children of every coarse
-// point whose vertices are all split; the fine split duplicates only the vertices of interface
-// faces. The two agree unless (3D) a soil and a structure cell share an edge that lies on no
-// interface face, or the interface is restricted to a face label (BoxInterfacesRefinable).
+// (BoxRefinementLevels), and the coarse split must refine into the fine one
+// (InterfacesRefinable, mesh_refinement.hpp, which also holds the refinement and the label
+// repair the box shares with refined Gmsh meshes).
 #pragma once
 #include <petscdmplex.h>
 
@@ -38,10 +37,6 @@ inline constexpr double kCoarseCellsPerRank = 1000;
 // lies on a line of the coarse grid (to 1e-9 of the cell size), and the coarse box holds at
 // least kCoarseCellsPerRank cells per rank (auto) or one cell per rank (distributed). Pure.
 PetscInt BoxRefinementLevels(PetscInt dim, const BoxSpec &box, const std::vector<std::vector<PetscReal>> &region_boxes, PetscMPIInt nranks, PetscInt build);
-
-// On the coarse, unsplit, serial box (regions labelled): whether splitting it before
-// refinement gives the fine split (see the header comment). Collective; rank 0 decides.
-PetscErrorCode BoxInterfacesRefinable(DM coarse, const std::vector<std::string> &regions, const std::vector<InterfaceSpec> &specs, PetscBool *refinable);
 
 // Refines the distributed coarse box `levels` times in place and puts back the labels of the
 // serial build: region on cells, boundaries and interface_<name> on faces only (refinement
