@@ -15,7 +15,9 @@
 #  (c) physics: a coarse Gmsh column of 1 x 25 quadrilaterals (2 m x 100 m) refined twice is
 #      the grid of -mesh_box_faces 4,100 (node positions exact in binary): the SV column
 #      record at the top must equal the box's to 1e-9 of its peak (round-off; a lost or
-#      spread absorbing-base label, a wrong child geometry would show at > 1e-3).
+#      spread absorbing-base label, a wrong child geometry would show at > 1e-3). At
+#      -element_degree 2 the column is refined once on rank 0 before the subdivision: 2 x 50
+#      elements, the grid of -mesh_box_faces 2,50 at degree 2, also to 1e-9 (2 ranks).
 #  (d) 3D: soil 8 x 8 x 4 m under a 4 x 4 x 2 m block, coarse tetrahedra, k = 1, distributed
 #      on 1 and 2 ranks against serial on 1 rank.
 set -eu -o pipefail
@@ -103,6 +105,10 @@ run box 1 -mesh_box_faces 4,100 -mesh_box_upper 2,100 $column
 run column 2 -mesh_file "$WORK/column.msh" -mesh_refine 2 $column
 grep -q "built distributed: refined 2 times" "$WORK/column.log"
 $CHECK stations-equal "$WORK/box" "$WORK/column" --names top --tol 1e-9
+run box_p2 1 -mesh_box_faces 2,50 -mesh_box_upper 2,100 -element_degree 2 $column
+run column_p2 2 -mesh_file "$WORK/column.msh" -mesh_refine 1 -element_degree 2 $column
+grep -q "column.msh, refined 1 times on rank 0, spectral elements of degree 2" "$WORK/column_p2.log"
+$CHECK stations-equal "$WORK/box_p2" "$WORK/column_p2" --names top --tol 1e-9
 # (d)
 run t_serial 1 $foot3 -mesh_refine 1 -mesh_build serial
 for n in 1 2; do
