@@ -68,7 +68,8 @@ const Rule kRules[] = {
   {"-initial_velocity_*",      Kind::Real, 2, 3, magnitude(1e4), "vx,vy[,vz] with |v| <= 1e4 m/s", 1},
   // mesh
   {"-mesh_file",               Kind::File, 1, 1, kAny, "a readable Gmsh .msh file"},
-  {"-mesh_build",              Kind::Choice, 1, 1, kAny, "auto, serial, distributed (how a box mesh is built)"},
+  {"-mesh_build",              Kind::Choice, 1, 1, kAny, "auto, serial, distributed (how a box mesh or a refined -mesh_file is built)"},
+  {"-mesh_refine",             Kind::Int,  1, 1, closed(0, 6), "0 to 6 (uniform refinements of the -mesh_file mesh)"},
   {"-mesh_dim",                Kind::Int,  1, 1, closed(2, 3), "2 or 3"},
   {"-element_degree",          Kind::Int,  1, 1, closed(1, 8), "1 to 8 (spectral elements; p > 1 on quadrilaterals and hexahedra only)"},
   {"-mesh_box_faces",          Kind::Int,  2, 3, closed(1, 1e8), "nx,ny[,nz] cells, each 1 to 1e8", 1},

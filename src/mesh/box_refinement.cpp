@@ -4,6 +4,7 @@
 
 #include "slipwave/fem/gll_basis.hpp"
 #include "slipwave/mesh/labels.hpp"
+#include "slipwave/mesh/mesh_refinement.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
 #include "slipwave/mesh/spectral_layout.hpp"
 #include "slipwave/mesh/vertex_coordinates.hpp"
@@ -126,66 +127,25 @@ struct SpectralLattice {
   }
 };
 
-// Refinement gives a point's label value to all its children (a face's to the edges and
-// vertices inside it): keep the value on the points of one height only.
-PetscErrorCode keepHeight(DM dm, const char *name, PetscInt height) {
-  DMLabel         label;
-  IS              values;
-  const PetscInt *vals;
-  PetscInt        nvalues, p_start, p_end;
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLabel(dm, name, &label));
-  if (!label) PetscFunctionReturn(0);
-  PetscCall(DMPlexGetHeightStratum(dm, height, &p_start, &p_end));
-  PetscCall(DMLabelGetValueIS(label, &values));
-  PetscCall(ISGetLocalSize(values, &nvalues));
-  PetscCall(ISGetIndices(values, &vals));
-  for (PetscInt i = 0; i < nvalues; ++i) {
-    IS              stratum;
-    const PetscInt *points;
-    PetscInt        npoints;
-    std::vector<PetscInt> drop;
-    PetscCall(DMLabelGetStratumIS(label, vals[i], &stratum));
-    if (!stratum) continue;
-    PetscCall(ISGetLocalSize(stratum, &npoints));
-    PetscCall(ISGetIndices(stratum, &points));
-    for (PetscInt k = 0; k < npoints; ++k)
-      if (points[k] < p_start || points[k] >= p_end) drop.push_back(points[k]);
-    PetscCall(ISRestoreIndices(stratum, &points));
-    PetscCall(ISDestroy(&stratum));
-    for (PetscInt p : drop) PetscCall(DMLabelClearValue(label, p, vals[i]));
-  }
-  PetscCall(ISRestoreIndices(values, &vals));
-  PetscCall(ISDestroy(&values));
-  PetscFunctionReturn(0);
-}
-
 // interface_<name>_pair/_side on the fine mesh. The split vertices are the closure vertices of
 // the soil-side faces (interface_<name>) and their structure copies, which sit on the same
 // lattice point; the pair ids number these points in the serial build's vertex order (the
-// serial split numbers pairs by original vertex), SpectralLattice::vertexKey.
+// serial split numbers pairs by original vertex): the least SpectralLattice::vertexKey over the
+// cells of either copy, on any rank, is a point's place in that order and its pair key.
 PetscErrorCode labelPairs(DM dm, const SpectralLattice &s, const InterfaceSpec &spec, PetscInt structure_region) {
-  MPI_Comm              comm = PetscObjectComm((PetscObject)dm);
-  const std::string     base = "interface_" + spec.name;
-  const Lattice        &lattice = s.fine;
-  DMLabel               faces, region, pair, side;
-  PetscInt              f_start, f_end, v_start, v_end, c_start, c_end;
-  std::vector<int64_t>  mine;
-  VertexCoordinates     coords;
+  MPI_Comm             comm    = PetscObjectComm((PetscObject)dm);
+  const Lattice       &lattice = s.fine;
+  DMLabel              faces;
+  PetscInt             f_start, f_end, v_start, v_end, c_start, c_end;
+  std::vector<int64_t> mine;
+  VertexCoordinates    coords;
   PetscFunctionBeginUser;
-  PetscCall(DMRemoveLabel(dm, (base + "_pair").c_str(), nullptr));
-  PetscCall(DMRemoveLabel(dm, (base + "_side").c_str(), nullptr));
-  PetscCall(DMCreateLabel(dm, (base + "_pair").c_str()));
-  PetscCall(DMCreateLabel(dm, (base + "_side").c_str()));
-  PetscCall(DMGetLabel(dm, (base + "_pair").c_str(), &pair));
-  PetscCall(DMGetLabel(dm, (base + "_side").c_str(), &side));
-  PetscCall(DMGetLabel(dm, base.c_str(), &faces));
-  PetscCall(DMGetLabel(dm, kRegionLabel, &region));
+  PetscCall(DMGetLabel(dm, ("interface_" + spec.name).c_str(), &faces));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
   PetscCall(DMPlexGetHeightStratum(dm, 1, &f_start, &f_end));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &v_start, &v_end));
   PetscCall(coords.Open(dm));
-  for (PetscInt f = f_start; f < f_end; ++f) {
+  for (PetscInt f = f_start; f < f_end && faces; ++f) {
     PetscInt value, nclosure, *closure = nullptr;
     PetscCall(DMLabelGetValue(faces, f, &value));
     if (value < 0) continue;
@@ -201,7 +161,7 @@ PetscErrorCode labelPairs(DM dm, const SpectralLattice &s, const InterfaceSpec &
   }
   std::sort(mine.begin(), mine.end());
   mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
-  // The interface is a surface: every rank holding all of its points is cheap.
+  // The interface's lattice points on every rank (a surface: cheap), then each one's least key.
   PetscMPIInt size, nmine = (PetscMPIInt)mine.size();
   PetscCallMPI(MPI_Comm_size(comm, &size));
   std::vector<PetscMPIInt> counts(size), offsets(size + 1, 0);
@@ -211,64 +171,39 @@ PetscErrorCode labelPairs(DM dm, const SpectralLattice &s, const InterfaceSpec &
   PetscCallMPI(MPI_Allgatherv(mine.data(), nmine, MPI_INT64_T, all.data(), counts.data(), offsets.data(), MPI_INT64_T, comm));
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
-  // Vertices another rank owns (leaves of the point SF) are counted there.
-  PetscSF         point_sf;
-  PetscInt        nleaves;
-  const PetscInt *leaves;
-  std::vector<char> ghost(v_end - v_start, 0);
-  PetscCall(DMGetPointSF(dm, &point_sf));
-  PetscCall(PetscSFGetGraph(point_sf, nullptr, &nleaves, &leaves, nullptr));
-  for (PetscInt i = 0; i < nleaves && nleaves > 0; ++i) {
-    const PetscInt p = leaves ? leaves[i] : i;
-    if (p >= v_start && p < v_end) ghost[p - v_start] = 1;
-  }
-  // Each point's place in the serial vertex order: the least key its cells on any rank give.
-  struct Split {
-    PetscInt v, point, on_structure;
+  auto pointOf = [&](const PetscReal *x) -> PetscInt {
+    auto it = std::lower_bound(all.begin(), all.end(), lattice.index(x, 0, 1));
+    return it == all.end() || *it != lattice.index(x, 0, 1) ? -1 : (PetscInt)(it - all.begin());
   };
-  std::vector<Split>   found;
   std::vector<int64_t> order(all.size(), INT64_MAX);
-  // Only structure cells hold a structure copy; the soil copy is shared with no structure cell.
   for (PetscInt v = v_start; v < v_end; ++v) {
     PetscReal x[3];
     PetscCall(coords.Get(v, x));
-    auto it = std::lower_bound(all.begin(), all.end(), lattice.index(x, 0, 1));
-    if (it == all.end() || *it != lattice.index(x, 0, 1)) continue;
-    const PetscInt point = (PetscInt)(it - all.begin());
-    PetscInt       nstar, *star = nullptr, on_structure = 0;
+    const PetscInt point = pointOf(x);
+    if (point < 0) continue;
+    PetscInt nstar, *star = nullptr;
     PetscCall(DMPlexGetTransitiveClosure(dm, v, PETSC_FALSE, &nstar, &star));
     for (PetscInt i = 0; i < nstar; ++i) {
       const PetscInt q = star[2 * i];
-      PetscInt       r;
-      PetscCall(DMLabelGetValue(region, q, &r));
-      on_structure = on_structure || r == structure_region;
       if (q < c_start || q >= c_end) continue;
       PetscReal xc[3];
       PetscCall(MeshPointCentroid(dm, q, xc));
       order[point] = std::min(order[point], s.vertexKey(x, xc));
     }
     PetscCall(DMPlexRestoreTransitiveClosure(dm, v, PETSC_FALSE, &nstar, &star));
-    found.push_back({v, point, on_structure});
   }
-  PetscCall(coords.Close());
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, order.data(), (PetscMPIInt)order.size(), MPI_INT64_T, MPI_MIN, comm));
-  std::vector<PetscInt> by_order(all.size()), id(all.size());
-  for (size_t i = 0; i < all.size(); ++i) by_order[i] = (PetscInt)i;
-  std::sort(by_order.begin(), by_order.end(), [&](PetscInt a, PetscInt b) { return order[a] < order[b]; });
-  for (size_t k = 0; k < by_order.size(); ++k) id[by_order[k]] = (PetscInt)k;
-  PetscInt owned[2] = {0, 0};
-  for (const Split &f : found) {
-    PetscCall(DMLabelSetValue(pair, f.v, id[f.point]));
-    PetscCall(DMLabelSetValue(side, f.v, f.on_structure));
-    if (!ghost[f.v - v_start]) ++owned[f.on_structure];
-  }
-  // Each lattice point of the interface must hold exactly one soil and one structure vertex; a
-  // guard on the interface itself (vertices doubled away from it, which BoxInterfacesRefinable
-  // rules out, would not show here).
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, owned, 2, MPIU_INT, MPI_SUM, comm));
-  PetscCheck(owned[0] == (PetscInt)all.size() && owned[1] == (PetscInt)all.size(), comm, PETSC_ERR_PLIB,
-             "interface '%s' refined: %" PetscInt_FMT " soil and %" PetscInt_FMT " structure vertices for %zu pairs; build with -mesh_build serial", spec.name.c_str(),
-             owned[0], owned[1], all.size());
+  PetscCall(LabelRefinedPairs(dm, spec, structure_region, [&](PetscInt v, PairKey *key, bool *known) -> PetscErrorCode {
+    PetscReal x[3];
+    PetscFunctionBeginUser;
+    PetscCall(coords.Get(v, x));
+    const PetscInt point = pointOf(x);
+    *known               = point >= 0;
+    key->fill(0);
+    if (*known) (*key)[0] = order[point];
+    PetscFunctionReturn(0);
+  }));
+  PetscCall(coords.Close());
   PetscFunctionReturn(0);
 }
 
@@ -428,47 +363,6 @@ PetscInt BoxSpectralRefinements(PetscInt degree) {
   return ((PetscInt)1 << k) == degree && degree <= fem::kMaxSpectralDegree ? k : -1;
 }
 
-PetscErrorCode BoxInterfacesRefinable(DM coarse, const std::vector<std::string> &regions, const std::vector<InterfaceSpec> &specs, PetscBool *refinable) {
-  MPI_Comm comm = PetscObjectComm((PetscObject)coarse);
-  PetscInt dim, e_start, e_end, ok = 1;
-  DMLabel  region;
-  PetscFunctionBeginUser;
-  PetscCall(DMGetDimension(coarse, &dim));
-  PetscCall(DMGetLabel(coarse, kRegionLabel, &region));
-  PetscCall(DMPlexGetDepthStratum(coarse, 1, &e_start, &e_end));
-  auto index = [&](const std::string &name) { return (PetscInt)(std::find(regions.begin(), regions.end(), name) - regions.begin()); };
-  for (const InterfaceSpec &spec : specs) {
-    ok = ok && spec.face_label.empty();
-    const PetscInt soil = index(spec.soil_region), structure = index(spec.structure_region);
-    // In 2D the edges are the faces: only 3D has edges that can join the regions alone.
-    for (PetscInt e = e_start; e < e_end && ok && dim == 3; ++e) {
-      PetscInt nstar, *star = nullptr;
-      bool     on_soil = false, on_structure = false, on_interface = false;
-      PetscCall(DMPlexGetTransitiveClosure(coarse, e, PETSC_FALSE, &nstar, &star));
-      for (PetscInt i = 0; i < nstar; ++i) {
-        const PetscInt p = star[2 * i];
-        PetscInt       r, nsupp;
-        PetscCall(DMLabelGetValue(region, p, &r));
-        on_soil      = on_soil || r == soil;
-        on_structure = on_structure || r == structure;
-        PetscCall(DMPlexGetSupportSize(coarse, p, &nsupp));
-        if (p == e || nsupp != 2) continue;
-        const PetscInt *supp;
-        PetscInt        r0, r1;
-        PetscCall(DMPlexGetSupport(coarse, p, &supp));
-        PetscCall(DMLabelGetValue(region, supp[0], &r0));
-        PetscCall(DMLabelGetValue(region, supp[1], &r1));
-        on_interface = on_interface || (r0 == soil && r1 == structure) || (r0 == structure && r1 == soil);
-      }
-      PetscCall(DMPlexRestoreTransitiveClosure(coarse, e, PETSC_FALSE, &nstar, &star));
-      ok = !(on_soil && on_structure) || on_interface;
-    }
-  }
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPIU_INT, 0, comm));
-  *refinable = ok ? PETSC_TRUE : PETSC_FALSE;
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode BoxRefineDistributed(DM *dm, PetscInt levels, PetscInt degree, const BoxSpec &box, const std::vector<std::string> &regions,
                                     const std::vector<std::string> &boundaries, const std::vector<InterfaceSpec> &specs, std::vector<PetscInt> *serial_cell) {
   PetscInt dim;
@@ -476,16 +370,9 @@ PetscErrorCode BoxRefineDistributed(DM *dm, PetscInt levels, PetscInt degree, co
   PetscCall(DMGetDimension(*dm, &dim));
   SpectralLattice s{Lattice(dim, box, degree), degree, ElementFrame()};
   if (degree > 1) PetscCall(boxElementFrame(*dm, &s.frame));
-  for (PetscInt k = 0; k < levels; ++k) {
-    DM fine;
-    PetscCall(DMRefine(*dm, PetscObjectComm((PetscObject)*dm), &fine));
-    PetscCall(DMDestroy(dm));
-    *dm = fine;
-  }
-  PetscCall(keepHeight(*dm, kRegionLabel, 0));
-  for (const std::string &b : boundaries) PetscCall(keepHeight(*dm, b.c_str(), 1));
+  PetscCall(RefineRegularly(dm, levels));
+  PetscCall(KeepRefinedLabels(*dm, boundaries, specs));
   for (const InterfaceSpec &spec : specs) {
-    PetscCall(keepHeight(*dm, ("interface_" + spec.name).c_str(), 1));
     const PetscInt structure = (PetscInt)(std::find(regions.begin(), regions.end(), spec.structure_region) - regions.begin());
     PetscCall(labelPairs(*dm, s, spec, structure));
   }

@@ -51,7 +51,11 @@ bool gmshCounts(const std::string &path, PetscInt *dim, double *nodes) {
 
 } // namespace
 
-PetscErrorCode MemoryCheckGmshFile(MPI_Comm comm, const char *file) {
+std::string MeshFileDescription(const char *file, PetscInt refine) {
+  return "-mesh_file = " + std::string(file) + (refine > 0 ? " refined " + std::to_string(refine) + " times" : "");
+}
+
+PetscErrorCode MemoryCheckGmshFile(MPI_Comm comm, const char *file, PetscInt refine, bool whole_on_rank0) {
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
@@ -62,7 +66,8 @@ PetscErrorCode MemoryCheckGmshFile(MPI_Comm comm, const char *file) {
     if (gmshCounts(file, &dim, &nodes)) counts[0] = (double)dim, counts[1] = nodes;
   }
   PetscCallMPI(MPI_Bcast(counts, 2, MPI_DOUBLE, 0, comm));
-  if (counts[1] > 0) PetscCall(MemoryCheck(comm, counts[1], (PetscInt)counts[0], ("-mesh_file = " + std::string(file)).c_str()));
+  const PetscInt dim = (PetscInt)counts[0];
+  if (counts[1] > 0) PetscCall(MemoryCheck(comm, counts[1] * RefinedPointFactor(dim, refine), dim, MeshFileDescription(file, refine).c_str(), whole_on_rank0));
   PetscFunctionReturn(0);
 }
 

@@ -5,6 +5,7 @@
 #include "slipwave/core/option_rules.hpp"
 #include "slipwave/mesh/box_refinement.hpp"
 #include "slipwave/mesh/memory_estimate.hpp"
+#include "slipwave/mesh/mesh_refinement.hpp"
 #include "slipwave/mesh/mesh_options.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
 #include "slipwave/mesh/partition_metis.hpp"
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <numeric>
 #include <sstream>
 
 namespace slipwave::mesh {
@@ -155,8 +157,10 @@ PetscErrorCode createBox(MPI_Comm comm, PetscInt dim, PetscInt degree, bool whol
 }
 
 // Gmsh: with -dm_plex_gmsh_use_regions PETSc makes one label per physical name. Cell labels
-// become regions; face labels become boundaries.
-PetscErrorCode createFromGmsh(MPI_Comm comm, const char *file, DM *dm, const std::vector<std::string> &regions, std::vector<std::string> *boundaries) {
+// become regions; face labels become boundaries. refine, whole_on_rank0: for the memory check
+// from the file's header (MemoryCheckGmshFile).
+PetscErrorCode createFromGmsh(MPI_Comm comm, const char *file, DM *dm, const std::vector<std::string> &regions, std::vector<std::string> *boundaries, PetscInt refine,
+                              bool whole_on_rank0) {
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
@@ -168,7 +172,7 @@ PetscErrorCode createFromGmsh(MPI_Comm comm, const char *file, DM *dm, const std
   }
   PetscCallMPI(MPI_Bcast(&readable, 1, MPI_INT, 0, comm));
   PetscCheck(readable, comm, PETSC_ERR_FILE_OPEN, "-mesh_file = %s: cannot open the file; allowed: a readable Gmsh .msh file (format 2.2 or 4.1)", file);
-  PetscCall(MemoryCheckGmshFile(comm, file));
+  PetscCall(MemoryCheckGmshFile(comm, file, refine, whole_on_rank0));
   PetscBool has;
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-dm_plex_gmsh_use_regions", &has));
   if (!has) PetscCall(PetscOptionsSetValue(nullptr, "-dm_plex_gmsh_use_regions", "true"));
@@ -334,7 +338,7 @@ PetscErrorCode createBoxForBuild(MPI_Comm comm, MeshOptions *o, DM *serial, Mesh
   if (refined) *levels += spectral;
   if (!refined || o->interfaces.empty()) PetscFunctionReturn(0);
   PetscBool refinable;
-  PetscCall(BoxInterfacesRefinable(*serial, desc->regions, o->interfaces, &refinable));
+  PetscCall(InterfacesRefinable(*serial, desc->regions, o->interfaces, &refinable));
   PetscCheck(refinable || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
              "-mesh_build = distributed, but an interface is restricted to a face label or its regions meet along an edge outside it; allowed: auto or serial");
   if (refinable) PetscFunctionReturn(0);
@@ -402,8 +406,9 @@ PetscErrorCode checkSpectralCells(MPI_Comm comm, DM serial, PetscInt degree) {
 
 // The reader holds the whole mesh on rank 0; what follows (subdivision, split, distribution,
 // operators) needs the estimate's memory. Degree p: the GLL nodes, (p-1)^d inside each point
-// of depth d (V + (p-1) E + (p-1)^2 F + (p-1)^3 C; the file's vertices at p = 1).
-PetscErrorCode checkMemoryOfFile(MPI_Comm comm, DM serial, PetscInt dim, PetscInt degree, const std::string &file) {
+// of depth d (V + (p-1) E + (p-1)^2 F + (p-1)^3 C; the file's vertices at p = 1), of the mesh
+// refined `refine` times (RefinedPointFactor); whole_on_rank0 false: refined distributed.
+PetscErrorCode checkMemoryOfFile(MPI_Comm comm, DM serial, PetscInt dim, PetscInt degree, const std::string &file, PetscInt refine, bool whole_on_rank0) {
   double nodes = 0, inside = 1; // inside: GLL nodes inside one point of the depth
   PetscFunctionBeginUser;
   for (PetscInt depth = 0; depth <= dim; ++depth, inside *= (double)(degree - 1)) {
@@ -412,8 +417,60 @@ PetscErrorCode checkMemoryOfFile(MPI_Comm comm, DM serial, PetscInt dim, PetscIn
     nodes += inside * (double)(end - start);
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &nodes, 1, MPI_DOUBLE, MPI_SUM, comm));
-  const std::string what = "-mesh_file = " + file + (degree > 1 ? " at -element_degree " + std::to_string(degree) : "");
-  PetscCall(MemoryCheck(comm, nodes, dim, what.c_str()));
+  const std::string what = MeshFileDescription(file.c_str(), refine) + (degree > 1 ? " at -element_degree " + std::to_string(degree) : "");
+  PetscCall(MemoryCheck(comm, nodes * RefinedPointFactor(dim, refine), dim, what.c_str(), whole_on_rank0));
+  PetscFunctionReturn(0);
+}
+
+// A Gmsh file (with -mesh_refine k, mesh_refinement.hpp): at -element_degree 1 and unless
+// -mesh_build serial, rank 0 reads, labels and (later) splits the coarse file and the
+// distributed mesh is refined k times (*levels = k), where the coarse split refines into the
+// fine one and every rank gets a coarse cell; otherwise rank 0 refines (refineOnRank0).
+PetscErrorCode createGmshForBuild(MPI_Comm comm, const MeshOptions &o, DM *serial, MeshDescription *desc, PetscInt *levels) {
+  PetscMPIInt size;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCheck(o.degree == 1 || o.refine == 0 || o.build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
+             "-mesh_build = distributed with -mesh_refine = %" PetscInt_FMT " and -element_degree = %" PetscInt_FMT
+             "; allowed: auto or serial (spectral elements are refined and subdivided on the serial mesh)",
+             o.refine, o.degree);
+  bool distributed = o.refine > 0 && o.degree == 1 && o.build != kMeshBuildSerial;
+  PetscCall(createFromGmsh(comm, o.file.c_str(), serial, desc->regions, &desc->boundaries, o.refine, !distributed));
+  PetscCall(DMGetDimension(*serial, &desc->dim));
+  PetscCall(core::OptionsValidateForDimension(comm, desc->dim, false));
+  if (distributed) {
+    PetscInt  c_start, c_end, cells;
+    PetscBool refinable = PETSC_TRUE;
+    PetscCall(DMPlexGetHeightStratum(*serial, 0, &c_start, &c_end));
+    cells = c_end - c_start;
+    PetscCallMPI(MPI_Bcast(&cells, 1, MPIU_INT, 0, comm));
+    if (!o.interfaces.empty()) PetscCall(InterfacesRefinable(*serial, desc->regions, o.interfaces, &refinable));
+    PetscCheck((refinable && cells >= size) || o.build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
+               "-mesh_build = distributed with -mesh_file = %s, but %s; allowed: auto or serial", o.file.c_str(),
+               refinable ? "the file has fewer cells than there are ranks" : "an interface is restricted to a face label or its regions meet along an edge outside it");
+    distributed = refinable && cells >= size;
+  }
+  PetscCall(checkMemoryOfFile(comm, *serial, desc->dim, o.degree, o.file, o.refine, !distributed));
+  *levels      = distributed ? o.refine : 0;
+  desc->source = o.file;
+  if (o.refine > 0) desc->source += (distributed ? ", built distributed: refined " : ", refined ") + std::to_string(o.refine) + (distributed ? " times" : " times on rank 0");
+  PetscFunctionReturn(0);
+}
+
+// -mesh_refine on the serial mesh. MeshRefineUniformly's numbering of the fine cells is PETSc's
+// own order of the refined serial mesh (one cell type per mesh), so the cells keep their
+// numbers as serial numbers (recordSerialCells, spectral sub-cells); checked.
+PetscErrorCode refineOnRank0(DM *serial, PetscInt levels, const MeshDescription &desc, const std::vector<InterfaceSpec> &specs) {
+  PetscInt c_start, c_end;
+  PetscFunctionBeginUser;
+  if (levels == 0) PetscFunctionReturn(0);
+  PetscCall(DMPlexGetHeightStratum(*serial, 0, &c_start, &c_end));
+  std::vector<PetscInt> numbers(c_end - c_start);
+  std::iota(numbers.begin(), numbers.end(), c_start);
+  PetscCall(MeshRefineUniformly(serial, levels, desc.regions, desc.boundaries, specs, &numbers));
+  PetscCall(DMPlexGetHeightStratum(*serial, 0, &c_start, &c_end));
+  for (PetscInt c = c_start; c < c_end; ++c)
+    PetscCheck(numbers[c - c_start] == c, PETSC_COMM_SELF, PETSC_ERR_PLIB, "refined cell %" PetscInt_FMT " numbered %" PetscInt_FMT " by its coarse cell", c, numbers[c - c_start]);
   PetscFunctionReturn(0);
 }
 
@@ -429,13 +486,9 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   PetscCall(PetscTime(&start));
 
   DM       serial;
-  PetscInt levels = 0; // refinements of a box built distributed (box_refinement.hpp)
+  PetscInt levels = 0; // refinements on the distributed mesh (box_refinement.hpp, mesh_refinement.hpp)
   if (!o.file.empty()) {
-    PetscCall(createFromGmsh(comm, o.file.c_str(), &serial, desc->regions, &desc->boundaries));
-    PetscCall(DMGetDimension(serial, &desc->dim));
-    PetscCall(core::OptionsValidateForDimension(comm, desc->dim, false));
-    PetscCall(checkMemoryOfFile(comm, serial, desc->dim, o.degree, o.file));
-    desc->source = o.file;
+    PetscCall(createGmshForBuild(comm, o, &serial, desc, &levels));
   } else {
     PetscCall(core::OptionsValidateForDimension(comm, desc->dim, true));
     PetscCall(createBoxForBuild(comm, &o, &serial, desc, &levels));
@@ -443,8 +496,10 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   PetscCall(checkCellTypes(comm, serial));
   desc->degree = o.degree;
   DM parent    = nullptr; // spectral elements: the mesh of whole elements, partitioned for the sub-cells
+  const PetscInt serial_levels = o.file.empty() ? 0 : o.refine - levels; // -mesh_refine on rank 0
   if (o.degree > 1) {
     PetscCall(checkSpectralCells(comm, serial, o.degree));
+    PetscCall(refineOnRank0(&serial, serial_levels, *desc, {}));
     // The elements' shape, not their GLL sub-cells' (whose aspect comes from the GLL spacing);
     // a box built distributed has its coarse cells here, its elements scaled by 2^k on every
     // axis: the same aspect and Jacobian ratio.
@@ -460,6 +515,7 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
     PetscCall(DMDestroy(&serial));
     serial = split;
   }
+  if (o.degree == 1) PetscCall(refineOnRank0(&serial, serial_levels, *desc, desc->interfaces));
 
   PetscPartitioner part;
   DM               dist = nullptr;
@@ -486,12 +542,15 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   } else {
     *dm = serial;
   }
-  if (levels == 0) PetscCall(recordSerialCells(*dm, migration, &desc->serial_cell));
+  const bool box_refined = levels > 0 && o.file.empty(); // BoxRefineDistributed numbers the cells itself
+  if (!box_refined) PetscCall(recordSerialCells(*dm, migration, &desc->serial_cell));
   PetscCall(PetscSFDestroy(&migration));
-  if (levels > 0) {
+  if (box_refined) {
     PetscCall(BoxRefineDistributed(dm, levels, o.degree, o.box, desc->regions, desc->boundaries, desc->interfaces, &desc->serial_cell));
     desc->source += ", built distributed: refined " + std::to_string(levels) + " times";
     if (o.degree > 1) desc->source += " (" + std::to_string(BoxSpectralRefinements(o.degree)) + " into the GLL sub-cells)";
+  } else if (levels > 0) {
+    PetscCall(MeshRefineUniformly(dm, levels, desc->regions, desc->boundaries, desc->interfaces, &desc->serial_cell));
   }
   PetscLogDouble end;
   PetscCall(PetscTime(&end));

@@ -142,11 +142,21 @@ PetscErrorCode MeshOptionsRead(MPI_Comm comm, PetscInt *dim, MeshOptions *o) {
   from_file = (PetscBool)(from_file && file[0]);
   PetscBool build_set = PETSC_FALSE;
   PetscCall(PetscOptionsEList("-mesh_build",
-                              "how a box mesh is built: auto (distributed where the box allows it and has >= 1000 coarse cells per rank, or at -element_degree 2, 4, 8), "
-                              "serial (whole mesh on rank 0, then distributed), distributed (a coarse box refined on the distributed mesh)",
+                              "how a box mesh or a refined -mesh_file is built: auto (a box: distributed where it allows it and has >= 1000 coarse cells per rank, "
+                              "or at -element_degree 2, 4, 8; a file with -mesh_refine > 0: distributed where its interfaces allow it), serial (whole mesh on rank 0, "
+                              "then distributed), distributed (a coarse mesh refined on the distributed mesh)",
                               "MeshCreate", kMeshBuildNames, 3, kMeshBuildNames[o->build], &o->build, &build_set));
-  PetscCheck(!(build_set && from_file && o->build == kMeshBuildDistributed), comm, PETSC_ERR_USER_INPUT,
-             "-mesh_build = distributed with -mesh_file = %s; allowed: auto or serial (a Gmsh file is read, not built by refinement)", file);
+  PetscBool refine_set = PETSC_FALSE;
+  PetscCall(PetscOptionsRangeInt("-mesh_refine",
+                                 "refine the -mesh_file mesh k times uniformly, 0 to 6: each time every edge is halved (straight-sided, 2^dim children per cell); "
+                                 "at -element_degree 1 on the distributed mesh unless -mesh_build serial",
+                                 "MeshCreate", o->refine, &o->refine, &refine_set, 0, kMaxMeshRefine));
+  PetscCheck(!(refine_set && !from_file && o->refine > 0), comm, PETSC_ERR_USER_INPUT,
+             "-mesh_refine = %" PetscInt_FMT " with a box mesh; allowed: 0 with a box mesh (set -mesh_box_faces)", o->refine);
+  PetscCheck(!(build_set && from_file && o->build == kMeshBuildDistributed && o->refine == 0), comm, PETSC_ERR_USER_INPUT,
+             "-mesh_build = distributed with -mesh_file = %s and -mesh_refine 0; allowed: auto or serial, or -mesh_refine > 0 (a Gmsh file is read whole, then refined "
+             "on the distributed mesh)",
+             file);
   PetscCall(PetscOptionsRangeInt("-element_degree",
                                  "degree p of the spectral elements (GLL nodes), 1 to 8; p > 1 needs quadrilaterals or hexahedra (triangles and tetrahedra are linear only)",
                                  "MeshCreate", o->degree, &o->degree, nullptr, 1, fem::kMaxSpectralDegree));

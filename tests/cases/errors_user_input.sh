@@ -61,6 +61,11 @@ gmsh_two_quads() { # $1 x of nodes 3 and 6, $2 the second element's node list
 gmsh_two_quads 2 "2 3 5 6" > "$tmp/bowtie.msh"
 gmsh_two_quads 1 "2 3 6 5" > "$tmp/zero_area.msh"
 gmsh_two_quads 101 "2 3 6 5" > "$tmp/slender.msh"
+# Two quadrilaterals side by side, "soil" (x 0..1) and "block" (x 1..2), their common edge
+# (nodes 2, 5) the line group "base".
+printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n1 3 "base"\n2 1 "soil"\n2 2 "block"\n$EndPhysicalNames\n' > "$tmp/two_regions.msh"
+printf '$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 2 0 0\n4 0 1 0\n5 1 1 0\n6 2 1 0\n$EndNodes\n' >> "$tmp/two_regions.msh"
+printf '$Elements\n3\n1 1 2 3 1 2 5\n2 3 2 1 1 1 2 5 4\n3 3 2 2 2 2 3 6 5\n$EndElements\n' >> "$tmp/two_regions.msh"
 printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n2000000000\n1 0 0 0\n' > "$tmp/huge_22.msh"
 printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 1\n$EndEntities\n$Nodes\n1 1000000000 1 1000000000\n' > "$tmp/huge_41.msh"
 # One hexahedron, the unit cube, in the physical group "soil", with node 7 (1,1,1) moved to

@@ -9,10 +9,9 @@
 //
 // When is this exact? Refinement keeps a coarse cell's region for its children, so every
 // region and void box bound inside the mesh must lie on a coarse grid line
-// (BoxRefinementLevels). Splitting the coarse mesh duplicates the children of every coarse
-// point whose vertices are all split; the fine split duplicates only the vertices of interface
-// faces. The two agree unless (3D) a soil and a structure cell share an edge that lies on no
-// interface face, or the interface is restricted to a face label (BoxInterfacesRefinable).
+// (BoxRefinementLevels), and the coarse split must refine into the fine one
+// (InterfacesRefinable, mesh_refinement.hpp, which also holds the refinement and the label
+// repair the box shares with refined Gmsh meshes).
 //
 // Spectral elements of degree p = 2, 4, 8 (-element_degree): log2(p) more refinements make
 // each element's p^dim GLL sub-cells (2^levels coarse cells per element and axis before),
@@ -46,10 +45,6 @@ inline constexpr double kCoarseCellsPerRank = 1000;
 // lies on a line of the coarse grid (to 1e-9 of the cell size), and the coarse box holds at
 // least kCoarseCellsPerRank cells per rank (auto) or one cell per rank (distributed). Pure.
 PetscInt BoxRefinementLevels(PetscInt dim, const BoxSpec &box, const std::vector<std::vector<PetscReal>> &region_boxes, PetscMPIInt nranks, PetscInt build);
-
-// On the coarse, unsplit, serial box (regions labelled): whether splitting it before
-// refinement gives the fine split (see the header comment). Collective; rank 0 decides.
-PetscErrorCode BoxInterfacesRefinable(DM coarse, const std::vector<std::string> &regions, const std::vector<InterfaceSpec> &specs, PetscBool *refinable);
 
 // Degree p of spectral elements built by refinement: log2(p) refinements into the GLL
 // sub-cells for p = 2, 4, 8 (0 at p = 1); -1 for a degree that cannot be.

@@ -7,6 +7,8 @@
 #pragma once
 #include <petscsys.h>
 
+#include <string>
+
 namespace slipwave::mesh {
 
 // Measured resident memory per degree of freedom after setup (dry runs of boxes, 2D
@@ -15,12 +17,21 @@ namespace slipwave::mesh {
 constexpr double kBytesPerDof = 1024;
 
 // nodes x dim degrees of freedom; what: the option and value the mesh comes from, for the
-// message; whole_on_rank0 false: a box built distributed (box_refinement.hpp), where rank 0's
+// message; whole_on_rank0 false: a mesh refined on the distributed mesh (box_refinement.hpp,
+// mesh_refinement.hpp), where rank 0's
 // node needs its ranks' share only, as every other node.
 PetscErrorCode MemoryCheck(MPI_Comm comm, double nodes, PetscInt dim, const char *what, bool whole_on_rank0 = true);
 
 // The same for a Gmsh file, from the node count in its header, before the file is loaded
-// (ASCII files; a binary one is checked by the caller once loaded).
-PetscErrorCode MemoryCheckGmshFile(MPI_Comm comm, const char *file);
+// (ASCII files; a binary one is checked by the caller once loaded), refined `refine` times
+// (-mesh_refine; whole_on_rank0 false: refined on the distributed mesh).
+PetscErrorCode MemoryCheckGmshFile(MPI_Comm comm, const char *file, PetscInt refine = 0, bool whole_on_rank0 = true);
+
+// Uniform refinement (mesh_refinement.hpp) multiplies the points of every depth by about
+// 2^dim per level; those on the boundary by less, so this is an upper estimate.
+inline double RefinedPointFactor(PetscInt dim, PetscInt levels) { return (double)((PetscInt64)1 << (dim * levels)); }
+
+// "-mesh_file = <file>[ refined k times]", for the messages.
+std::string MeshFileDescription(const char *file, PetscInt refine);
 
 } // namespace slipwave::mesh

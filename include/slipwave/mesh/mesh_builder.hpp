@@ -11,6 +11,10 @@
 // serial_cell numbers the sub-cells (element e's sub-cells are e p^dim .. e p^dim + p^dim - 1);
 // boxes at p = 2, 4, 8 get the same sub-cells by refinement on the distributed mesh
 // (box_refinement.hpp).
+// -mesh_refine k refines a Gmsh file's mesh k times (mesh_refinement.hpp): on the distributed
+// mesh at degree 1 unless -mesh_build serial (or its interfaces do not allow it), else on
+// rank 0 after the split (degree 1) or before the subdivision (degree > 1). Either way the
+// result is the same mesh up to point numbers, pair ids and serial_cell included.
 // The vertical axis is the last coordinate (y in 2D, z in 3D).
 #pragma once
 #include <petscdmplex.h>
@@ -32,7 +36,9 @@ struct MeshDescription {
   std::string              partitioner; // the PetscPartitioner type that distributed the mesh
   std::vector<InterfaceSpec> interfaces; // split along these before distribution
   // Per local cell: its number in the serial mesh (the file's order of cells, or the box's),
-  // so messages name a cell the same way on any number of ranks.
+  // so messages name a cell the same way on any number of ranks. With -mesh_refine k: the
+  // children of file cell s are s 2^dim + r (r = 0 .. 2^dim - 1, PETSc's regular refinement's
+  // order), level by level: cell s's descendants are s 2^(dim k) .. (s + 1) 2^(dim k) - 1.
   std::vector<PetscInt> serial_cell;
   double                build_seconds = 0; // wall time of MeshCreate, for the report
 };
