@@ -135,30 +135,20 @@ struct SpectralLattice {
 PetscErrorCode labelPairs(DM dm, const SpectralLattice &s, const InterfaceSpec &spec, PetscInt structure_region) {
   MPI_Comm             comm    = PetscObjectComm((PetscObject)dm);
   const Lattice       &lattice = s.fine;
-  DMLabel              faces;
-  PetscInt             f_start, f_end, v_start, v_end, c_start, c_end;
+  PetscInt             v_start, v_end, c_start, c_end;
   std::vector<int64_t> mine;
   VertexCoordinates    coords;
   PetscFunctionBeginUser;
-  PetscCall(DMGetLabel(dm, ("interface_" + spec.name).c_str(), &faces));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
-  PetscCall(DMPlexGetHeightStratum(dm, 1, &f_start, &f_end));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &v_start, &v_end));
   PetscCall(coords.Open(dm));
-  for (PetscInt f = f_start; f < f_end && faces; ++f) {
-    PetscInt value, nclosure, *closure = nullptr;
-    PetscCall(DMLabelGetValue(faces, f, &value));
-    if (value < 0) continue;
-    PetscCall(DMPlexGetTransitiveClosure(dm, f, PETSC_TRUE, &nclosure, &closure));
-    for (PetscInt i = 0; i < nclosure; ++i) {
-      const PetscInt v = closure[2 * i];
-      if (v < v_start || v >= v_end) continue;
-      PetscReal x[3];
-      PetscCall(coords.Get(v, x));
-      mine.push_back(lattice.index(x, 0, 1));
-    }
-    PetscCall(DMPlexRestoreTransitiveClosure(dm, f, PETSC_TRUE, &nclosure, &closure));
-  }
+  PetscCall(ForEachInterfaceFaceVertex(dm, spec, [&](PetscInt v) -> PetscErrorCode {
+    PetscReal x[3];
+    PetscFunctionBeginUser;
+    PetscCall(coords.Get(v, x));
+    mine.push_back(lattice.index(x, 0, 1));
+    PetscFunctionReturn(0);
+  }));
   std::sort(mine.begin(), mine.end());
   mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
   // The interface's lattice points on every rank (a surface: cheap), then each one's least key.

@@ -235,10 +235,29 @@ PetscErrorCode KeepRefinedLabels(DM dm, const std::vector<std::string> &boundari
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode ForEachInterfaceFaceVertex(DM dm, const InterfaceSpec &spec, const std::function<PetscErrorCode(PetscInt vertex)> &visit) {
+  DMLabel  faces;
+  PetscInt f_start, f_end, v_start, v_end;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLabel(dm, interfaceLabel(spec).c_str(), &faces));
+  PetscCall(DMPlexGetHeightStratum(dm, 1, &f_start, &f_end));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &v_start, &v_end));
+  for (PetscInt f = f_start; f < f_end && faces; ++f) {
+    PetscInt value, nclosure, *closure = nullptr;
+    PetscCall(DMLabelGetValue(faces, f, &value));
+    if (value < 0) continue;
+    PetscCall(DMPlexGetTransitiveClosure(dm, f, PETSC_TRUE, &nclosure, &closure));
+    for (PetscInt i = 0; i < nclosure; ++i)
+      if (closure[2 * i] >= v_start && closure[2 * i] < v_end) PetscCall(visit(closure[2 * i]));
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, f, PETSC_TRUE, &nclosure, &closure));
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode LabelRefinedPairs(DM dm, const InterfaceSpec &spec, PetscInt structure_region, const PairKeyOf &key_of) {
   MPI_Comm             comm = PetscObjectComm((PetscObject)dm);
-  DMLabel              faces, region, pair, side;
-  PetscInt             f_start, f_end, v_start, v_end;
+  DMLabel              region, pair, side;
+  PetscInt             v_start, v_end;
   std::vector<PairKey> mine;
   PetscFunctionBeginUser;
   PetscCall(DMRemoveLabel(dm, interfaceLabel(spec, "_pair").c_str(), nullptr));
@@ -247,24 +266,15 @@ PetscErrorCode LabelRefinedPairs(DM dm, const InterfaceSpec &spec, PetscInt stru
   PetscCall(DMCreateLabel(dm, interfaceLabel(spec, "_side").c_str()));
   PetscCall(DMGetLabel(dm, interfaceLabel(spec, "_pair").c_str(), &pair));
   PetscCall(DMGetLabel(dm, interfaceLabel(spec, "_side").c_str(), &side));
-  PetscCall(DMGetLabel(dm, interfaceLabel(spec).c_str(), &faces));
   PetscCall(DMGetLabel(dm, kRegionLabel, &region));
-  PetscCall(DMPlexGetHeightStratum(dm, 1, &f_start, &f_end));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &v_start, &v_end));
-  for (PetscInt f = f_start; f < f_end && faces; ++f) {
-    PetscInt value, nclosure, *closure = nullptr;
-    PetscCall(DMLabelGetValue(faces, f, &value));
-    if (value < 0) continue;
-    PetscCall(DMPlexGetTransitiveClosure(dm, f, PETSC_TRUE, &nclosure, &closure));
-    for (PetscInt i = 0; i < nclosure; ++i) {
-      const PetscInt v = closure[2 * i];
-      if (v < v_start || v >= v_end) continue;
-      bool known;
-      PetscCall(key_of(v, &mine.emplace_back(), &known));
-      PetscCheck(known, PETSC_COMM_SELF, PETSC_ERR_PLIB, "interface '%s' refined: vertex %" PetscInt_FMT " of one of its faces has no pair key", spec.name.c_str(), v);
-    }
-    PetscCall(DMPlexRestoreTransitiveClosure(dm, f, PETSC_TRUE, &nclosure, &closure));
-  }
+  PetscCall(ForEachInterfaceFaceVertex(dm, spec, [&](PetscInt v) -> PetscErrorCode {
+    bool known;
+    PetscFunctionBeginUser;
+    PetscCall(key_of(v, &mine.emplace_back(), &known));
+    PetscCheck(known, PETSC_COMM_SELF, PETSC_ERR_PLIB, "interface '%s' refined: vertex %" PetscInt_FMT " of one of its faces has no pair key", spec.name.c_str(), v);
+    PetscFunctionReturn(0);
+  }));
   std::sort(mine.begin(), mine.end());
   mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
   // The interface is a surface: every rank holding all of its keys is cheap.

@@ -46,6 +46,10 @@ using PairKey = std::array<int64_t, 8>;
 // Sets *known false for a vertex that is on no interface of the kind asked for.
 using PairKeyOf = std::function<PetscErrorCode(PetscInt vertex, PairKey *key, bool *known)>;
 
+// Calls `visit` for each vertex in the closure of a face of interface_<name> (the soil-side
+// faces), once per face that holds it. Not collective.
+PetscErrorCode ForEachInterfaceFaceVertex(DM dm, const InterfaceSpec &spec, const std::function<PetscErrorCode(PetscInt vertex)> &visit);
+
 // Puts interface_<name>_pair/_side back on the refined mesh (interface_<name> already on its
 // faces only): the split vertices are the closure vertices of the soil-side faces and their
 // structure copies, which share a key; a pair's id is the rank of its key among all of the
