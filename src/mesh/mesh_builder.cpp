@@ -469,8 +469,13 @@ PetscErrorCode refineOnRank0(DM *serial, PetscInt levels, const MeshDescription 
   std::iota(numbers.begin(), numbers.end(), c_start);
   PetscCall(MeshRefineUniformly(serial, levels, desc.regions, desc.boundaries, specs, &numbers));
   PetscCall(DMPlexGetHeightStratum(*serial, 0, &c_start, &c_end));
-  for (PetscInt c = c_start; c < c_end; ++c)
-    PetscCheck(numbers[c - c_start] == c, PETSC_COMM_SELF, PETSC_ERR_PLIB, "refined cell %" PetscInt_FMT " numbered %" PetscInt_FMT " by its coarse cell", c, numbers[c - c_start]);
+  PetscInt wrong[2] = {-1, -1}; // the first cell whose number differs, and that number
+  for (PetscInt c = c_start; c < c_end && wrong[0] < 0; ++c)
+    if (numbers[c - c_start] != c) wrong[0] = c, wrong[1] = numbers[c - c_start];
+  // Only rank 0 holds cells: it decides, and every rank stops alike (no rank left waiting).
+  PetscCallMPI(MPI_Bcast(wrong, 2, MPIU_INT, 0, PetscObjectComm((PetscObject)*serial)));
+  PetscCheck(wrong[0] < 0, PetscObjectComm((PetscObject)*serial), PETSC_ERR_PLIB, "refined cell %" PetscInt_FMT " numbered %" PetscInt_FMT " by its coarse cell", wrong[0],
+             wrong[1]);
   PetscFunctionReturn(0);
 }
 
