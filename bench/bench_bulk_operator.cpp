@@ -23,8 +23,8 @@
 
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/fem/element_kernels.hpp"
-#include "slipwave/model/elastodynamics.hpp"
-#include "slipwave/model/stable_step.hpp"
+#include "slipwave/problem/elastodynamics.hpp"
+#include "slipwave/problem/stable_step.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 using namespace slipwave;
@@ -42,7 +42,7 @@ struct Row {
 void setOption(const char *name, const char *value) { PetscOptionsSetValue(nullptr, name, value); }
 
 // K assembled from the element kernel on every cell (the same matrices the BulkOperator stores).
-PetscErrorCode assemble(model::Elastodynamics *m, MatType type, Mat *K) {
+PetscErrorCode assemble(problem::Elastodynamics *m, MatType type, Mat *K) {
   const fem::BulkOperator &b = m->bulk;
   const PetscInt           n = b.nodesPerCell() * b.dimension();
   std::vector<double>      Ke(n * n);
@@ -86,11 +86,11 @@ PetscErrorCode runCase(PetscInt dim, PetscInt nc, Row *row) {
   row->case_name = std::string(dim == 2 ? "2d_" : "3d_") + std::to_string(nc);
   row->dim       = dim;
 
-  model::Elastodynamics m;
+  problem::Elastodynamics m;
   double                t0 = now();
-  PetscCall(model::ElastodynamicsCreate(PETSC_COMM_WORLD, &m));
-  model::StableStep st;
-  PetscCall(model::StableStepCompute(&m, &st));
+  PetscCall(problem::ElastodynamicsCreate(PETSC_COMM_WORLD, &m));
+  problem::StableStep st;
+  PetscCall(problem::StableStepCompute(&m, &st));
   row->setup = now() - t0;
   row->ncell = m.bulk.cellCount();
 
@@ -121,9 +121,9 @@ PetscErrorCode runCase(PetscInt dim, PetscInt nc, Row *row) {
   }
   // 2. The element loop with the local<->global exchange (what the RHS pays for f = K u).
   PetscErrorCode ierr = 0;
-  row->loop_comm      = bestTime([&] { ierr = ierr ? ierr : model::ElastodynamicsStiffnessTimes(&m, x, f_loop); });
+  row->loop_comm      = bestTime([&] { ierr = ierr ? ierr : problem::ElastodynamicsStiffnessTimes(&m, x, f_loop); });
   PetscCall(ierr);
-  PetscCall(model::ElastodynamicsStiffnessTimes(&m, x, f_loop));
+  PetscCall(problem::ElastodynamicsStiffnessTimes(&m, x, f_loop));
 
   // 3. Assembled matrices, MatMult (AIJ; BAIJ with the dim x dim node blocks).
   for (int pass = 0; pass < 2; ++pass) {
@@ -145,7 +145,7 @@ PetscErrorCode runCase(PetscInt dim, PetscInt nc, Row *row) {
   }
 
   // 4. The whole RHS and the whole step (central difference, nodal damping as the driver sets it).
-  row->rhs = bestTime([&] { ierr = ierr ? ierr : model::ElastodynamicsRHS(nullptr, 0.0, x, a, &m); });
+  row->rhs = bestTime([&] { ierr = ierr ? ierr : problem::ElastodynamicsRHS(nullptr, 0.0, x, a, &m); });
   PetscCall(ierr);
   {
     TS  ts;
@@ -156,7 +156,7 @@ PetscErrorCode runCase(PetscInt dim, PetscInt nc, Row *row) {
     PetscCall(TSSetMaxTime(ts, 1e30));
     PetscCall(TSSetMaxSteps(ts, PETSC_MAX_INT));
     PetscCall(TSSetTimeStep(ts, 0.9 * st.dt_limit));
-    PetscCall(model::ElastodynamicsSetUpTS(&m, ts));
+    PetscCall(problem::ElastodynamicsSetUpTS(&m, ts));
     PetscCall(VecDuplicate(x, &u));
     PetscCall(VecDuplicate(x, &v));
     PetscCall(VecZeroEntries(u));
@@ -171,7 +171,7 @@ PetscErrorCode runCase(PetscInt dim, PetscInt nc, Row *row) {
     PetscCall(VecDestroy(&v));
   }
   for (Vec *w : {&x, &f_loop, &f_mat, &a}) PetscCall(VecDestroy(w));
-  PetscCall(model::ElastodynamicsDestroy(&m));
+  PetscCall(problem::ElastodynamicsDestroy(&m));
   PetscFunctionReturn(0);
 }
 
@@ -188,8 +188,8 @@ PetscErrorCode validateMixed(PetscInt dim, double *diff) {
   setOption("-material_rock_rho", "2500");
   setOption("-material_rock_vp", "1500");
   setOption("-material_rock_vs", "800");
-  model::Elastodynamics m;
-  PetscCall(model::ElastodynamicsCreate(PETSC_COMM_WORLD, &m));
+  problem::Elastodynamics m;
+  PetscCall(problem::ElastodynamicsCreate(PETSC_COMM_WORLD, &m));
   Vec         x, f_loop, f_mat;
   Mat         K;
   PetscRandom rnd;
@@ -199,13 +199,13 @@ PetscErrorCode validateMixed(PetscInt dim, double *diff) {
   PetscCall(PetscRandomCreate(PETSC_COMM_WORLD, &rnd));
   PetscCall(VecSetRandom(x, rnd));
   PetscCall(PetscRandomDestroy(&rnd));
-  PetscCall(model::ElastodynamicsStiffnessTimes(&m, x, f_loop));
+  PetscCall(problem::ElastodynamicsStiffnessTimes(&m, x, f_loop));
   PetscCall(assemble(&m, MATAIJ, &K));
   PetscCall(MatMult(K, x, f_mat));
   PetscCall(relativeDifference(f_loop, f_mat, diff));
   PetscCall(MatDestroy(&K));
   for (Vec *w : {&x, &f_loop, &f_mat}) PetscCall(VecDestroy(w));
-  PetscCall(model::ElastodynamicsDestroy(&m));
+  PetscCall(problem::ElastodynamicsDestroy(&m));
   setOption("-regions", "soil");
   for (const char *o : {"-region_rock_box", "-material_rock_rho", "-material_rock_vp", "-material_rock_vs"}) PetscCall(PetscOptionsClearValue(nullptr, o));
   PetscFunctionReturn(0);

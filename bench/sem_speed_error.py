@@ -50,7 +50,9 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests", "tools"))
+sys.path.insert(0, os.path.join(ROOT, "python"))
 from lamb_line_load import ricker, surface_response  # noqa: E402
+from slipwave import read_csv  # noqa: E402
 
 RHO, VP, VS = 2000.0, 692.820323, 400.0
 F, F0, T0 = 1e5, 10.0, 0.12
@@ -134,7 +136,7 @@ def run_error(stations_dir, ref):
     num = den = 0.0
     per_receiver = []
     for i, k in enumerate(RECEIVERS):
-        d = np.genfromtxt(os.path.join(stations_dir, f"r{k}.csv"), delimiter=",", names=True)
+        d = read_csv(os.path.join(stations_dir, f"r{k}.csv"))
         inside = d["t"] <= T_END + 1e-9
         e2 = r2 = 0.0
         for name, ref_c in (("v_x", vx_ref[i]), ("v_y", vy_ref[i])):

@@ -18,7 +18,10 @@ import xml.etree.ElementTree as ET
 import h5py
 import numpy as np
 
-# XDMF defaults (NumberType Float, Precision 4) apply when an attribute is missing.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+from slipwave.xdmf import XdmfError, read_index  # noqa: E402
+
+# XDMF defaults (NumberType Float, Precision 4) apply when an attribute is missing (slipwave.xdmf).
 KINDS = {"Float": "f", "Int": "i", "UInt": "u", "Char": "i", "UChar": "u"}
 NODES_PER_CELL = {"Triangle": 3, "Quadrilateral": 4, "Tetrahedron": 4, "Hexahedron": 8, "Wedge": 6, "Pyramid": 5}
 COMPONENTS = {"Scalar": 1, "Vector": 3, "Tensor6": 6, "Tensor": 9}
@@ -36,28 +39,14 @@ class Checker:
     def fail(self, where, message):
         self.problems.append(f"{where}: {message}")
 
-    def data_item(self, item, where):
-        """Checks one HDF DataItem; returns its array or None."""
-        if item is None:
-            self.fail(where, "no DataItem")
+    def data_item(self, ref, where):
+        """Checks one HDF DataItem (a slipwave.xdmf.HdfRef, or the XdmfError that stands for
+        it); returns its array or None."""
+        if isinstance(ref, XdmfError):
+            self.fail(where, str(ref))
             return None
-        fmt = item.get("Format", "XML")
-        if fmt != "HDF":
-            self.fail(where, f"DataItem Format {fmt!r}; only HDF is checked")
-            return None
-        text = (item.text or "").strip()
-        if ":" not in text:
-            self.fail(where, f"HDF DataItem {text!r} is not FILE:/PATH")
-            return None
-        file_name, path = text.split(":", 1)
-        file_path = os.path.join(self.base, file_name)
-        try:
-            dims = tuple(int(d) for d in item.get("Dimensions", "").split())
-        except ValueError:
-            self.fail(where, f"Dimensions {item.get('Dimensions')!r} are not integers")
-            return None
-        number_type = item.get("NumberType", item.get("DataType", "Float"))
-        precision = int(item.get("Precision", "4"))
+        file_path, path, dims = os.path.join(self.base, ref.file), ref.dataset, ref.dims
+        number_type, precision, text = ref.number_type, ref.precision, ref.text
         key = (file_path, path)
         if key not in self.checked:
             self.checked[key] = self.read(file_path, path, where)
@@ -92,22 +81,17 @@ class Checker:
             self.fail(where, f"{path}: {int(np.size(data) - np.count_nonzero(np.isfinite(data)))} non-finite values")
         return data
 
-    def uniform_grid(self, grid, label):
-        """Checks one Uniform grid; returns (time or None, {field name: Center})."""
-        time_el = grid.find("Time")
-        time = None
-        if time_el is not None:
-            try:
-                time = float(time_el.get("Value"))
-            except (TypeError, ValueError):
-                self.fail(label, f"Time Value {time_el.get('Value')!r} is not a number")
-        geometry = grid.find("Geometry")
-        topology = grid.find("Topology")
+    def uniform_grid(self, step, label):
+        """Checks one Uniform grid (a slipwave.xdmf.Step); returns (time or None, {field name: Center})."""
+        time = step.time
+        if step.has_time and time is None:
+            self.fail(label, f"Time Value {step.time_text!r} is not a number")
+        geometry, topology = step.geometry, step.topology
         if geometry is None or topology is None:
             self.fail(label, "missing Geometry or Topology")
             return time, {}
-        gtype = geometry.get("GeometryType", geometry.get("Type", "XYZ"))
-        coords = self.data_item(geometry.find("DataItem"), f"{label} Geometry")
+        gtype = geometry.kind or "XYZ"
+        coords = self.data_item(geometry.ref, f"{label} Geometry")
         num_nodes = None
         if coords is not None:
             columns = GEOMETRY_COLUMNS.get(gtype)
@@ -117,32 +101,30 @@ class Checker:
                 self.fail(label, f"GeometryType {gtype} wants [nodes, {columns}], got {coords.shape}")
             else:
                 num_nodes = coords.shape[0]
-        ttype = topology.get("TopologyType", topology.get("Type"))
-        cells = self.data_item(topology.find("DataItem"), f"{label} Topology")
+        ttype = topology.kind
+        cells = self.data_item(topology.ref, f"{label} Topology")
         num_cells = None
         if cells is not None:
             per_cell = NODES_PER_CELL.get(ttype)
             if ttype in ("Polyline", "Polyvertex"):
-                per_cell = int(topology.get("NodesPerElement", "0"))
+                per_cell = int(topology.attributes.get("NodesPerElement", "0"))
             if per_cell is None or cells.ndim != 2 or cells.shape[1] != per_cell:
                 self.fail(label, f"TopologyType {ttype} wants [cells, {per_cell}], got {cells.shape}")
             else:
                 num_cells = cells.shape[0]
-                declared = topology.get("NumberOfElements")
+                declared = topology.attributes.get("NumberOfElements")
                 if declared is not None and int(declared) != num_cells:
                     self.fail(label, f"NumberOfElements {declared} != {num_cells} topology rows")
                 if num_nodes is not None and cells.size and (cells.min() < 0 or cells.max() >= num_nodes):
                     self.fail(label, f"topology indices span [{cells.min()}, {cells.max()}], nodes are [0, {num_nodes})")
         fields = {}
-        for attribute in grid.findall("Attribute"):
-            name = attribute.get("Name", "?")
-            center = attribute.get("Center", "Node")
-            atype = attribute.get("AttributeType", attribute.get("Type", "Scalar"))
+        for attribute in step.attributes:
+            name, center, atype = attribute.name, attribute.center, attribute.kind
             where = f"{label} Attribute {name}"
             if name in fields:
                 self.fail(where, "listed twice")
             fields[name] = center
-            values = self.data_item(attribute.find("DataItem"), where)
+            values = self.data_item(attribute.ref, where)
             if values is None:
                 continue
             rows = {"Node": num_nodes, "Cell": num_cells}.get(center, "unknown")
@@ -160,23 +142,19 @@ class Checker:
 
     def run(self, expect_steps, expect_fields):
         try:
-            root = ET.parse(self.xmf_path).getroot()
+            index = read_index(self.xmf_path)
         except (OSError, ET.ParseError) as error:
             self.fail(self.xmf_path, f"cannot parse: {error}")
             return None
-        top = root.find("Domain/Grid")
-        if top is None:
-            self.fail(self.xmf_path, "no Domain/Grid")
+        except XdmfError as error:
+            self.fail(self.xmf_path, str(error))
             return None
-        if top.get("GridType") == "Collection":
-            if top.get("CollectionType") != "Temporal":
-                self.fail(self.xmf_path, f"collection type {top.get('CollectionType')!r}, want Temporal")
-            grids = top.findall("Grid")
-        else:
-            grids = [top]
+        if index.collection and index.collection_type != "Temporal":
+            self.fail(self.xmf_path, f"collection type {index.collection_type!r}, want Temporal")
+        grids = index.steps
         steps = []
-        for i, grid in enumerate(grids):
-            steps.append(self.uniform_grid(grid, f"step {i} (grid {grid.get('Name', '?')})"))
+        for i, step in enumerate(grids):
+            steps.append(self.uniform_grid(step, f"step {i} (grid {step.name})"))
         times = [t for t, _ in steps]
         if len(grids) > 1:
             if any(t is None for t in times):

@@ -23,6 +23,9 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+from slipwave import RunFolder  # noqa: E402
+
 
 def ricker(t, f0, t0):
     a = (np.pi * f0 * (t - t0)) ** 2
@@ -41,19 +44,16 @@ def load_history(t, args):
     return args.amplitude * s
 
 
-def read_station(run, name):
-    return np.genfromtxt(os.path.join(run, "stations", name + ".csv"), delimiter=",", names=True)
-
-
 def response(args):
     """Times, the response R(t) and the coordinates used."""
     if args.mode == "rocking":
         left, right = args.stations.split(",")
-        a, b = read_station(args.run, left), read_station(args.run, right)
+        run = RunFolder(args.run)
+        a, b = run.station(left), run.station(right)
         if args.x_left is None or args.x_right is None:
             sys.exit("foundation_impedance: rocking needs --x-left and --x-right (the stations' x)")
         return a["t"], (b["u_y"] - a["u_y"]) / (args.x_right - args.x_left)
-    d = read_station(args.run, args.station)
+    d = RunFolder(args.run).station(args.station)
     return d["t"], d["u_y" if args.mode == "vertical" else "u_x"]
 
 

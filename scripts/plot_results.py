@@ -29,8 +29,6 @@ skipped with a message. Prints the list of files written; exits 1 if nothing was
 The output may be plotted while the run is going (the XDMF lists the finished steps).
 """
 import argparse
-import glob
-import json
 import os
 import sys
 import xml.etree.ElementTree as ET
@@ -41,18 +39,21 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "python"))
 from response_spectrum import default_periods, pseudo_acceleration_spectrum, resample_uniform  # noqa: E402
+from slipwave import INTERFACE_STATUS, RunFolder  # noqa: E402
 
 try:
-    import h5py
+    import h5py  # noqa: F401
 except ImportError:  # only the interface plots and stations.h5 need it
     h5py = None
 
 STANDARD_GRAVITY = 9.80665  # m/s^2 per g
 SPECTRUM_DAMPING = 0.05
 MAX_POINTS = 20000  # a time series longer than this is thinned for plotting (every k-th sample)
-STATUS_NAMES = ("stick", "slip", "open")
+STATUS_NAMES = INTERFACE_STATUS
 STATUS_COLORS = ("tab:green", "tab:orange", "tab:red")
 
 
@@ -69,16 +70,6 @@ def thin(*arrays):
     return tuple(a[idx] for a in arrays)
 
 
-def read_csv(path):
-    """Reads a CSV with a header line; returns {column: array}, or None if it has no rows."""
-    with open(path) as f:
-        header = f.readline().strip().split(",")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    if data.size == 0:
-        return None
-    return {name: data[:, i] for i, name in enumerate(header)}
-
-
 def save(fig, path, written):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     fig.savefig(path, dpi=110)
@@ -90,34 +81,19 @@ def save(fig, path, written):
 # Stations
 
 
-def read_stations(out):
-    """{name: {"t": times, "a_x": ..., ...}} from stations/*.csv, else from stations.h5."""
-    stations = {}
-    for path in sorted(glob.glob(os.path.join(out, "stations", "*.csv"))):
-        data = read_csv(path)
-        if data is not None and "t" in data:
-            stations[os.path.splitext(os.path.basename(path))[0]] = data
-    h5_path = os.path.join(out, "stations.h5")
-    if not stations and h5py is not None and os.path.isfile(h5_path):
-        with h5py.File(h5_path, "r") as f:
-            for name in f:
-                g = f[name]
-                if "time" not in g or "acceleration" not in g:
-                    continue
-                a = g["acceleration"][()]
-                data = {"t": g["time"][()]}
-                for i, c in enumerate("xyz"[: a.shape[1]]):
-                    data[f"a_{c}"] = a[:, i]
-                stations[name] = data
-    return stations
+def read_stations(run):
+    """{name: station Table} of the stations with rows (stations/*.csv, else stations.h5)."""
+    try:
+        stations = run.stations()
+    except ImportError:  # stations.h5 alone, and no h5py
+        return {}
+    return {name: data for name, data in stations.items() if len(data) and "t" in data}
 
 
 def resolution_note(out):
     """The title's statement of what the mesh resolves, from OUT/run_info.json."""
-    path = os.path.join(out, "run_info.json")
     try:
-        with open(path) as f:
-            info = json.load(f)
+        info = RunFolder(out).run_info()
         # Spectral elements (degree p > 1) count GLL nodes per wavelength.
         points = f"GLL nodes at degree {info['element_degree']}" if "element_degree" in info else "points"
         return (f"mesh resolves up to {info['resolved_frequency_hz']:.3g} Hz "
@@ -241,60 +217,15 @@ def plot_transfer(plots, written, periods, spectra, reference):
 # Interfaces
 
 
-def read_interface(xmf_path):
-    """Reads interface_<name>.xmf and its HDF5 file.
-
-    Returns dict with times [nsteps], geometry [npairs, 3], topology, topology_type and
-    fields {name: array [nsteps, npairs, ncomp]}; only the steps the XDMF lists are read.
-    """
-    base = os.path.dirname(os.path.abspath(xmf_path))
-    root = ET.parse(xmf_path).getroot()
-    steps = []  # (time, {field: (file, path)})
-    geometry_ref = topology_ref = topology_type = None
-    for grid in root.iter("Grid"):
-        if grid.get("GridType", "Uniform") != "Uniform":
-            continue
-        time_el = grid.find("Time")
-        time = float(time_el.get("Value")) if time_el is not None else float(len(steps))
-        refs = {}
-        for attribute in grid.findall("Attribute"):
-            item = attribute.find("DataItem")
-            if item is not None and item.get("Format") == "HDF":
-                refs[attribute.get("Name")] = (item.text or "").strip().split(":", 1)
-        geometry = grid.find("Geometry")
-        topology = grid.find("Topology")
-        if geometry is not None and geometry.find("DataItem") is not None:
-            geometry_ref = (geometry.find("DataItem").text or "").strip().split(":", 1)
-        if topology is not None and topology.find("DataItem") is not None:
-            topology_ref = (topology.find("DataItem").text or "").strip().split(":", 1)
-            topology_type = topology.get("TopologyType", topology.get("Type"))
-        steps.append((time, refs))
-    if not steps or geometry_ref is None:
+def read_interface(run, name):
+    """Interface `name`'s frames: dict with times [nsteps], geometry [npairs, 3], topology,
+    topology_type and fields {name: array [nsteps, npairs, ncomp]} (the fields every frame
+    has); None without frames."""
+    frames = run.interface(name)
+    if not len(frames):
         return None
-    files = {}
-
-    def read(ref):
-        file_name, path = ref
-        if file_name not in files:
-            files[file_name] = h5py.File(os.path.join(base, file_name), "r")
-        return files[file_name][path][()]
-
-    try:
-        result = {
-            "times": np.array([s[0] for s in steps]),
-            "geometry": read(geometry_ref),
-            "topology": read(topology_ref) if topology_ref else None,
-            "topology_type": topology_type,
-            "fields": {},
-        }
-        names = [n for n in steps[0][1] if all(n in s[1] for s in steps)]
-        for name in names:
-            arrays = [read(s[1][name]) for s in steps]
-            result["fields"][name] = np.stack([a.reshape(a.shape[0], -1) for a in arrays])
-    finally:
-        for f in files.values():
-            f.close()
-    return result
+    return {"times": np.array(frames.times), "geometry": frames.geometry, "topology": frames.topology,
+            "topology_type": frames.topology_type, "fields": frames.stacked()}
 
 
 def chain_order(topology, npairs):
@@ -328,18 +259,18 @@ def chain_order(topology, npairs):
     return chains
 
 
-def plot_interfaces(out, plots, written):
-    xmfs = sorted(glob.glob(os.path.join(out, "interface_*.xmf")))
-    if not xmfs:
+def plot_interfaces(run, plots, written):
+    names = run.interface_names()
+    if not names:
         note("no interface output (interface_*.xmf): interface plots skipped")
         return
     if h5py is None:
         note("h5py is not installed: interface plots skipped")
         return
-    for xmf in xmfs:
-        name = os.path.basename(xmf)[len("interface_"):-len(".xmf")]
+    for name in names:
+        xmf = os.path.join(run.path, f"interface_{name}.xmf")
         try:
-            data = read_interface(xmf)
+            data = read_interface(run, name)
         except (OSError, KeyError, ET.ParseError, ValueError) as e:
             note(f"interface '{name}': cannot read {xmf} ({e}): skipped")
             continue
@@ -511,13 +442,12 @@ def plot_interface_profile(name, data, plots, written):
 # Energy
 
 
-def plot_energy(out, plots, written):
-    path = os.path.join(out, "energy.csv")
-    if not os.path.isfile(path):
+def plot_energy(run, plots, written):
+    if not os.path.isfile(os.path.join(run.path, "energy.csv")):
         note("no energy.csv: energy plot skipped")
         return
-    e = read_csv(path)
-    if e is None or "time" not in e:
+    e = run.energy()
+    if not len(e) or "time" not in e:
         note("energy.csv has no rows: energy plot skipped")
         return
     t = e["time"]
@@ -581,14 +511,15 @@ def main():
         return 1
     plots = args.plots or os.path.join(args.out, "plots")
     written = []
-    stations = read_stations(args.out)
+    run = RunFolder(args.out)
+    stations = read_stations(run)
     plot_stations(args.out, plots, written, stations)
     plot_pore_pressure(plots, written, stations)
     periods, spectra = station_spectra(stations)
     plot_spectra(plots, written, periods, spectra)
     plot_transfer(plots, written, periods, spectra, args.reference)
-    plot_interfaces(args.out, plots, written)
-    plot_energy(args.out, plots, written)
+    plot_interfaces(run, plots, written)
+    plot_energy(run, plots, written)
     if not written:
         print(f"plot_results: error: nothing to plot in {args.out} (no stations, interfaces or energy.csv)",
               file=sys.stderr)

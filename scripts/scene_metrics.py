@@ -3,7 +3,8 @@
 
 usage: /usr/bin/python3 scripts/scene_metrics.py OUT [--interface base] [--json FILE]
 
-From the interface output (interface_<name>.xmf and its HDF5 files) and the stations of OUT:
+From the interface output (interface_<name>.xmf and its HDF5 files) and the stations of OUT
+(read with the python/slipwave package):
   net_slip            net tangential offset at the end: the mean over the pairs of the
                       tangential jump (structure minus soil) at the last output step [m]
   accumulated_slip    the slip path, largest over the pairs at the end (sum of |slip
@@ -25,18 +26,19 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_results import read_csv, read_interface  # noqa: E402
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "python"))
 from response_spectrum import pseudo_acceleration_spectrum, resample_uniform  # noqa: E402
+from slipwave import RunFolder  # noqa: E402
 
 SPECTRUM_PERIODS = (0.1, 0.3, 1.0)  # s: short, near the block-soil and the layer periods
 
 
-def station(out, name):
-    path = os.path.join(out, "stations", f"{name}.csv")
-    if not os.path.isfile(path):
-        raise SystemExit(f"scene_metrics: error: station '{name}' is missing ({path})")
-    return read_csv(path)
+def station(run, name):
+    if name not in run.station_names():
+        raise SystemExit(f"scene_metrics: error: station '{name}' is missing ({os.path.join(run.path, 'stations', name + '.csv')})")
+    return run.station(name)
 
 
 def high_frequency_share(t, a, f_cut):
@@ -48,37 +50,36 @@ def high_frequency_share(t, a, f_cut):
     return float(power[f > f_cut].sum() / power.sum())
 
 
-def resolved_frequency(out):
+def resolved_frequency(run):
     """vs_min / (8 h_min) from run_info.json, whose resolved frequency is vs_min / (10 h_min)."""
-    with open(os.path.join(out, "run_info.json")) as f:
-        info = json.load(f)
+    info = run.run_info()
     return info["resolved_frequency_hz"] * info["points_per_wavelength"] / 8
 
 
 def metrics(out, interface="base"):
-    data = read_interface(os.path.join(out, f"interface_{interface}.xmf"))
-    if data is None:
+    run = RunFolder(out)
+    frames = run.interface(interface)
+    if not len(frames):
         raise SystemExit(f"scene_metrics: error: no output steps in interface_{interface}.xmf")
-    fields = data["fields"]
     m = {
-        "net_slip": float(np.mean(fields["slip"][-1, :, 0])),
-        "accumulated_slip": float(np.max(fields["accumulated_slip"][-1, :, 0])),
-        "peak_uplift": float(np.max(fields["opening"][:, :, 0])),
+        "net_slip": float(np.mean(frames.field("slip", -1)[:, 0])),
+        "accumulated_slip": float(np.max(frames.field("accumulated_slip", -1)[:, 0])),
+        "peak_uplift": float(np.max(frames.stacked(["opening"])["opening"][:, :, 0])),
     }
-    left, right = station(out, "block_base_left"), station(out, "block_base_right")
+    left, right = station(run, "block_base_left"), station(run, "block_base_right")
     # The station's x is not in its CSV: the scene puts them at x = -2.75 and 2.75.
     span = 5.5
     m["peak_rocking_angle"] = float(np.max(np.abs(right["u_y"] - left["u_y"])) / span)
-    m["peak_structure_acceleration"] = float(np.max(np.abs(station(out, "block_top")["a_x"])))
-    ff = station(out, "free_field")
+    m["peak_structure_acceleration"] = float(np.max(np.abs(station(run, "block_top")["a_x"])))
+    ff = station(run, "free_field")
     m["free_field_pga"] = float(np.max(np.abs(ff["a_x"])))
     dt, acc = resample_uniform(ff["t"], ff["a_x"])
     psa = pseudo_acceleration_spectrum(acc, dt, SPECTRUM_PERIODS)
     for T, value in zip(SPECTRUM_PERIODS, psa):
         m[f"free_field_psa_{T:g}s"] = float(value)
-    f_cut = resolved_frequency(out)
+    f_cut = resolved_frequency(run)
     for name in ("free_field", "block_top"):
-        s = station(out, name)
+        s = station(run, name)
         m[f"high_frequency_share_{name}"] = high_frequency_share(s["t"], s["a_x"], f_cut)
     return m
 

@@ -22,7 +22,7 @@ WORK="$BUILD/bench/work/setup_scaling${BENCH_SETUP_DEGREE:+_p$P}"
 mkdir -p "$WORK"
 BOX="-mesh_dim 3 -element_degree $P -mesh_box_faces $N,$N,$N -mesh_box_upper 100,100,100 -regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200
  -bc_bottom_type absorbing -input_wave sv -input_boundary bottom -input_stf ricker -input_f0 5 -input_t0 0.24 -input_amplitude 0.1 -output_fields 0 -dry_run"
-# The Gmsh case (-mesh_refine, mesh/mesh_refinement.hpp): the same cube as a coarse file of
+# The Gmsh case (-mesh_refine, meshing/mesh_refinement.hpp): the same cube as a coarse file of
 # (N/4)^3 hexahedra (transfinite, so N must be a multiple of 4) refined twice to N^3, read
 # and refined on rank 0 (serial) or refined on the distributed mesh (auto).
 command -v gmsh > /dev/null || { echo "gmsh is not installed"; exit 1; }

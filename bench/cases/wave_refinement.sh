@@ -42,6 +42,8 @@ done
 $PY - "$CSV" "$H" "$VS" "$F0" "$T0" "$A" "${column_rows[@]}" <<'PY'
 import math, re, sys
 import numpy as np
+sys.path.insert(0, "python")
+from slipwave import read_csv
 csv, H, vs, f0, t0, A = sys.argv[1], *map(float, sys.argv[2:7])
 rows = [r.split() for r in sys.argv[7:]]
 def v_in(t):
@@ -52,7 +54,7 @@ for ppw, ny, log, station, us in rows:
     text = open(log).read()
     m = re.search(r"done: (\d+) steps in ([0-9.]+) s wall \(([0-9.eE+-]+) s per step\)", text)
     steps, wall, per = int(m.group(1)), float(m.group(2)), float(m.group(3))
-    d = np.genfromtxt(station, delimiter=",", names=True)
+    d = read_csv(station)
     ref = 2 * v_in(d["t"] - H / vs)
     err = math.sqrt(np.sum((d["v_x"] - ref) ** 2) / np.sum(ref ** 2))
     res.append((int(ppw), int(ny), steps, steps * per, int(us) * 1e-6, err))

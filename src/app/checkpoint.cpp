@@ -8,10 +8,10 @@
 
 #include "slipwave/app/checkpoint_seal.hpp"
 #include "slipwave/app/scene_options.hpp"
-#include "slipwave/model/attenuation.hpp"
-#include "slipwave/model/drm.hpp"
-#include "slipwave/model/free_field.hpp"
-#include "slipwave/model/pore_pressure.hpp"
+#include "slipwave/input/drm.hpp"
+#include "slipwave/input/free_field.hpp"
+#include "slipwave/medium/attenuation.hpp"
+#include "slipwave/porous/pore_pressure.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 namespace slipwave::app {
@@ -27,13 +27,13 @@ constexpr PetscInt kVersion = 7; // 2: ledger with `anelastic`, attenuation memo
 constexpr PetscInt kHeader  = 10;
 
 // The ledger as a flat array, in a fixed order.
-std::vector<double> ledgerArray(const model::EnergyLedger &e) {
+std::vector<double> ledgerArray(const problem::EnergyLedger &e) {
   return {e.kinetic, e.strain,        e.input,        e.external,      e.reactions, e.absorbed,          e.damped, e.interface_work,
           e.shadow,  e.shadow_start,  e.balance_error, e.scale,        e.h_prev,    e.started ? 1.0 : 0.0, e.anelastic, e.contact_damped,
           e.fluid_stored, e.darcy, e.fluid_inflow};
 }
 
-void ledgerFromArray(const double *a, model::EnergyLedger *e) {
+void ledgerFromArray(const double *a, problem::EnergyLedger *e) {
   e->kinetic = a[0], e->strain = a[1], e->input = a[2], e->external = a[3], e->reactions = a[4], e->absorbed = a[5], e->damped = a[6];
   e->interface_work = a[7], e->shadow = a[8], e->shadow_start = a[9], e->balance_error = a[10], e->scale = a[11], e->h_prev = a[12];
   e->started = a[13] != 0, e->anelastic = a[14], e->contact_damped = a[15];
@@ -51,11 +51,11 @@ std::vector<Vec> stateVectors(const CheckpointState &s) {
   return {u, v, a, s.model->bc.constant_force};
 }
 
-// The committed pore pressure state of a saturated scene (model/pore_pressure.hpp): p_n,
+// The committed pore pressure state of a saturated scene (porous/pore_pressure.hpp): p_n,
 // alpha Q u_n (the reference of the next strain increment), H p_n (the first diffusion
 // sub-step of the next step) and the step before's mean H p (the ledger's Darcy term).
 std::vector<Vec> poreStateVectors(const CheckpointState &s) {
-  const model::PorePressure *pore = s.model->pore;
+  const porous::PorePressure *pore = s.model->pore;
   return pore ? std::vector<Vec>{pore->p, pore->Qu, pore->Hp, pore->Hbar_previous} : std::vector<Vec>{};
 }
 
@@ -128,8 +128,8 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
     PetscCall(viewLocalArray(comm, state, viewer));
   }
   PetscCall(viewLocalArray(comm, samples, viewer));
-  if (s.model->attenuation) PetscCall(viewLocalArray(comm, model::AttenuationState(s.model->attenuation), viewer));
-  if (s.model->drm) PetscCall(viewLocalArray(comm, model::DrmState(s.model->drm), viewer));
+  if (s.model->attenuation) PetscCall(viewLocalArray(comm, medium::AttenuationState(s.model->attenuation), viewer));
+  if (s.model->drm) PetscCall(viewLocalArray(comm, input::DrmState(s.model->drm), viewer));
   // The free-field columns are replicated on every rank: rank 0's copy is the state.
   for (PetscInt k = 0; k < header[8]; ++k) {
     const std::vector<double> column = s.model->free_field->sides[k].column.state();
@@ -223,14 +223,14 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
   s.stations->loadRecords(records.data(), records.size());
   if (s.model->attenuation) {
     std::vector<double> memory;
-    PetscCall(loadLocalArray(comm, model::AttenuationStateSize(s.model->attenuation), viewer, &memory));
-    PetscCheck(model::AttenuationSetState(s.model->attenuation, memory), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+    PetscCall(loadLocalArray(comm, medium::AttenuationStateSize(s.model->attenuation), viewer, &memory));
+    PetscCheck(medium::AttenuationSetState(s.model->attenuation, memory), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                "-restart = %s: the attenuation memory does not fit this mesh; allowed: the scene options of the run that wrote it", path.c_str());
   }
   if (s.model->drm) {
     std::vector<double> drm;
-    PetscCall(loadLocalArray(comm, model::DrmStateSize(s.model->drm), viewer, &drm));
-    PetscCheck(model::DrmSetState(s.model->drm, drm), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+    PetscCall(loadLocalArray(comm, input::DrmStateSize(s.model->drm), viewer, &drm));
+    PetscCheck(input::DrmSetState(s.model->drm, drm), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                "-restart = %s: the DRM state does not fit this mesh; allowed: the scene options of the run that wrote it", path.c_str());
   }
   const PetscInt sides = s.model->free_field ? (PetscInt)s.model->free_field->sides.size() : 0;
@@ -249,7 +249,7 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
     // The pore pressure update's reference state is the restored one, not the first RHS's.
     s.model->pore->t       = scalars[3 + kLedgerSize + nframes + ninterfaces];
     s.model->pore->started = true;
-    PetscCall(model::PorePressureDiffuseStep(s.model->pore, scalars[1]));
+    PetscCall(porous::PorePressureDiffuseStep(s.model->pore, scalars[1]));
   }
   PetscCall(PetscViewerDestroy(&viewer));
   PetscFunctionReturn(0);

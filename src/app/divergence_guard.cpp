@@ -34,7 +34,7 @@ PetscErrorCode firstNonFinite(MPI_Comm comm, Vec x, PetscInt *first) {
 }
 
 // Coordinates of the node holding global dof `dof` (collective; every rank gets them).
-PetscErrorCode nodeCoordinates(const model::Elastodynamics &model, PetscInt dof, double x[3]) {
+PetscErrorCode nodeCoordinates(const problem::Elastodynamics &model, PetscInt dof, double x[3]) {
   Vec                local, global;
   PetscScalar       *l;
   const PetscScalar *g;
@@ -61,7 +61,7 @@ PetscErrorCode nodeCoordinates(const model::Elastodynamics &model, PetscInt dof,
 }
 
 // "node N (x, y[, z]), component c" for a global dof (collective).
-PetscErrorCode dofPlace(const model::Elastodynamics &model, PetscInt dof, std::string *place) {
+PetscErrorCode dofPlace(const problem::Elastodynamics &model, PetscInt dof, std::string *place) {
   double x[3];
   char   text[160];
   PetscFunctionBeginUser;
@@ -76,7 +76,7 @@ PetscErrorCode dofPlace(const model::Elastodynamics &model, PetscInt dof, std::s
 
 // The input that made the value non-finite, if one did: a material, the constant loads
 // (gravity, tractions) or the incident wave. "" when every input is finite.
-PetscErrorCode inputCause(const model::Elastodynamics &model, PetscReal t, std::string *cause) {
+PetscErrorCode inputCause(const problem::Elastodynamics &model, PetscReal t, std::string *cause) {
   char     text[512] = "";
   PetscInt bad;
   PetscFunctionBeginUser;
@@ -109,7 +109,7 @@ PetscErrorCode inputCause(const model::Elastodynamics &model, PetscReal t, std::
 
 } // namespace
 
-PetscErrorCode DivergenceGuard(const model::Elastodynamics &model, const model::EnergyLedger &e, PetscReal growth_limit, const model::StableStep &limit, PetscReal h,
+PetscErrorCode DivergenceGuard(const problem::Elastodynamics &model, const problem::EnergyLedger &e, PetscReal growth_limit, const problem::StableStep &limit, PetscReal h,
                                PetscInt step, PetscReal t, Vec u, Vec v, Vec a) {
   MPI_Comm comm = model.comm;
   PetscFunctionBeginUser;

@@ -3,6 +3,8 @@
 #include <array>
 #include <cstdio>
 
+#include "slipwave/io/whole_write.hpp"
+
 namespace slipwave::app {
 namespace {
 
@@ -46,7 +48,7 @@ PetscErrorCode EnergyCsv::Open(const std::string &dir, const std::string &previo
   PetscFunctionReturn(0);
 }
 
-void EnergyCsv::Append(PetscInt step, PetscReal t, const model::EnergyLedger &e, const interface::InterfaceTotals &interfaces) {
+void EnergyCsv::Append(PetscInt step, PetscReal t, const problem::EnergyLedger &e, const interface::InterfaceTotals &interfaces) {
   if (!file_) return;
   // One value per entry of kValueColumns, in its order.
   const std::array<double, kValueColumns.size()> values = {(double)t,
@@ -86,8 +88,9 @@ void EnergyCsv::Append(PetscInt step, PetscReal t, const model::EnergyLedger &e,
 
 void EnergyCsv::Flush() {
   if (!file_) return;
-  std::fwrite(pending_.data(), 1, pending_.size(), file_);
-  std::fflush(file_);
+  // The rows since the last flush go out by one write (io/whole_write.hpp): a kill leaves
+  // energy.csv ending at a whole row. Nothing else writes through file_'s stdio buffer.
+  io::WriteWhole(fileno(file_), pending_);
   pending_.clear();
 }
 

@@ -46,7 +46,7 @@ PetscErrorCode setRegionVelocities(DM dm, const fem::BulkOperator &bulk, Vec fre
 
 } // namespace
 
-PetscErrorCode RegionVelocitiesRead(MPI_Comm comm, PetscInt dim, const std::vector<model::RegionMaterialInfo> &materials, RegionVelocities *velocities) {
+PetscErrorCode RegionVelocitiesRead(MPI_Comm comm, PetscInt dim, const std::vector<medium::RegionMaterialInfo> &materials, RegionVelocities *velocities) {
   PetscFunctionBeginUser;
   velocities->assign(materials.size(), {});
   PetscOptionsBegin(comm, "", "Initial conditions", "slipwave");

@@ -2,11 +2,11 @@
 
 #include <utility>
 
-#include "slipwave/model/pore_pressure.hpp"
+#include "slipwave/porous/pore_pressure.hpp"
 
 namespace slipwave::app {
 
-PetscErrorCode OutputFrames::Open(const model::Elastodynamics &model, const std::string &dir, PetscReal interval, bool volume, const std::string &checkpoint_dir) {
+PetscErrorCode OutputFrames::Open(const problem::Elastodynamics &model, const std::string &dir, PetscReal interval, bool volume, const std::string &checkpoint_dir) {
   const bool restarted = !checkpoint_dir.empty();
   bool       kept      = false;
   PetscFunctionBeginUser;
@@ -28,13 +28,13 @@ PetscErrorCode OutputFrames::Open(const model::Elastodynamics &model, const std:
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode OutputFrames::WriteIfDue(const model::Elastodynamics &model, PetscInt step, PetscReal t, bool last, Vec u, Vec v, Vec a, bool *due) {
+PetscErrorCode OutputFrames::WriteIfDue(const problem::Elastodynamics &model, PetscInt step, PetscReal t, bool last, Vec u, Vec v, Vec a, bool *due) {
   PetscFunctionBeginUser;
   *due = Due(step, t, last);
   if (!*due) PetscFunctionReturn(0);
   const PetscInt frame = (PetscInt)times_.size();
   if (volume_) {
-    if (model.pore) PetscCall(model::PorePressureTotal(model.pore));
+    if (model.pore) PetscCall(porous::PorePressureTotal(model.pore));
     PetscCall(volume_->Write(model.dm, model.bulk, frame, t, u, v, a, model.initial_stress, model.pore ? model.pore->p_total : nullptr, model.pore ? model.pore->p : nullptr));
   }
   for (size_t k = 0; k < interfaces_.size(); ++k) PetscCall(interfaces_[k]->Write(model.interfaces[k], frame, t));

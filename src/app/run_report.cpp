@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <vector>
 
-#include "slipwave/model/attenuation.hpp"
-#include "slipwave/model/drm.hpp"
-#include "slipwave/model/pore_pressure.hpp"
+#include "slipwave/input/drm.hpp"
+#include "slipwave/medium/attenuation.hpp"
+#include "slipwave/porous/pore_pressure.hpp"
 
 namespace slipwave::app {
 namespace {
@@ -16,7 +16,7 @@ namespace {
 // times the ratio of a whole step to it (measured: 2.6 on a 512^2 mesh, docs/performance.md;
 // 4.3 on the default scene, where the per-step vector work weighs more; 4 is used, so the
 // estimate is good to a factor 2), doubled with stiffness-proportional damping (a second loop).
-PetscErrorCode reportCost(const model::Elastodynamics &model, double steps) {
+PetscErrorCode reportCost(const problem::Elastodynamics &model, double steps) {
   constexpr double kStepOverLoop = 4.0;
   PetscLogDouble   memory, t0, t1;
   PetscFunctionBeginUser;
@@ -54,7 +54,7 @@ const char *nodesPerWavelengthSource(PetscInt degree) {
 
 // GLL nodes per S wavelength at frequency f in a region of S speed vs, with the mesh's
 // smallest element (its corners' shortest edge or diagonal; p = 1: the smallest cell).
-double nodesPerWavelength(const model::Elastodynamics &model, double vs, double f) {
+double nodesPerWavelength(const problem::Elastodynamics &model, double vs, double f) {
   return (double)model.bulk.degree() * vs / f / model.bulk.minElementSize();
 }
 
@@ -65,7 +65,7 @@ struct Resolution {
   std::string region;
 };
 
-Resolution resolvedFrequency(const model::Elastodynamics &model) {
+Resolution resolvedFrequency(const problem::Elastodynamics &model) {
   const PetscInt p = model.bulk.degree();
   Resolution     res;
   for (const auto &m : model.materials) {
@@ -75,7 +75,7 @@ Resolution resolvedFrequency(const model::Elastodynamics &model) {
   return res;
 }
 
-PetscErrorCode reportInterfaces(const model::Elastodynamics &model) {
+PetscErrorCode reportInterfaces(const problem::Elastodynamics &model) {
   MPI_Comm comm = model.comm;
   PetscFunctionBeginUser;
   for (size_t k = 0; k < model.interfaces.size(); ++k) {
@@ -96,7 +96,7 @@ PetscErrorCode reportInterfaces(const model::Elastodynamics &model) {
 
 } // namespace
 
-void WriteRunInfo(const model::Elastodynamics &model, const std::string &output_dir, double dt) {
+void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt) {
   const Resolution  res  = resolvedFrequency(model);
   const std::string path = output_dir + "/run_info.json";
   if (FILE *f = std::fopen(path.c_str(), "w")) {
@@ -108,7 +108,7 @@ void WriteRunInfo(const model::Elastodynamics &model, const std::string &output_
   }
 }
 
-PetscErrorCode ReportSetup(const model::Elastodynamics &model, const model::StableStep &limit, const io::Stations &stations, PetscReal dt, PetscReal max_time,
+PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::StableStep &limit, const io::Stations &stations, PetscReal dt, PetscReal max_time,
                            const std::string &output_dir) {
   MPI_Comm    comm = model.comm;
   PetscMPIInt size;
@@ -155,23 +155,23 @@ PetscErrorCode ReportSetup(const model::Elastodynamics &model, const model::Stab
     PetscCall(PetscPrintf(comm, "  resolution: S waves up to %.3g Hz (%.3g GLL nodes per wavelength at degree %" PetscInt_FMT " in region %s, element size %.3g m)\n",
                           res.frequency, nodesPerWavelengthNeeded(p), p, res.region.c_str(), h));
   std::string bcs;
-  for (size_t i = 0; i < model.bc.names.size(); ++i) bcs += " " + model.bc.names[i] + "=" + model::boundaryTypeName(model.bc.types[i]);
+  for (size_t i = 0; i < model.bc.names.size(); ++i) bcs += " " + model.bc.names[i] + "=" + input::boundaryTypeName(model.bc.types[i]);
   PetscCall(PetscPrintf(comm, "  boundaries:%s\n", bcs.c_str()));
   for (const std::string &w : model.bc.warnings) PetscCall(PetscPrintf(comm, "  warning: %s\n", w.c_str()));
   for (const std::string &l : model.bc.load_notes) PetscCall(PetscPrintf(comm, "  load: %s\n", l.c_str()));
-  if (model.bc.input_wave != model::InputWave::None)
-    PetscCall(PetscPrintf(comm, "  input: %s wave through '%s', %s\n", model::inputWaveName(model.bc.input_wave), model.bc.input_boundary.c_str(), model.bc.input.describe().c_str()));
-  for (const std::string &line : model::DrmReport(model.drm)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+  if (model.bc.input_wave != input::InputWave::None)
+    PetscCall(PetscPrintf(comm, "  input: %s wave through '%s', %s\n", input::inputWaveName(model.bc.input_wave), model.bc.input_boundary.c_str(), model.bc.input.describe().c_str()));
+  for (const std::string &line : input::DrmReport(model.drm)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   if (model.damping_ratio > 0)
     PetscCall(PetscPrintf(comm, "  Rayleigh damping %.3g %% at %g and %g Hz: alpha %.4g 1/s, beta %.4g s\n", 100 * model.damping_ratio, model.damping_f1, model.damping_f2,
                           model.rayleigh.alpha, model.rayleigh.beta));
   if (model.rayleigh.beta > 0)
     PetscCall(PetscPrintf(comm, "    its stiffness-proportional part lowers the stable step from %.4e s (undamped) to %.4e s (-%.1f %%)\n", limit.dt_without_stiffness_damping,
                           limit.dt_bulk, 100 * (1 - limit.dt_bulk / limit.dt_without_stiffness_damping)));
-  for (const std::string &line : model::AttenuationReport(model.attenuation, model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+  for (const std::string &line : medium::AttenuationReport(model.attenuation, model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   PetscCall(reportInterfaces(model));
   if (model.pore)
-    for (const std::string &line : model::PorePressureReport(model.pore, model.materials, limit.dt_drained, limit.dt_bulk, limit.dt_limit, dt)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+    for (const std::string &line : porous::PorePressureReport(model.pore, model.materials, limit.dt_drained, limit.dt_bulk, limit.dt_limit, dt)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   for (const std::string &line : stations.ambiguities()) PetscCall(PetscPrintf(comm, "  %s\n", line.c_str()));
   PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", limit.dt_limit, limit.governing.c_str(), limit.dt_cfl));
   // dt_bulk, not dt_limit: the free-field columns or the pore-pressure diffusion may set the limit lower without any interface.
@@ -184,7 +184,7 @@ PetscErrorCode ReportSetup(const model::Elastodynamics &model, const model::Stab
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ReportEnd(const model::Elastodynamics &model, const model::EnergyLedger &ledger, const std::vector<std::string> &files, PetscInt steps, double wall,
+PetscErrorCode ReportEnd(const problem::Elastodynamics &model, const problem::EnergyLedger &ledger, const std::vector<std::string> &files, PetscInt steps, double wall,
                          const std::string &output_dir) {
   MPI_Comm comm = model.comm;
   PetscFunctionBeginUser;

@@ -14,13 +14,13 @@
 #include "slipwave/app/stop_request.hpp"
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/core/options_check.hpp"
+#include "slipwave/input/record_files_check.hpp"
 #include "slipwave/io/stations.hpp"
-#include "slipwave/model/elastodynamics.hpp"
-#include "slipwave/model/energy_ledger.hpp"
-#include "slipwave/model/geostatic.hpp"
-#include "slipwave/model/pore_pressure.hpp"
-#include "slipwave/model/record_files_check.hpp"
-#include "slipwave/model/stable_step.hpp"
+#include "slipwave/porous/pore_pressure.hpp"
+#include "slipwave/problem/elastodynamics.hpp"
+#include "slipwave/problem/energy_ledger.hpp"
+#include "slipwave/problem/geostatic.hpp"
+#include "slipwave/problem/stable_step.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 namespace slipwave::app {
@@ -45,11 +45,11 @@ struct RunOptions {
 
 struct Run {
   RunOptions              opt;
-  model::Elastodynamics   model;
-  model::StableStep       step;
-  model::TimeStepOptions  time_step;
-  model::EnergyLedger     ledger;
-  model::GeostaticOptions geostatic;
+  problem::Elastodynamics   model;
+  problem::StableStep       step;
+  problem::TimeStepOptions  time_step;
+  problem::EnergyLedger     ledger;
+  problem::GeostaticOptions geostatic;
   io::Stations            stations;
   RegionVelocities        region_velocity;
   OutputFrames            frames;
@@ -99,7 +99,7 @@ PetscErrorCode readRunOptions(MPI_Comm comm, RunOptions *o) {
 // The per-step monitor: its duties, one function each, in the order they run.
 
 // The interfaces' stored and dissipated energy summed (collective).
-PetscErrorCode sumInterfaceTotals(const model::Elastodynamics &model, interface::InterfaceTotals *totals) {
+PetscErrorCode sumInterfaceTotals(const problem::Elastodynamics &model, interface::InterfaceTotals *totals) {
   PetscFunctionBeginUser;
   for (const auto &iface : model.interfaces) {
     interface::InterfaceTotals one;
@@ -176,11 +176,11 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   const bool last = t >= r->max_time * (1 - 1e-12);
   // Evaluated at every output time too, so each frame has its energy row.
   const bool evaluate = last || step % r->opt.energy_interval == 0 || r->frames.Due(step, t, last);
-  PetscCall(model::EnergyLedgerUpdate(&r->model, ts, h, evaluate, &r->ledger));
+  PetscCall(problem::EnergyLedgerUpdate(&r->model, ts, h, evaluate, &r->ledger));
   if (r->ledger.evaluated) PetscCall(DivergenceGuard(r->model, r->ledger, r->opt.energy_growth_limit, r->step, h, step, t, u, v, a));
   PetscCall(r->stations.Sample(r->model.dm, t, u, v, a));
   if (r->model.pore) {
-    PetscCall(model::PorePressureTotal(r->model.pore));
+    PetscCall(porous::PorePressureTotal(r->model.pore));
     PetscCall(r->stations.SamplePressure(r->model.pore->pdm, r->model.pore->p_total, r->model.pore->p));
   }
   if (r->ledger.evaluated) PetscCall(appendEnergyRow(r, step, t));
@@ -203,16 +203,16 @@ PetscErrorCode setUp(MPI_Comm comm, Run *r) {
   PetscBool help;
   PetscCall(PetscOptionsHasHelp(nullptr, &help));
   // The input files before anything is written or built (a malformed record fails in a second).
-  PetscCall(model::RecordFilesCheck(comm));
+  PetscCall(input::RecordFilesCheck(comm));
   PetscCall(io::StationFileCheck(comm));
   if (!help) PetscCall(OutputDirPrepare(comm, {r->opt.output_dir, (bool)r->opt.overwrite, !r->opt.dry_run, r->opt.restart}));
   if (r->opt.restart[0]) PetscCall(CheckpointVerify(comm, r->opt.restart));
-  PetscCall(model::TimeStepOptionsRead(comm, &r->time_step));
-  PetscCall(model::ElastodynamicsCreate(comm, &r->model));
-  PetscCall(model::StableStepCompute(&r->model, &r->step));
+  PetscCall(problem::TimeStepOptionsRead(comm, &r->time_step));
+  PetscCall(problem::ElastodynamicsCreate(comm, &r->model));
+  PetscCall(problem::StableStepCompute(&r->model, &r->step));
   PetscCall(r->stations.Setup(r->model.dm, r->model.bulk, r->model.mesh));
   PetscCall(RegionVelocitiesRead(comm, r->model.dim, r->model.materials, &r->region_velocity));
-  PetscCall(model::GeostaticOptionsRead(comm, &r->geostatic));
+  PetscCall(problem::GeostaticOptionsRead(comm, &r->geostatic));
   PetscFunctionReturn(0);
 }
 
@@ -226,9 +226,9 @@ PetscErrorCode createTimeStepper(Run *r, TS *out) {
   PetscCall(TSSetMaxSteps(ts, PETSC_MAX_INT));
   PetscCall(TSSetExactFinalTime(ts, TS_EXACTFINALTIME_MATCHSTEP));
   PetscCall(TSSetFromOptions(ts));
-  PetscCall(model::TimeStepChoose(ts, r->step, r->time_step, !r->model.interfaces.empty()));
+  PetscCall(problem::TimeStepChoose(ts, r->step, r->time_step, !r->model.interfaces.empty()));
   PetscCall(TSGetMaxTime(ts, &r->max_time));
-  PetscCall(model::ElastodynamicsSetUpTS(&r->model, ts));
+  PetscCall(problem::ElastodynamicsSetUpTS(&r->model, ts));
   *out = ts;
   PetscFunctionReturn(0);
 }
@@ -250,11 +250,11 @@ PetscErrorCode resumeFromCheckpoint(Run *r, TS ts, Vec u, Vec v) {
 PetscErrorCode setInitialState(Run *r, TS ts, Vec u, Vec v) {
   PetscFunctionBeginUser;
   if (r->geostatic.enabled) {
-    model::GeostaticReport g;
+    problem::GeostaticReport g;
     PetscReal              dt_geo;
     PetscCall(TSGetTimeStep(ts, &dt_geo));
-    PetscCall(model::GeostaticStage(&r->model, r->geostatic, dt_geo, &g));
-    PetscCall(PetscPrintf(r->model.comm, "%s\n", model::GeostaticReportLine(r->geostatic, g).c_str()));
+    PetscCall(problem::GeostaticStage(&r->model, r->geostatic, dt_geo, &g));
+    PetscCall(PetscPrintf(r->model.comm, "%s\n", problem::GeostaticReportLine(r->geostatic, g).c_str()));
   }
   PetscCall(InitialVelocitySet(r->model.dm, r->model.bulk, r->model.bc.free_mask, r->opt.initial_velocity, r->region_velocity, v));
   PetscCall(TS2SetSolution(ts, u, v));
@@ -341,9 +341,9 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
   if (r->opt.dry_run || help) PetscCall(PetscPrintf(comm, "%s: stopping before the first step\n", help ? "-help" : "dry run"));
   else PetscCall(solve(r, ts));
   PetscCall(TSDestroy(&ts));
-  PetscCall(model::GeostaticOptionsDestroy(&r->geostatic));
+  PetscCall(problem::GeostaticOptionsDestroy(&r->geostatic));
   PetscCall(r->stations.Destroy());
-  PetscCall(model::ElastodynamicsDestroy(&r->model));
+  PetscCall(problem::ElastodynamicsDestroy(&r->model));
   delete r;
   PetscFunctionReturn(0);
 }

@@ -1,11 +1,11 @@
 // slipwave: explicit finite elements for seismic soil-structure interaction.
 #include <petscsys.h>
 
+#include "slipwave/app/simulation.hpp"
 #include "slipwave/core/errors.hpp"
 #include "slipwave/core/option_files.hpp"
 #include "slipwave/core/option_rules.hpp"
 #include "slipwave/core/options_check.hpp"
-#include "slipwave/app/simulation.hpp"
 
 static const char help[] = "slipwave: explicit elastodynamics on PETSc for seismic soil-structure interaction.\n"
                            "Options come from the command line and option files (-options_file scene.yaml).\n";

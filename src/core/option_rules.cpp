@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -104,7 +105,7 @@ const Rule kRules[] = {
   {"-input_amplitude",         Kind::Real, 1, 1, magnitude(1e3), "|v| <= 1e3 m/s"},
   {"-input_record",            Kind::FileIfThere, 1, 1, kAny, "a readable .csv or .at2 file"},
   {"-drm_amplitude",           Kind::Real, 1, 1, magnitude(1e3), "|v| <= 1e3 m/s"},
-  // every history (model/time_function: -input_, -drm_, -bc_<b>_, -point_force_<n>_,
+  // every history (input/time_function: -input_, -drm_, -bc_<b>_, -point_force_<n>_,
   // -body_force_, -structure_load_): only they have options with these endings
   {"-*_amplitude",             Kind::Real, 1, 1, magnitude(1e6), "|amplitude| <= 1e6 (m/s for a boundary velocity, a factor on a load)"},
   {"-*_f0",                    Kind::Real, 1, 1, aboveZero(1e4), "0 < f0 <= 1e4 Hz"},
@@ -114,7 +115,7 @@ const Rule kRules[] = {
   {"-*_record",                Kind::FileIfThere, 1, 1, kAny, "a readable .csv (or, for a velocity, .at2) file"},
   {"-*_record_scale",          Kind::Real, 1, 1, magnitude(1e6), "a factor other than 0 with |factor| <= 1e6"},
   {"-*_record_pga",            Kind::Real, 1, 1, magnitude(10), "0 < pga <= 10 g"},
-  // DRM (model/drm checks the angle, the offset and the exact count of -drm_box)
+  // DRM (input/drm checks the angle, the offset and the exact count of -drm_box)
   {"-drm_azimuth",             Kind::Real, 1, 1, magnitude(360), "-360 <= azimuth <= 360 deg"},
   {"-drm_box",                 Kind::Real, 1, 5, magnitude(1e8), "xmin,xmax,ymin (2D) or xmin,xmax,ymin,ymax,zmin (3D) with |x| <= 1e8 m"},
   {"-drm_offset",              Kind::Int,  1, 1, magnitude(1e6), "1 to 1e6 cells"},
@@ -138,6 +139,8 @@ const Rule kRules[] = {
   {"-interface_*_e_ini",       Kind::Real, 1, 1, magnitude(1e3), "0 <= e_ini <= 1e3 m"},
   {"-interface_*_tensile_strength", Kind::Real, 1, 1, magnitude(1e12), "0 <= tensile_strength <= c/tan(phi), at most 1e12 Pa"},
   {"-interface_*_sigma_N0",    Kind::Real, 1, 1, magnitude(1e12), "|sigma_N0| <= 1e12 Pa (compression < 0)"},
+  {"-interface_*_penalty_rule", Kind::Choice, 1, 1, kAny, "physical, mesh (how E, G = auto are set: from penalty_length [m], or from the cell size)"},
+  {"-interface_*_penalty_length", Kind::Real, 1, 1, aboveZero(1e6), "0 < L <= 1e6 m"},
   {"-interface_*_penalty_factor", Kind::Real, 1, 1, aboveZero(1e6), "0 < factor <= 1e6"},
   {"-interface_*_contact_damping", Kind::Real, 1, 1, magnitude(1e3), "0 <= ratio <= 1 (fraction of critical)"},
   // saturated regions (physics/biot checks the signs and the relations; these bound the magnitudes)
@@ -290,6 +293,36 @@ bool IsSafeFileName(const std::string &name) {
   return true;
 }
 
+namespace {
+
+bool endsWith(const std::string &s, const char *tail) {
+  const std::string t(tail);
+  return s.size() >= t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
+}
+
+// An interface's penalty options that its rule does not read: -interface_<n>_penalty_length
+// belongs to the rule physical, _penalty_factor to mesh (the default). Checked here, with the
+// values, so the mistake stops before the mesh is built. given: option (with "-") -> value.
+PetscErrorCode checkPenaltyRules(MPI_Comm comm, const std::map<std::string, std::string> &given) {
+  PetscFunctionBeginUser;
+  for (const auto &[option, value] : given) {
+    const bool length = endsWith(option, "_penalty_length"), factor = endsWith(option, "_penalty_factor");
+    if (option.rfind("-interface_", 0) != 0 || !(length || factor)) continue;
+    const std::string pre  = option.substr(1, option.size() - 1 - std::string("penalty_length").size()); // "interface_<n>_" (both tails 14 long)
+    const auto        rule = given.find("-" + pre + "penalty_rule");
+    const bool        physical = rule != given.end() && rule->second == "physical";
+    PetscCheck(!(length && !physical), comm, PETSC_ERR_USER_INPUT,
+               "-%spenalty_length = %s with -%spenalty_rule mesh; allowed: penalty_length with penalty_rule physical only (mesh uses penalty_factor)", pre.c_str(),
+               value.c_str(), pre.c_str());
+    PetscCheck(!(factor && physical), comm, PETSC_ERR_USER_INPUT,
+               "-%spenalty_factor = %s with -%spenalty_rule physical; allowed: penalty_factor with penalty_rule mesh only (physical uses penalty_length [m])",
+               pre.c_str(), value.c_str(), pre.c_str());
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
 PetscErrorCode OptionsValidate(MPI_Comm comm) {
   PetscInt n = 0;
   char   **names = nullptr, **values = nullptr;
@@ -297,9 +330,14 @@ PetscErrorCode OptionsValidate(MPI_Comm comm) {
   // Before any module has read its options, every option given is still "left".
   PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
   PetscErrorCode ierr = 0;
-  for (PetscInt i = 0; i < n && !ierr; ++i) ierr = checkOne(comm, std::string("-") + names[i], values[i]);
+  std::map<std::string, std::string> given;
+  for (PetscInt i = 0; i < n && !ierr; ++i) {
+    ierr = checkOne(comm, std::string("-") + names[i], values[i]);
+    given[std::string("-") + names[i]] = values[i] ? values[i] : "";
+  }
   PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
   PetscCall(ierr);
+  PetscCall(checkPenaltyRules(comm, given));
   PetscFunctionReturn(0);
 }
 

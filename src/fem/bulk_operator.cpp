@@ -7,10 +7,10 @@
 #include <unordered_map>
 
 #include "slipwave/fem/geometry_key.hpp"
-#include "slipwave/fem/gll_basis.hpp"
 #include "slipwave/mesh/labels.hpp"
 #include "slipwave/mesh/spectral_layout.hpp"
 #include "slipwave/mesh/vertex_coordinates.hpp"
+#include "slipwave/numerics/gll_basis.hpp"
 
 namespace slipwave::fem {
 namespace {
@@ -368,8 +368,8 @@ void BulkOperator::cellStress(const PetscScalar *u, PetscScalar *stress) const {
   if (degree_ > 1) {
     // The sub-cell's centre in the element's reference coordinates: the mean of its corner
     // GLL points along each direction.
-    double x[kMaxSpectralDegree + 1], w[kMaxSpectralDegree + 1], sigma[kStressComponents];
-    gllPointsWeights(degree_, x, w);
+    double x[numerics::kMaxSpectralDegree + 1], w[numerics::kMaxSpectralDegree + 1], sigma[kStressComponents];
+    numerics::gllPointsWeights(degree_, x, w);
     for (PetscInt c = 0; c < ncell_; ++c) {
       PetscInt pos = cell_position_[c];
       double   xi[3];
@@ -391,6 +391,21 @@ void BulkOperator::cellStress(const PetscScalar *u, PetscScalar *stress) const {
       stress[c * kStressComponents + k] = s;
     }
   }
+}
+
+PetscErrorCode BulkStiffnessRowBounds(DM dm, const BulkOperator &bulk, Vec rows) {
+  Vec          local;
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(dm, &local));
+  PetscCall(VecZeroEntries(local));
+  PetscCall(VecGetArray(local, &a));
+  bulk.addStiffnessRowBounds(a);
+  PetscCall(VecRestoreArray(local, &a));
+  PetscCall(VecZeroEntries(rows));
+  PetscCall(DMLocalToGlobal(dm, local, ADD_VALUES, rows));
+  PetscCall(DMRestoreLocalVector(dm, &local));
+  PetscFunctionReturn(0);
 }
 
 } // namespace slipwave::fem

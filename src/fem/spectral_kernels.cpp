@@ -4,8 +4,8 @@
 #include <cmath>
 #include <vector>
 
-#include "slipwave/fem/gll_basis.hpp"
 #include "slipwave/fem/spectral_force_kernel.hpp"
+#include "slipwave/numerics/gll_basis.hpp"
 
 namespace slipwave::fem {
 namespace {
@@ -14,8 +14,8 @@ namespace {
 struct Gll1D {
   double x[kMaxSpectralNodes1D], w[kMaxSpectralNodes1D], D[kMaxSpectralNodes1D * kMaxSpectralNodes1D];
   explicit Gll1D(int p) {
-    gllPointsWeights(p, x, w);
-    lagrangeDerivativeMatrix(p, x, D);
+    numerics::gllPointsWeights(p, x, w);
+    numerics::lagrangeDerivativeMatrix(p, x, D);
   }
 };
 
@@ -245,7 +245,7 @@ double spectralElementEigenBound(int dim, int p, const double *wdet, const doubl
 void spectralBasisValues(int dim, int p, const double *xi, double *N) {
   const Gll1D g(p);
   double      l[3][kMaxSpectralNodes1D];
-  for (int k = 0; k < dim; ++k) lagrangeValues(p, g.x, xi[k], l[k]);
+  for (int k = 0; k < dim; ++k) numerics::lagrangeValues(p, g.x, xi[k], l[k]);
   const int n1 = p + 1, nz = dim == 3 ? n1 : 1;
   for (int i2 = 0; i2 < nz; ++i2)
     for (int i1 = 0; i1 < n1; ++i1)
@@ -256,7 +256,7 @@ bool spectralStress(int dim, int p, const double *coords, const LameParameters &
   const Gll1D g(p);
   double      l[3][kMaxSpectralNodes1D], dl[3][kMaxSpectralNodes1D];
   for (int k = 0; k < dim; ++k) {
-    lagrangeValues(p, g.x, xi[k], l[k]);
+    numerics::lagrangeValues(p, g.x, xi[k], l[k]);
     lagrangeDerivatives(p, g.x, xi[k], dl[k]);
   }
   const int n1 = p + 1, nz = dim == 3 ? n1 : 1;

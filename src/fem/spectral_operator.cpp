@@ -6,8 +6,8 @@
 #include <unordered_map>
 
 #include "slipwave/fem/geometry_key.hpp"
-#include "slipwave/fem/gll_basis.hpp"
 #include "slipwave/fem/spectral_force_kernel.hpp"
+#include "slipwave/numerics/gll_basis.hpp"
 
 namespace slipwave::fem {
 namespace {
@@ -91,8 +91,8 @@ ApplyFn applyOfDegree(PetscInt p) {
 PetscErrorCode SpectralOperator::Setup(PetscInt dim, PetscInt degree, PetscInt nelem, const double *coords, const PetscInt *node_offset, const PetscInt *region,
                                        const std::vector<RegionMaterial> &materials) {
   PetscFunctionBeginUser;
-  PetscCheck((dim == 2 || dim == 3) && degree >= 1 && degree <= kMaxSpectralDegree, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "spectral elements: dimension %" PetscInt_FMT " degree %" PetscInt_FMT "; allowed: dimension 2 or 3, degree 1 to %d", dim, degree, kMaxSpectralDegree);
+  PetscCheck((dim == 2 || dim == 3) && degree >= 1 && degree <= numerics::kMaxSpectralDegree, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+             "spectral elements: dimension %" PetscInt_FMT " degree %" PetscInt_FMT "; allowed: dimension 2 or 3, degree 1 to %d", dim, degree, numerics::kMaxSpectralDegree);
   dim_ = dim, degree_ = degree, nelem_ = nelem, nq_ = spectralNodeCount((int)dim, (int)degree);
   materials_ = materials;
   node_offset_.assign(node_offset, node_offset + (size_t)nelem * nq_);
@@ -100,8 +100,8 @@ PetscErrorCode SpectralOperator::Setup(PetscInt dim, PetscInt degree, PetscInt n
   coords_.assign(coords, coords + (size_t)nelem * nq_ * dim);
   double x[kMaxSpectralNodes1D], w[kMaxSpectralNodes1D];
   D_.resize((degree + 1) * (degree + 1));
-  gllPointsWeights((int)degree, x, w);
-  lagrangeDerivativeMatrix((int)degree, x, D_.data());
+  numerics::gllPointsWeights((int)degree, x, w);
+  numerics::lagrangeDerivativeMatrix((int)degree, x, D_.data());
 
   double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   for (size_t a = 0; a < (size_t)nelem * nq_; ++a)

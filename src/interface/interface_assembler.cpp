@@ -37,7 +37,7 @@ void tangentBasis(PetscInt dim, const double *n, double *t) {
 
 // pore: the pore pressure at each pair's soil node (saturated soil side), or null.
 template <int Dim>
-double updatePairs(const physics::InterfaceLaw &law, const mesh::InterfacePairs &pairs, const double *tangent, std::vector<physics::InterfaceState<Dim>> &states,
+double updatePairs(const physics::InterfaceLaw &law, const meshing::InterfacePairs &pairs, const double *tangent, std::vector<physics::InterfaceState<Dim>> &states,
                    std::vector<double> &jump_prev, const PetscScalar *pu, const PetscScalar *pore, PetscScalar *pf) {
   constexpr int NT = Dim - 1;
   double        max_drift = 0;
@@ -73,7 +73,7 @@ double updatePairs(const physics::InterfaceLaw &law, const mesh::InterfacePairs 
 }
 
 template <int Dim>
-void totalsOf(const physics::InterfaceLaw &law, const mesh::InterfacePairs &pairs, const std::vector<physics::InterfaceState<Dim>> &states, InterfaceTotals *t) {
+void totalsOf(const physics::InterfaceLaw &law, const meshing::InterfacePairs &pairs, const std::vector<physics::InterfaceState<Dim>> &states, InterfaceTotals *t) {
   for (size_t p = 0; p < states.size(); ++p) {
     const auto &s = states[p];
     t->stored += pairs.area[p] * physics::detail::storedEnergy<Dim>(law, s);
@@ -87,7 +87,7 @@ void totalsOf(const physics::InterfaceLaw &law, const mesh::InterfacePairs &pair
 // opening w_N, slip vector (tangential jump in x,y,z), sigma_N, sigma_T vector (x,y,z),
 // plastic opening, accumulated slip, status (0 stick, 1 slip, 2 open), dissipation [J/m^2].
 template <int Dim>
-void fieldsOf(const mesh::InterfacePairs &pairs, const double *tangent, const std::vector<physics::InterfaceState<Dim>> &states, const std::vector<double> &jump,
+void fieldsOf(const meshing::InterfacePairs &pairs, const double *tangent, const std::vector<physics::InterfaceState<Dim>> &states, const std::vector<double> &jump,
               const std::vector<double> &pore, std::vector<double> *out) {
   constexpr int NT = Dim - 1;
   for (size_t p = 0; p < states.size(); ++p) {
@@ -124,7 +124,7 @@ std::vector<std::string> InterfaceAssembler::pairFieldNames() const {
   return names;
 }
 
-PetscErrorCode InterfaceAssembler::Setup(MPI_Comm comm, PetscInt dim, const mesh::InterfaceSpec &spec, const mesh::InterfacePairs &pairs,
+PetscErrorCode InterfaceAssembler::Setup(MPI_Comm comm, PetscInt dim, const meshing::InterfaceSpec &spec, const meshing::InterfacePairs &pairs,
                                          const physics::InterfaceParams &params, double sigma_N0, double contact_damping, Vec mass) {
   PetscFunctionBeginUser;
   comm_   = comm;
@@ -246,7 +246,7 @@ namespace {
 // Normal dashpot of each closed pair on the jump rate (structure minus soil) along n:
 // +A sigma_d n on the soil node, -A sigma_d n on the structure node, like the spring.
 template <int Dim>
-void dampPairs(const mesh::InterfacePairs &pairs, const std::vector<double> &dashpot, const std::vector<physics::InterfaceState<Dim>> &states, const PetscScalar *pv,
+void dampPairs(const meshing::InterfacePairs &pairs, const std::vector<double> &dashpot, const std::vector<physics::InterfaceState<Dim>> &states, const PetscScalar *pv,
                PetscScalar *pf) {
   for (size_t p = 0; p < states.size(); ++p) {
     const double *n      = &pairs.normal[p * Dim];

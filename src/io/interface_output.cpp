@@ -24,7 +24,7 @@ PetscErrorCode pairVector(MPI_Comm comm, PetscInt npairs, PetscInt width, Vec *v
 
 PetscErrorCode InterfaceOutput::Open(MPI_Comm comm, PetscInt dim, const interface::InterfaceAssembler &iface, const std::string &dir,
                                      const std::vector<std::pair<PetscInt, PetscReal>> *previous) {
-  const mesh::InterfacePairs &pairs = iface.pairs();
+  const meshing::InterfacePairs &pairs = iface.pairs();
   PetscFunctionBeginUser;
   PetscCall(pairVector(comm, pairs.n_global, dim, &geometry_));
   std::vector<PetscInt> rows(pairs.id.size() * dim);
@@ -59,7 +59,7 @@ PetscErrorCode InterfaceOutput::Open(MPI_Comm comm, PetscInt dim, const interfac
 }
 
 PetscErrorCode InterfaceOutput::fill(const interface::InterfaceAssembler &iface) {
-  const mesh::InterfacePairs &pairs = iface.pairs();
+  const meshing::InterfacePairs &pairs = iface.pairs();
   std::vector<double>         values;
   int                         per_pair;
   PetscFunctionBeginUser;

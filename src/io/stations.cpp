@@ -21,6 +21,7 @@
 #include "slipwave/core/option_rules.hpp"
 #include "slipwave/core/options_check.hpp"
 #include "slipwave/fem/spectral_kernels.hpp"
+#include "slipwave/io/whole_write.hpp"
 #include "slipwave/mesh/spectral_layout.hpp"
 
 namespace slipwave::io {
@@ -70,7 +71,7 @@ PetscErrorCode readStationFile(MPI_Comm comm, const char *file, PetscInt dim, st
 // Degree p > 1: the weights of the station at x on the nodes of the element holding sub-cell
 // `cell`, so the record has the element's order, not the sub-cell's linear interpolation.
 // The element's reference coordinates come from its Q1 corner map, which is exact: every GLL
-// node lies on it (mesh/spectral_subdivision); the weights are the tensor Lagrange basis on
+// node lies on it (meshing/spectral_subdivision); the weights are the tensor Lagrange basis on
 // its (p+1)^dim GLL nodes (at a node: 1 there, 0 elsewhere, to round-off).
 PetscErrorCode elementWeights(DM dm, const fem::BulkOperator &bulk, PetscInt cell, const double *x, std::vector<PetscInt> *offsets, std::vector<double> *weights) {
   // The element kernels' corner order (cyclic, fem/element_kernels.hpp) as lexicographic
@@ -89,7 +90,7 @@ PetscErrorCode elementWeights(DM dm, const fem::BulkOperator &bulk, PetscInt cel
   }
   PetscCall(vc.Close());
   // The point lies in one of the element's sub-cells, hence in the element.
-  PetscCheck(fem::referenceCoordinates(dim == 2 ? fem::CellShape::Quad4 : fem::CellShape::Hex8, corners, x, xi, 1e-8), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+  PetscCheck(numerics::referenceCoordinates(dim == 2 ? numerics::CellShape::Quad4 : numerics::CellShape::Hex8, corners, x, xi, 1e-8), PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "station: no reference coordinates in element %" PetscInt_FMT " although its sub-cell %" PetscInt_FMT " holds the point", element, cell);
   weights->resize(nq);
   fem::spectralBasisValues((int)dim, (int)p, xi, weights->data());
@@ -111,12 +112,12 @@ PetscErrorCode StationFileCheck(MPI_Comm comm) {
   // The built-in box's dimension is known from the options (range-checked already); a Gmsh
   // file's only once it is read.
   const auto     mesh_dim = given.find("mesh_dim");
-  const PetscInt dim      = given.count("mesh_file") ? 0 : mesh_dim != given.end() ? std::atoi(mesh_dim->second.c_str()) : mesh::MeshDescription{}.dim;
+  const PetscInt dim      = given.count("mesh_file") ? 0 : mesh_dim != given.end() ? std::atoi(mesh_dim->second.c_str()) : meshing::MeshDescription{}.dim;
   PetscCall(readStationFile(comm, file->second.c_str(), dim, &names, &coords));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const mesh::MeshDescription &mesh) {
+PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const meshing::MeshDescription &mesh) {
   MPI_Comm  comm = PetscObjectComm((PetscObject)dm);
   const char *const sides[] = {"structure", "soil"};
   PetscInt          side = 0; // index in sides[]
@@ -148,7 +149,7 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const mesh:
   PetscMPIInt rank, size;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCallMPI(MPI_Comm_size(comm, &size));
-  const fem::CellShape shape = bulk.shape();
+  const numerics::CellShape shape = bulk.shape();
   const PetscInt       nen   = bulk.nodesPerCell();
   const size_t nif = mesh.interfaces.size();
   for (size_t s = 0; s < names_.size(); ++s) {
@@ -168,7 +169,7 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const mesh:
         inside           = x[d] >= lo - tol && x[d] <= hi + tol;
       }
       double xi[3];
-      if (inside && fem::referenceCoordinates(shape, xc, x, xi, 1e-8)) {
+      if (inside && numerics::referenceCoordinates(shape, xc, x, xi, 1e-8)) {
         holding.push_back(c);
         xis.insert(xis.end(), xi, xi + 3);
       }
@@ -218,7 +219,7 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const mesh:
       l.station = (PetscInt)s;
       if (bulk.degree() > 1) PetscCall(elementWeights(dm, bulk, found, x, &l.offsets, &l.shape));
       else {
-        fem::shapeFunctions(shape, xi, N);
+        numerics::shapeFunctions(shape, xi, N);
         for (PetscInt a = 0; a < nen; ++a) {
           l.offsets.push_back(bulk.cellNodeOffset(found, a));
           l.shape.push_back(N[a]);
@@ -267,7 +268,7 @@ PetscErrorCode Stations::SamplePressure(DM pdm, Vec p_total, Vec p_excess) {
     PetscCall(DMGlobalToLocal(pdm, globals[k], INSERT_VALUES, pressure_local_[k]));
     PetscCall(VecGetArrayRead(pressure_local_[k], &arr[k]));
   }
-  // The pressure layout has one dof where the displacement has dim_ (model/node_fields.hpp).
+  // The pressure layout has one dof where the displacement has dim_ (fem/node_fields.hpp).
   for (Local &l : local_)
     for (int k = 0; k < 2; ++k) {
       double s = 0;
@@ -401,19 +402,23 @@ PetscErrorCode Stations::Flush(MPI_Comm comm, const std::string &dir, bool last)
   const char *axes = "xyz";
   for (size_t s = 0; s < names_.size(); ++s) {
     const std::string path = dir + "/stations/" + names_[s] + ".csv";
-    FILE             *fp   = std::fopen(path.c_str(), first ? "w" : "a");
-    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", path.c_str());
+    std::string       text;
+    char              cell[32];
     if (first) {
-      std::fprintf(fp, "t");
+      text = "t";
       for (const char *q : {"u", "v", "a"})
-        for (PetscInt d = 0; d < dim_; ++d) std::fprintf(fp, ",%s_%c", q, axes[d]);
-      std::fprintf(fp, has_pressure_ ? ",p,p_excess\n" : "\n");
+        for (PetscInt d = 0; d < dim_; ++d) text += std::string(",") + q + "_" + axes[d];
+      text += has_pressure_ ? ",p,p_excess\n" : "\n";
     }
     for (size_t r = 0; r + row <= fresh[s].size(); r += row) {
-      for (int k = 0; k < row; ++k) std::fprintf(fp, k ? ",%.17g" : "%.17g", fresh[s][r + k]);
-      std::fprintf(fp, "\n");
+      for (int k = 0; k < row; ++k) {
+        std::snprintf(cell, sizeof cell, k ? ",%.17g" : "%.17g", fresh[s][r + k]);
+        text += cell;
+      }
+      text += '\n';
     }
-    PetscCheck(std::fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s", path.c_str());
+    // One write for the flush's rows: a kill leaves the CSV ending at an output time.
+    PetscCheck(AppendWhole(path, text, first), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s: %s", path.c_str(), std::strerror(errno));
   }
   // stations.h5 is never appended in place: an HDF5 file cut by a kill in the middle of a write
   // can be unreadable as a whole. A spare copy, one flush behind, takes the last two flushes'

@@ -1,14 +1,14 @@
 #include "slipwave/mesh/spectral_face_weights.hpp"
 
-#include "slipwave/fem/gll_basis.hpp"
+#include "slipwave/numerics/gll_basis.hpp"
 
 #include <cmath>
 
 namespace slipwave::mesh {
 
 double gllFaceNodeWeight(int dim, int p, const double *X, int I, int J) {
-  double xi[fem::kMaxSpectralDegree + 1], wq[fem::kMaxSpectralDegree + 1];
-  fem::gllPointsWeights(p, xi, wq);
+  double xi[numerics::kMaxSpectralDegree + 1], wq[numerics::kMaxSpectralDegree + 1];
+  numerics::gllPointsWeights(p, xi, wq);
   const auto share = [p](int i) { return (i == 0 || i == p) ? 1.0 : 2.0; };
   if (dim == 2) { // straight side: |dx/dxi| = L/2
     const double dx = X[2] - X[0], dy = X[3] - X[1];

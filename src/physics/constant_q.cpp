@@ -1,6 +1,6 @@
 #include "slipwave/physics/constant_q.hpp"
 
-#include "slipwave/physics/dense_solve.hpp"
+#include "slipwave/numerics/dense_solve.hpp"
 
 #include <cmath>
 
@@ -28,7 +28,7 @@ ConstantQModel constantQFit(double damping_ratio, double f_min, double f_max, in
     }
   }
   model.weight.assign(n, 0.0);
-  solveDense(n, ata.data(), atb.data(), model.weight.data());
+  numerics::solveDense(n, ata.data(), atb.data(), model.weight.data());
   return model;
 }
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "slipwave/physics/dense_solve.hpp"
-#include "slipwave/physics/fft.hpp"
+#include "slipwave/numerics/dense_solve.hpp"
+#include "slipwave/numerics/fft.hpp"
 
 namespace slipwave::physics {
 
@@ -120,7 +120,7 @@ std::vector<Complex> PlaneWaveLayered::amplitudes(double w) const {
         A[row * n + (j + 1) * nw + k] = -stateRow(waveOf(j + 1, k), r) * (halfspace ? Complex(1) : phase(j + 1, k, top_[j + 1]));
       if (halfspace) b[row] += stateRow(wave(N, wave_ != PlaneWaveType::P, false, w), r);
     }
-  solveDense((int)b.size(), A.data(), b.data(), b.data());
+  numerics::solveDense((int)b.size(), A.data(), b.data(), b.data());
   return b;
 }
 
@@ -158,10 +158,10 @@ PlaneWaveLayered::State PlaneWaveLayered::stateAt(const std::vector<Complex> &am
 
 PlaneWaveHistories synthesizeHistories(const PlaneWaveLayered &field, const std::vector<double> &depths, double reference_depth, const std::vector<double> &v_in,
                                        double dt) {
-  const size_t m = v_in.size(), n = fftLength(4 * std::max<size_t>(m, 1));
+  const size_t m = v_in.size(), n = numerics::fftLength(4 * std::max<size_t>(m, 1));
   std::vector<Complex> input(n, 0.0);
   std::copy(v_in.begin(), v_in.end(), input.begin());
-  fft(input, false);
+  numerics::fft(input, false);
   // The incident wave has unit amplitude at the half-space top; at reference_depth its phase
   // is e^{i w q (zr - zN)} (up-going), so dividing by it puts v_in at the reference depth.
   const double  shift = reference_depth - field.halfspaceDepth();
@@ -197,8 +197,8 @@ PlaneWaveHistories synthesizeHistories(const PlaneWaveLayered &field, const std:
       const double w = 2 * M_PI * (double)(j <= n / 2 ? (long)j : (long)j - (long)n) / ((double)n * dt);
       accel[j]       = 2 * j == n ? 0.0 : Complex(0, w) * out[k][j];
     }
-    fft(out[k], true);
-    fft(accel, true);
+    numerics::fft(out[k], true);
+    numerics::fft(accel, true);
     double *v = &h.velocity[k * m], *u = &h.displacement[k * m];
     for (size_t i = 0; i < m; ++i) v[i] = out[k][i].real();
     // Trapezoid with its Euler-Maclaurin end correction dt^2/12 (a_i - a_{i+1}): fourth order,

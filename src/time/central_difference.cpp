@@ -2,7 +2,7 @@
 
 #include <petsc/private/tsimpl.h>
 
-#include "slipwave/physics/dense_solve.hpp"
+#include "slipwave/numerics/dense_solve.hpp"
 
 #include <utility>
 #include <vector>
@@ -34,7 +34,7 @@ void solveDampedBlock(PetscInt bs, const PetscScalar *D, PetscReal s, PetscScala
     r[i] = vi[i];
     for (int j = 0; j < n; ++j) A[i * n + j] = (i == j ? 1.0 : 0.0) + s * D[i * n + j];
   }
-  physics::solveDense(n, A, r, x);
+  numerics::solveDense(n, A, r, x);
   for (int i = 0; i < n; ++i) {
     vi[i] = x[i];
     double Dv = 0;

@@ -25,7 +25,7 @@ set -eu -o pipefail
 IC="$PY tests/tools/contact_checks.py"
 opts="-mesh_box_faces 1,2 -mesh_box_upper 1,2 -regions base,block -region_block_box 0,1,1,2
  -material_base_rho 2000 -material_base_E 1e11 -material_base_nu 0 -material_block_rho 2000 -material_block_E 1e11 -material_block_nu 0
- -interfaces contact -interface_contact_regions base,block -interface_contact_phi 30 -interface_contact_penalty_factor 1e-5
+ -interfaces contact -interface_contact_regions base,block -interface_contact_phi 30 -interface_contact_penalty_rule mesh -interface_contact_penalty_factor 1e-5
  -interface_contact_sigma_N0 -19620 -constrain_components x -bc_bottom_type fixed -gravity 9.81 -initial_velocity_block 0,-0.1
  -ts_max_time 1.5 -output_fields 0 -progress_interval 1000 -station_coordinates 0.5,2 -station_names top"
 for zeta in default 0.2; do

@@ -1,7 +1,7 @@
 # Closed undamped system: a two-material 2D box and a 3D box, bottom fixed, released with a
 # uniform initial velocity, 10,000 steps. Central difference at constant step conserves the
 # shadow energy W = ½ v_{n+1/2}ᵀ M v_{n+1/2} + ½ u_nᵀ K u_{n+1} exactly in exact arithmetic
-# (the identity is derived in include/slipwave/model/energy_ledger.hpp); the ledger's balance
+# (the identity is derived in include/slipwave/problem/energy_ledger.hpp); the ledger's balance
 # error must stay at round-off: bound 1e-9 relative (issue 2).
 # SEM_DEGREE=p runs it with ceil(N / p) elements of degree p per direction for N cells
 # (tests/cases/sem_energy_closed.sh: the block region still spans whole elements).

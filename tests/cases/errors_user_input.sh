@@ -3,10 +3,10 @@
 # the option, the value and what is allowed. Cases: tests/errors/cases.txt (one per line:
 # name | extra arguments | regex). A control run with the same base options and a valid
 # material must succeed, so no case passes because of a mistake in the base command.
-# Expected messages come from the checks at their sources (src/model/materials.cpp,
-# src/mesh/mesh_builder.cpp, src/model/boundary_conditions.cpp, src/model/time_function.cpp,
+# Expected messages come from the checks at their sources (src/medium/materials.cpp,
+# src/meshing/mesh_builder.cpp, src/input/boundary_conditions.cpp, src/input/time_function.cpp,
 # src/app/simulation.cpp, src/app/initial_conditions.cpp, src/core/options_check.cpp,
-# src/model/elastodynamics.cpp); the stable limit 0.00204124 s is the Gershgorin bound the dry
+# src/problem/elastodynamics.cpp); the stable limit 0.00204124 s is the Gershgorin bound the dry
 # run of the control reports.
 # Each case runs in its own empty working directory with -output_dir inside it: afterwards
 # nothing may exist there but the output folder, the input directory must be unchanged, the

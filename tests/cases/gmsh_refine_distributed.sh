@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Gmsh files refined uniformly (-mesh_refine k, src/mesh/mesh_refinement.hpp): the coarse file
+# Gmsh files refined uniformly (-mesh_refine k, src/meshing/mesh_refinement.hpp): the coarse file
 # read, labelled, split and partitioned on rank 0, then refined on the distributed mesh
 # (-mesh_build auto/distributed), against the same coarse split refined on rank 0
 # (-mesh_build serial). The two are the same mesh up to point numbers (same cells, regions,

@@ -19,7 +19,7 @@ set -eu
 . tests/tools/lib.sh
 IC="$PY tests/tools/contact_checks.py"
 echo "== A: penalty factor 100"
-$SW -options_file config/scenes/two_bar_impact.yaml -interface_gap_penalty_factor 100 -output_fields 0 -output_dir "$WORK/a"
+$SW -options_file config/scenes/two_bar_impact.yaml -interface_gap_penalty_rule mesh -interface_gap_penalty_factor 100 -output_fields 0 -output_dir "$WORK/a"
 $IC energy-growth "$WORK/a" --max-growth 0.01 --max-balance 1e-9 --min-stored 0.1
 
 echo "== B: impedance contrast 100:1"

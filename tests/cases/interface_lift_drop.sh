@@ -27,7 +27,7 @@ IC="$PY tests/tools/contact_checks.py"
 # -energy_interval 1: the contact phase is read from energy.csv at every step.
 $SW -mesh_box_faces 1,16 -mesh_box_upper 0.125,2 -regions base,block -region_block_box 0,0.125,1,2 \
   -material_base_rho 2000 -material_base_E 1e8 -material_base_nu 0 -material_block_rho 2000 -material_block_E 1e8 -material_block_nu 0 \
-  -interfaces contact -interface_contact_regions base,block -interface_contact_phi 30 \
+  -interfaces contact -interface_contact_regions base,block -interface_contact_phi 30 -interface_contact_penalty_rule mesh \
   -constrain_components x -bc_bottom_type fixed -gravity 9.81 -initial_velocity_block 0,0.5 \
   -ts_max_time 0.3 -output_interval 0.002 -progress_interval 100 -energy_interval 1 -output_dir "$WORK" | tee "$WORK/log"
 dt=$(sed -n 's/^  time step \([0-9.e+-]*\) s = .*/\1/p' "$WORK/log")

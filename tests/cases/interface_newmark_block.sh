@@ -22,14 +22,7 @@
 # work of a constant friction force.
 set -eu
 . tests/tools/lib.sh
-$PY - "$WORK/pulse.csv" <<'PY'
-import sys
-A, g, tp = 0.4, 9.81, 0.2
-with open(sys.argv[1], "w") as f:
-    f.write("time,acceleration\n")
-    for t, a in ((0.0, A * g), (tp, A * g), (tp + 1e-9, 0.0), (2.0, 0.0)):
-        f.write(f"{t:.12e},{a:.12e}\n")
-PY
+newmark_pulse "$WORK/pulse.csv"
 $SW -options_file config/scenes/sliding_block.yaml -bc_bottom_record "$WORK/pulse.csv" -output_dir "$WORK/out" > "$WORK/run.log"
 cat "$WORK/run.log"
 $PY tests/tools/interface_checks.py newmark --out-dir "$WORK/out" --interface slide --base "$WORK/out/stations/base.csv" \

@@ -15,7 +15,7 @@ set -eu -o pipefail
 . tests/tools/lib.sh
 $SW -mesh_box_faces 1,16 -mesh_box_upper 0.125,2 -regions base,block -region_block_box 0,0.125,1,2 \
   -material_base_rho 2000 -material_base_E 1e8 -material_base_nu 0 -material_block_rho 2000 -material_block_E 1e8 -material_block_nu 0 \
-  -interfaces contact -interface_contact_regions base,block -interface_contact_phi 30 -interface_contact_c 2e4 \
+  -interfaces contact -interface_contact_regions base,block -interface_contact_phi 30 -interface_contact_penalty_rule mesh -interface_contact_c 2e4 \
   -interface_contact_tensile_strength 1e4 -interface_contact_e_ini 1e-4 \
   -constrain_components x -bc_bottom_type fixed -gravity 9.81 -initial_velocity_block 0,0.5 \
   -ts_max_time 0.08 -output_interval 0.002 -progress_interval 100 -output_dir "$WORK" > "$WORK/log"

@@ -26,7 +26,7 @@ column="-mesh_box_faces 1,140 -mesh_box_upper 1,100 -regions lower,upper -region
  -constrain_components y -ts_max_time 2 -ts_dt 1e-4 -output_fields 0 -progress_interval 100 -station_coordinates 0.5,100,0.5,25 -station_names top,below"
 $SW $column -output_dir "$WORK/ref" > "$WORK/ref.log"
 for f in 30 300; do
-  $SW $column -interfaces tie -interface_tie_regions lower,upper -interface_tie_c 1e12 -interface_tie_phi 0 -interface_tie_penalty_factor $f \
+  $SW $column -interfaces tie -interface_tie_regions lower,upper -interface_tie_c 1e12 -interface_tie_phi 0 -interface_tie_penalty_rule mesh -interface_tie_penalty_factor $f \
     -output_dir "$WORK/f$f" > "$WORK/f$f.log"
   grep "interface tie: E = " "$WORK/f$f.log"
   grep -q "^interface tie: 2 stick, 0 slip, 0 open at the end; dissipated 0 J" "$WORK/f$f.log" || { echo "FAIL: the tied interface slipped or opened"; tail -4 "$WORK/f$f.log"; exit 1; }

@@ -34,7 +34,9 @@ for run in TERM KILL TERM2; do
   echo "$run: SIG$sig $delay s after the first step: exit status $rc"
   [ "$rc" -ne 0 ] || { echo "FAIL: the run ended before SIG$sig (delay $delay s): exit 0"; exit 1; }
   if [ "$sig" = TERM ]; then
-    [ "$(grep -c '' "$WORK/$run.err")" -eq 1 ] || { echo "FAIL: SIGTERM: not one stderr line:"; cat "$WORK/$run.err"; exit 1; }
+    # mpiexec's own event loop may add "[warn] Epoll MOD(1) on fd N failed ..." as it tears
+    # down after passing the signal on (libevent, Open MPI's launcher, not slipwave's ranks).
+    [ "$(grep -vc '^\[warn\] Epoll ' "$WORK/$run.err")" -eq 1 ] || { echo "FAIL: SIGTERM: not one stderr line:"; cat "$WORK/$run.err"; exit 1; }
     grep -E "^slipwave: error: stopped by SIGTERM after step [0-9]+, t = " "$WORK/$run.err"
   fi
   $PY scripts/check_output.py "$WORK/$run"
@@ -115,7 +117,7 @@ done
 # from the writers' contract (src/io/field_writer.cpp, src/io/stations.cpp: every HDF5 file
 # written whole under a hidden ".<name>.partial" name and renamed, or swapped whole):
 # - every HDF5 file under a final name opens in h5py and all its datasets read back;
-# - hidden files are only the partial names (with MPI-IO's lock probe of one) and the spare
+# - hidden files are only the partial names (with MPI-IO's lock files of one) and the spare
 #   stations.h5;
 # - volume.xmf and interface_base.xmf pass scripts/check_output.py (every reference resolves
 #   to a dataset of its declared shape, no NaN), listing at least the first frame.
@@ -133,7 +135,7 @@ for k in 1 2 3 4 5; do
   $PY scripts/check_output.py "$WORK/K" > "$WORK/K.check"
   $PY scripts/check_output.py "$WORK/K" --grid interface_base >> "$WORK/K.check"
   $PY - "$WORK/K" "$k" "$delay" <<'PY'
-import os, sys
+import os, re, sys
 import h5py
 d, k, delay = sys.argv[1:]
 files, partial = 0, []
@@ -141,10 +143,12 @@ for folder, _, names in os.walk(d):
     for name in names:
         path = os.path.join(folder, name)
         if name.startswith("."):
-            # A partial file, the spare stations.h5, or Open MPI's MPI-IO lock probe of a partial
-            # file (ompio sharedfp "lockedfile" opens NAME.locktest.RANK and removes it when the
-            # open returns: a kill inside that open leaves it).
-            partial_probe = ".partial.locktest." in name
+            # A partial file, the spare stations.h5, or one of Open MPI's MPI-IO lock files of a
+            # partial file: ompio's sharedfp "lockedfile" opens NAME.locktest.RANK and removes it
+            # when the open returns, and keeps NAME-N-PID.lock while the file is open (seen:
+            # ".000067.h5.partial-1-31046.lock"); a kill inside that open, or while the partial
+            # file is open, leaves them. Both belong to a file that never got its final name.
+            partial_probe = ".partial.locktest." in name or re.fullmatch(r"\..+\.partial-\d+-\d+\.lock", name)
             assert name.endswith(".partial") or partial_probe or name == ".stations.h5.spare", f"unexpected hidden file {path}"
             partial.append(os.path.relpath(path, d))
         elif name.endswith(".h5"):

@@ -2,7 +2,7 @@
 # Free-field lateral sides on a saturated site (SV only). The free-field column has no pore
 # pressure: a vertically incident SV wave is pure shear (u = u_x(z)), with no volume change
 # and so no excess pore pressure, and its column motion is the dry one; the column's P chain
-# and the side dashpots take the undrained P speed (model/free_field.cpp).
+# and the side dashpots take the undrained P speed (input/free_field.cpp).
 #  1. The saturated site of config/scenes/saturated_site.yaml without gravity (so no geostatic
 #     relaxation residual separates the runs), 20 m wide, under the 2 Hz SV Ricker: with
 #     free-field sides it must move as with sides tied to each other (the exact 1D column):

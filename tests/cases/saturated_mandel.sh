@@ -15,7 +15,7 @@ set -eu
 . tests/tools/lib.sh
 SAT="-material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -material_soil_saturated -material_soil_porosity 0.4 -material_soil_hydraulic_conductivity 5e-5"
 $SW -mesh_box_faces 20,25 -mesh_box_upper 1,1.25 -regions soil,plate -region_plate_box 0,1,1,1.25 $SAT -material_plate_rho 2400 -material_plate_vp 8000 \
-  -material_plate_vs 4000 -interfaces top -interface_top_regions soil,plate -interface_top_phi 0 -interface_top_penalty_factor 100 -bc_left_type fixed \
+  -material_plate_vs 4000 -interfaces top -interface_top_regions soil,plate -interface_top_phi 0 -interface_top_penalty_rule mesh -interface_top_penalty_factor 100 -bc_left_type fixed \
   -bc_left_components x -bc_bottom_type fixed -bc_bottom_components y -bc_top_type traction -bc_top_traction 0,-1e5 -bc_right_fluid drained \
   -damping_ratio 0.24 -damping_frequencies 100,1e6 -ts_max_time 0.3 -station_coordinates 0,0.5,0.5,0.5 -station_names centre,mid -output_fields 0 \
   -progress_interval 100 -output_dir "$WORK" | grep -E "done"

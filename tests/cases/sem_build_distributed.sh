@@ -1,4 +1,4 @@
-# Spectral elements built distributed (issue 11, item 3, at p > 1; mesh/box_refinement.hpp):
+# Spectral elements built distributed (issue 11, item 3, at p > 1; meshing/box_refinement.hpp):
 # -mesh_build distributed refines the box of elements (or a coarser one) on the distributed
 # mesh, log2(p) times more for the GLL sub-cells, then moves the vertices to the GLL nodes;
 # -mesh_build serial subdivides the whole box on rank 0. The meshes are the same (sub-cells,

@@ -2,7 +2,7 @@
 # theory, Graff sec. 2.4) at element degree 4 with 4x fewer elements along the bars (100
 # elements of 0.2 m, one element 0.2 m high: contact area 0.2 m^2, 5 GLL node pairs with the
 # GLL face weights). The auto penalty at degree p is (lambda + 2 mu)(p^2 + p + 1)/(3 h_e)
-# = 1e9 x 7/0.2 = 3.5e10 Pa/m (the end-node stiffness of a GLL element, fem/gll_basis.hpp),
+# = 1e9 x 7/0.2 = 3.5e10 Pa/m (the end-node stiffness of a GLL element, numerics/gll_basis.hpp),
 # so its stable-step cost matches degree 1's (-30.4 % here, -27.3 % at p = 1). Case A also on
 # 2 ranks: the stations must agree with 1 rank to 1e-10 of the peak velocity.
 set -eu

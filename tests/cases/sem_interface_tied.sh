@@ -7,7 +7,7 @@
 # records differ from the run without the interface by at most w Z/(2K) of their peak, and
 # 10x the penalty gives 10x less (ratio within 0.8..1.25 of 10). The auto penalty at degree p
 # is K = factor x mu (p^2 + p + 1)/(3 h_e) = factor x 8e7 x 7 x 36/100 = factor x 2.016e8 Pa/m
-# (fem/gll_basis.hpp; 30 -> 6.048e9 Pa/m), checked against the log first. The interface nodes are 2
+# (numerics/gll_basis.hpp; 30 -> 6.048e9 Pa/m), checked against the log first. The interface nodes are 2
 # x 5 GLL pairs (the column is one element wide). All runs use -ts_dt 4.5e-5 s, below half the
 # stable step with the stiffer interface (9.51e-5 s), so the difference is the interface's alone.
 set -eu
@@ -18,7 +18,7 @@ column="-mesh_box_faces 1,36 -mesh_box_upper 2.7777777777777777,100 -element_deg
  -constrain_components y -ts_max_time 2 -ts_dt 4.5e-5 -output_fields 0 -progress_interval 100 -station_coordinates 0.5,100,0.5,25 -station_names top,below"
 $SW $column -output_dir "$WORK/ref" > "$WORK/ref.log"
 for f in 30 300; do
-  $SW $column -interfaces tie -interface_tie_regions lower,upper -interface_tie_c 1e12 -interface_tie_phi 0 -interface_tie_penalty_factor $f \
+  $SW $column -interfaces tie -interface_tie_regions lower,upper -interface_tie_c 1e12 -interface_tie_phi 0 -interface_tie_penalty_rule mesh -interface_tie_penalty_factor $f \
     -output_dir "$WORK/f$f" > "$WORK/f$f.log"
   grep "interface tie: E = " "$WORK/f$f.log"
   grep -q "^interface tie: 5 stick, 0 slip, 0 open at the end; dissipated 0 J" "$WORK/f$f.log" || { echo "FAIL: the tied interface slipped or opened"; tail -4 "$WORK/f$f.log"; exit 1; }
@@ -29,6 +29,6 @@ $PY tests/tools/interface_checks.py tied "$WORK/ref" --dirs-if "$WORK/f30" "$WOR
   --quantities u_x,v_x --omega "$($PY -c 'import math; print(2 * math.pi * 2.7638 * 5)')" --Z 4e5 --ratio-min 0.8 --ratio-max 1.25
 # 2 ranks (the partition cuts the column; the report says whether pairs straddle it): the
 # stations agree with 1 rank to 1e-10 of each quantity's peak.
-$MPIEXEC -n 2 $SW $column -interfaces tie -interface_tie_regions lower,upper -interface_tie_c 1e12 -interface_tie_phi 0 -interface_tie_penalty_factor 30 \
+$MPIEXEC -n 2 $SW $column -interfaces tie -interface_tie_regions lower,upper -interface_tie_c 1e12 -interface_tie_phi 0 -interface_tie_penalty_rule mesh -interface_tie_penalty_factor 30 \
   -output_dir "$WORK/f30_np2" | grep "interface tie: E = "
 $CHECK stations-equal "$WORK/f30" "$WORK/f30_np2" --names top,below --tol 1e-10

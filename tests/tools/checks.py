@@ -5,18 +5,18 @@ Each subcommand prints what it measured and exits 1 when a bound is violated.
 """
 import argparse
 import math
+import os
 import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from slipwave import RunFolder, read_csv  # noqa: E402
 
 
 def ricker_velocity(t, amplitude, f0, t0):
     a = (math.pi * f0 * (t - t0)) ** 2
     return amplitude * (1 - 2 * a) * np.exp(-a)
-
-
-def read_csv(path):
-    return np.genfromtxt(path, delimiter=",", names=True)
 
 
 def column(args):
@@ -77,16 +77,16 @@ def stations_equal(args):
     worst, worst_a = 0.0, 0.0
     tol_a = args.tol if args.tol_a is None else args.tol_a
     for name in args.names.split(","):
-        a = read_csv(f"{args.dir_a}/stations/{name}.csv")
-        b = read_csv(f"{args.dir_b}/stations/{name}.csv")
-        if a.shape != b.shape:
-            print(f"stations: {name}: {a.shape} rows vs {b.shape}")
+        a = RunFolder(args.dir_a).station(name)
+        b = RunFolder(args.dir_b).station(name)
+        if len(a) != len(b):
+            print(f"stations: {name}: {len(a)} rows vs {len(b)}")
             return 1
         # Each quantity (u, v, a) is scaled by its peak over all components: a component that
         # is zero up to round-off (u_y of a vertically incident SV wave) has no scale of its own.
         # p: the pore pressure column of saturated scenes, absent elsewhere.
         for q in ("t", "u", "v", "a", "p"):
-            cols = [c for c in a.dtype.names if c == q or c.startswith(q + "_")]
+            cols = [c for c in a.names if c == q or c.startswith(q + "_")]
             if not cols:
                 continue
             scale = max(max(np.max(np.abs(a[c])) for c in cols), 1e-300)
@@ -107,10 +107,10 @@ def energy_equal(args):
     so two values equal to round-off may print one unit of the 10th digit apart: up to 1e-9 of
     the value. That unit is allowed on top of the bound and the rest is reported."""
     a, b = read_csv(args.csv_a), read_csv(args.csv_b)
-    if a.shape != b.shape:
-        print(f"energy: {a.shape} rows vs {b.shape}")
+    if len(a) != len(b):
+        print(f"energy: {len(a)} rows vs {len(b)}")
         return 1
-    cols = [c for c in a.dtype.names if c not in ("step", "time", "balance_error", "relative_balance_error")]
+    cols = [c for c in a.names if c not in ("step", "time", "balance_error", "relative_balance_error")]
     scale = max(max(np.max(np.abs(a[c])) for c in cols), 1e-300)
     worst = max(np.max(np.abs(a[c] - b[c]) - 1e-9 * np.maximum(np.abs(a[c]), np.abs(b[c]))) for c in cols) / scale
     raw = max(np.max(np.abs(a[c] - b[c])) for c in cols) / scale

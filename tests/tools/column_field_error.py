@@ -13,12 +13,13 @@ p + 1 nodes of each element along y (the GLL nodes the run wrote), integrated wi
 Gauss-Legendre rule of p + 6 points per element, finer than the GLL rule, so that the nodes'
 superconvergence does not flatter the rate."""
 import math
+import os
 import sys
 
 import numpy as np
 
-sys.path.insert(0, __file__.rsplit("/", 1)[0])
-from frames import Frames  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from slipwave import Frames  # noqa: E402
 
 
 def ricker_displacement(t, amplitude, f0, t0):

@@ -5,21 +5,20 @@ Reads the interface frames of output_dir (through interface_NAME.xmf), energy.cs
 CSVs. Each subcommand prints what it measured and exits 1 when a bound is violated.
 """
 import argparse
+import os
 import sys
 
 import numpy as np
-from frames import Frames
 
-
-def read_csv(path):
-    return np.genfromtxt(path, delimiter=",", names=True)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from slipwave import RunFolder  # noqa: E402
 
 
 def interface_frames(out_dir, name, field):
     """Frame times and values [frame, pair id, component] of one interface field, in the
     order of the XDMF temporal collection."""
-    frames = Frames(out_dir, f"interface_{name}")
-    return np.array(frames.times), np.array(frames.series(field))
+    frames = RunFolder(out_dir).interface(name)
+    return np.array(frames.times), frames.stacked([field])[field]
 
 
 def stored_total(d):
@@ -33,7 +32,7 @@ def stored_total(d):
 
 
 def energy_growth(args):
-    d = read_csv(f"{args.dir}/energy.csv")
+    d = RunFolder(args.dir).energy()
     tot = stored_total(d)
     ref = args.reference if args.reference is not None else tot[0]
     growth = np.max(tot) / ref - 1
@@ -53,7 +52,7 @@ def bar_contact(args):
     (the rows sample the step ends). The contact stress from the interface output: the mean
     sigma_N over the middle of the contact phase (the plateau of a 1D impact; central
     differences ring behind a step front, so the mean, not the peak, is compared)."""
-    d = read_csv(f"{args.dir}/energy.csv")
+    d = RunFolder(args.dir).energy()
     te, stored = d["time"], d["interface_stored"]
     contact = np.nonzero(stored > 0)[0]
     if len(contact) == 0:
@@ -102,7 +101,7 @@ def bar_contact(args):
 
 def station_window(args):
     """Mean and spread of a station column over a time window, against an expected value."""
-    d = read_csv(f"{args.dir}/stations/{args.station}.csv")
+    d = RunFolder(args.dir).station(args.station)
     w = (d["t"] >= args.t0) & (d["t"] <= args.t1)
     x = d[args.column][w]
     mean = np.mean(x)
@@ -130,7 +129,7 @@ def lift_drop(args):
     after 2 v0/g, interpenetration below the penalty's dynamic estimate. Per step from
     energy.csv: interface_stored = 1/2 E A u^2 for a uniform penetration u over the contact
     area A (the normal spring's energy; 0 while open), so u = sqrt(2 stored / (E A))."""
-    d = read_csv(f"{args.dir}/energy.csv")
+    d = RunFolder(args.dir).energy()
     t, stored = d["time"], d["interface_stored"]
     dt = t[1] - t[0]
     touching = stored > 0
@@ -161,7 +160,7 @@ def decay(args):
     rides on it), from the first window on. The damping ratio from the mean logarithmic
     decrement over the peaks, delta = ln(p_0 / p_N) / N, zeta = delta / sqrt(4 pi^2 + delta^2),
     and the damped period from the peak spacing; each against the expected value."""
-    d = read_csv(f"{args.dir}/stations/{args.station}.csv")
+    d = RunFolder(args.dir).station(args.station)
     t, x = d["t"], d[args.column]
     peaks = []
     for w in range(int(t[-1] / args.period)):

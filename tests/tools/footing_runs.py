@@ -16,8 +16,12 @@ soil's reactions are K_s (u_x, u_y, theta) and, harmonically, K_s u = F + w^2 M_
   2 x 2 (u_x, theta) block of K_s follows from both runs' equations.
 """
 import os
+import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from slipwave import RunFolder  # noqa: E402
 
 
 def ricker(t, f0, t0):
@@ -25,14 +29,11 @@ def ricker(t, f0, t0):
     return (1 - 2 * a) * np.exp(-a)
 
 
-def station(run, name):
-    return np.genfromtxt(os.path.join(run, "stations", name + ".csv"), delimiter=",", names=True)
-
-
 def spectra(run, amplitude, f0, t0, x_left, x_right, pad=4):
     """Frequencies [Hz], the Ricker load's spectrum and those of u_x, u_y at station C and of
     theta from stations L and R."""
-    L, C, R = station(run, "L"), station(run, "C"), station(run, "R")
+    folder = RunFolder(run)
+    L, C, R = folder.station("L"), folder.station("C"), folder.station("R")
     t = C["t"]
     n = pad * len(t)
     fft = lambda s: np.fft.rfft(s, n)

@@ -6,18 +6,13 @@ Each subcommand prints what it measured and exits 1 when a bound is violated.
 """
 import argparse
 import math
+import os
 import sys
 
 import numpy as np
 
-
-def read_csv(path):
-    return np.genfromtxt(path, delimiter=",", names=True)
-
-
-def last_field(out_dir, grid, field):
-    from frames import Frames
-    return Frames(out_dir, grid).field(field, -1)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from slipwave import RunFolder, read_csv  # noqa: E402
 
 
 def newmark(args):
@@ -29,7 +24,7 @@ def newmark(args):
     V = A * g * tp
     expected = V * V / (2 * g * N) * (1 - N / A)
     ok = True
-    slip = last_field(args.out_dir, f"interface_{args.interface}", "accumulated_slip").ravel()
+    slip = RunFolder(args.out_dir).interface(args.interface).field("accumulated_slip", -1).ravel()
     rel = np.abs(slip - expected) / expected
     print(f"newmark: expected permanent slip {expected:.6e} m; interface accumulated_slip {slip.min():.6e}..{slip.max():.6e} m, "
           f"largest relative error {rel.max():.3e} (bound {args.tol:.1e})")
@@ -82,10 +77,10 @@ def tied(args):
         bound = args.safety * args.omega * args.Z / (2 * K)
         worst = 0.0
         for name in args.names.split(","):
-            a = read_csv(f"{args.dir_ref}/stations/{name}.csv")
-            c = read_csv(f"{dir_if}/stations/{name}.csv")
-            if a.shape != c.shape:
-                print(f"tied: {name}: {a.shape} rows vs {c.shape}")
+            a = RunFolder(args.dir_ref).station(name)
+            c = RunFolder(dir_if).station(name)
+            if len(a) != len(c):
+                print(f"tied: {name}: {len(a)} rows vs {len(c)}")
                 return 1
             for q in args.quantities.split(","):
                 worst = max(worst, np.max(np.abs(a[q] - c[q])) / np.max(np.abs(a[q])))

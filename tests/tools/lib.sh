@@ -17,3 +17,17 @@ rm -rf "$WORK"; mkdir -p "$WORK"
 # 1D column options: 100 m of soil, rho 2000, vp 400, vs 200, Ricker f0 = 5 Hz, peak 0.1 m/s.
 COLUMN="-regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -bc_bottom_type absorbing -input_boundary bottom
  -input_stf ricker -input_f0 5 -input_t0 0.24 -input_amplitude 0.1 -ts_max_time 2.0 -output_fields 0 -progress_interval 100"
+
+# newmark_pulse FILE: the base acceleration of the Newmark sliding-block tests
+# (config/scenes/sliding_block.yaml): A = 0.4 g for tp = 0.2 s, then rest up to 2 s, as a
+# record CSV (the step written as two points 1e-9 s apart).
+newmark_pulse() {
+  $PY - "$1" <<'PY'
+import sys
+A, g, tp = 0.4, 9.81, 0.2
+with open(sys.argv[1], "w") as f:
+    f.write("time,acceleration\n")
+    for t, a in ((0.0, A * g), (tp, A * g), (tp + 1e-9, 0.0), (2.0, 0.0)):
+        f.write(f"{t:.12e},{a:.12e}\n")
+PY
+}

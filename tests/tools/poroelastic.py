@@ -9,15 +9,15 @@ Each subcommand prints what it measured and exits 1 when a bound is violated.
 """
 import argparse
 import math
+import os
 import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from slipwave import RunFolder, read_csv  # noqa: E402
+
 G_STANDARD = 9.80665
-
-
-def read_csv(path):
-    return np.genfromtxt(path, delimiter=",", names=True)
 
 
 def material(a):
@@ -51,11 +51,11 @@ def terzaghi(a):
     ok = True
     print(f"terzaghi: c_v {mat['cv']:.5g} m^2/s, loading efficiency {mat['gamma']:.5f}, p0 {p0:.6g} Pa, H {H} m")
     stations = [(name, float(depth)) for name, depth in (s.split(":") for s in a.stations.split(","))]
-    top = read_csv(f"{a.dir}/stations/{a.top}.csv")
+    top = RunFolder(a.dir).station(a.top)
     for Tv in (0.1, 0.3, 0.6):
         t = Tv * H ** 2 / mat["cv"]
         for name, depth in stations:
-            d = read_csv(f"{a.dir}/stations/{name}.csv")
+            d = RunFolder(a.dir).station(name)
             got = np.interp(t, d["t"], d["p"])
             want = terzaghi_pressure(depth, H, Tv, p0)
             err = abs(got - want) / load
@@ -85,8 +85,8 @@ def pulse(a):
     p / (rho c v_y), which is the loading efficiency for the undrained plane wave
     (sigma_yy = -rho c v_y for an upgoing wave, p = gamma (-sigma_yy))."""
     mat = material(a)
-    lo = read_csv(f"{a.dir}/stations/{a.lower}.csv")
-    up = read_csv(f"{a.dir}/stations/{a.upper}.csv")
+    lo = RunFolder(a.dir).station(a.lower)
+    up = RunFolder(a.dir).station(a.upper)
     speed_want = mat["vu"] if a.limit == "undrained" else a.vp
     vname = "v_" + a.component
     c = a.distance / delay(lo["t"], lo[vname], up[vname])
@@ -130,8 +130,7 @@ def checkerboard(a):
     points per wavelength carries: (h k)^2 / 4 <= (2 pi / 10)^2 / 4 = 0.1, times the share of
     the mixed derivative). Cells within `margin` cells of the grid edges are left out (corners
     of absorbing boundaries); every field frame after the first is checked."""
-    from frames import Frames
-    f = Frames(a.dir)
+    f = RunFolder(a.dir).volume()
     g = f.geometry
     I = np.rint((g[:, 0] - g[:, 0].min()) / a.h).astype(int)
     J = np.rint((g[:, 1] - g[:, 1].min()) / a.h).astype(int)
@@ -157,9 +156,8 @@ def geostatic(a):
     effective stress with hydrostatic pore water), within round-off of the static solve; the
     stations' total p is rho_f g (z_w - y)+, and over the dynamic stage nothing moves and the
     excess pore pressure stays zero."""
-    from frames import Frames
     g = 9.81
-    f = Frames(a.dir)
+    f = RunFolder(a.dir).volume()
     xyz, cells = f.geometry, f.topology
     yc = xyz[cells][:, :, 1].mean(axis=1)
     syy = f.field("stress", 0)[:, 4]
@@ -176,11 +174,11 @@ def geostatic(a):
     ok = err <= a.stress_tol
     print(f"geostatic: effective vertical stress against overburden - p_h: largest error {err:.2e} of the largest (bound {a.stress_tol:.0e}) over {len(yc)} cells")
     for name, y in (s.split(":") for s in a.stations.split(",")):
-        d = read_csv(f"{a.dir}/stations/{name}.csv")
+        d = RunFolder(a.dir).station(name)
         want_p = a.rho_f * g * max(0.0, a.water_table - float(y))
         err_p = np.max(np.abs(d["p"] - want_p)) / (a.rho_f * g * a.water_table)
         exc = np.max(np.abs(d["p_excess"])) / (a.rho_f * g * a.water_table)
-        vmax = max(np.max(np.abs(d[c])) for c in d.dtype.names if c.startswith("v_"))
+        vmax = max(np.max(np.abs(d[c])) for c in d.names if c.startswith("v_"))
         ok = ok and err_p <= a.stress_tol and exc <= a.stress_tol and vmax <= a.v_max
         print(f"geostatic: station {name} (y = {y} m): p {d['p'][-1]:.6g} Pa against rho_f g (z_w - y) = {want_p:.6g} Pa (error {err_p:.1e}), "
               f"excess {exc:.1e}, max |v| {vmax:.1e} m/s (bounds {a.stress_tol:.0e} of rho_f g z_w, {a.v_max:.0e} m/s)")
@@ -235,7 +233,7 @@ def mandel(a):
     ok = True
     ts = np.linspace(a.t1, a.t_end, 4000)
     for name, x in ((n.split(":")[0], float(n.split(":")[1])) for n in a.stations.split(",")):
-        d = read_csv(f"{a.dir}/stations/{name}.csv")
+        d = RunFolder(a.dir).station(name)
         got = np.interp(ts, d["t"], d["p"])
         want = np.array([p(x, t) for t in ts])
         err = np.max(np.abs(got - want)) / p0
@@ -265,16 +263,16 @@ def site(a):
       (gamma the loading efficiency): relative L2 below --p-tol."""
     ok = True
     for run in (a.sv, a.p):
-        e = read_csv(f"{run}/energy.csv")
+        e = RunFolder(run).energy()
         err = np.max(np.abs(e["relative_balance_error"]))
         ok = ok and err <= a.energy_tol
         print(f"site: {run}: energy balance {err:.2e} (bound {a.energy_tol:.0e})")
     E, M = a.rho * a.vp ** 2, a.fluid_bulk_modulus / a.porosity
     gamma = M / (E + M)
-    surface = read_csv(f"{a.p}/stations/{a.surface}.csv")
+    surface = RunFolder(a.p).station(a.surface)
     for name, depth in ((n.split(":")[0], float(n.split(":")[1])) for n in a.stations.split(",")):
-        dp = read_csv(f"{a.p}/stations/{name}.csv")
-        ds = read_csv(f"{a.sv}/stations/{name}.csv")
+        dp = RunFolder(a.p).station(name)
+        ds = RunFolder(a.sv).station(name)
         pred = gamma * a.rho * depth * 0.5 * (surface["a_y"] + dp["a_y"])
         l2 = math.sqrt(np.sum((dp["p_excess"] - pred) ** 2) / np.sum(pred ** 2))
         ratio = np.max(np.abs(ds["p_excess"])) / np.max(np.abs(dp["p_excess"]))

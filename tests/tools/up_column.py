@@ -22,9 +22,13 @@ the inversion together; `compare` checks a slipwave base-shaking run.
 """
 import argparse
 import math
+import os
 import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from slipwave import RunFolder  # noqa: E402
 
 
 def laplace_column(s, z, H, E, alpha, M, kappa, rho, T, Ub):
@@ -122,7 +126,7 @@ def compare(a):
     ok = True
     names = a.stations.split(",")
     depths = [float(x) for x in a.depths.split(",")]
-    data = [np.genfromtxt(f"{a.dir}/stations/{n}.csv", delimiter=",", names=True) for n in names]
+    data = [RunFolder(a.dir).station(n) for n in names]
     t = data[0]["t"]
     keep = t <= a.t_end
     t = t[keep]

@@ -9,8 +9,8 @@
 #include <functional>
 #include <vector>
 
-#include "slipwave/fem/gll_basis.hpp"
 #include "slipwave/fem/spectral_kernels.hpp"
+#include "slipwave/numerics/gll_basis.hpp"
 
 namespace unit {
 
@@ -26,7 +26,7 @@ inline SpectralBoxMesh spectralBoxMesh(int dim, int p, const int *ne, double h, 
   SpectralBoxMesh m;
   m.dim = dim, m.p = p;
   double x[slipwave::fem::kMaxSpectralNodes1D], w[slipwave::fem::kMaxSpectralNodes1D];
-  slipwave::fem::gllPointsWeights(p, x, w);
+  slipwave::numerics::gllPointsWeights(p, x, w);
   const int n1 = p + 1, nz = dim == 3 ? n1 : 1, ez = dim == 3 ? ne[2] : 1;
   const PetscInt gx = (PetscInt)ne[0] * p + 1, gy = (PetscInt)ne[1] * p + 1, gz = dim == 3 ? (PetscInt)ne[2] * p + 1 : 1;
   m.nelem = (PetscInt)ne[0] * ne[1] * ez;

@@ -3,8 +3,8 @@
 // and the poro element matrices: Q u of a uniform dilatation integrates div u, Q^T of a
 // uniform p is the boundary force p n of the cell, H has constants in its null space and
 // gives integral |grad p|^2 for a linear p.
-#include "slipwave/physics/biot.hpp"
 #include "slipwave/fem/element_kernels.hpp"
+#include "slipwave/physics/biot.hpp"
 
 #include "unit_check.hpp"
 
@@ -14,6 +14,7 @@
 
 using namespace slipwave::physics;
 using namespace slipwave::fem;
+using namespace slipwave::numerics;
 
 int main() {
   // A sandstone-like rock: K = 8 GPa, K_s = 36 GPa, K_f = 3.3 GPa, n = 0.19.
@@ -92,7 +93,7 @@ int main() {
       total += qa;
       worst = std::fmax(worst, std::fabs(qa - dim * mass[a]));
     }
-    unit::near(total, dim * elementVolume(c.shape, c.x.data()), 1e-13, 0, std::string(c.name) + ": Q u of u = x integrates div u = dim");
+    unit::near(total, dim * cellVolume(c.shape, c.x.data()), 1e-13, 0, std::string(c.name) + ": Q u of u = x integrates div u = dim");
     unit::near(worst, 0, 0, 1e-13, std::string(c.name) + ": (Q u)_a = dim integral N_a for a uniform dilatation");
     // Q^T 1: the nodal forces of a uniform pressure sum to zero over the closed cell surface.
     for (int j = 0; j < dim; ++j) {
@@ -113,7 +114,7 @@ int main() {
       rowsum = std::fmax(rowsum, std::fabs(s));
     }
     unit::near(rowsum, 0, 0, 1e-13, std::string(c.name) + ": H 1 = 0");
-    unit::near(energy, 5 * elementVolume(c.shape, c.x.data()), 1e-12, 0, std::string(c.name) + ": p^T H p = |grad p|^2 V for a linear p");
+    unit::near(energy, 5 * cellVolume(c.shape, c.x.data()), 1e-12, 0, std::string(c.name) + ": p^T H p = |grad p|^2 V for a linear p");
   }
   return unit::failures();
 }

@@ -15,10 +15,10 @@
 //     and 2 (3D), where the sub-cells also carry spectral_position (the serial subdivision's)
 //     and the distributed build's vertices sit at the GLL nodes (its global coordinates made
 //     from the local ones: equal), and SpectralLayoutOf groups the sub-cells back on every rank.
-#include "slipwave/mesh/box_refinement.hpp"
-#include "slipwave/mesh/mesh_builder.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
 #include "slipwave/mesh/spectral_layout.hpp"
+#include "slipwave/meshing/box_refinement.hpp"
+#include "slipwave/meshing/mesh_builder.hpp"
 
 #include "petsc_test_main.hpp"
 
@@ -28,6 +28,7 @@
 #include <vector>
 
 using namespace slipwave::mesh;
+using namespace slipwave::meshing;
 
 namespace {
 
@@ -72,7 +73,7 @@ struct Signature {
   PetscInt          elements = 0;        // SpectralLayoutOf's elements over all ranks (p > 1)
 };
 
-PetscErrorCode signatureOf(DM dm, const slipwave::mesh::MeshDescription &desc, const std::vector<std::string> &face_labels, Signature *sig) {
+PetscErrorCode signatureOf(DM dm, const slipwave::meshing::MeshDescription &desc, const std::vector<std::string> &face_labels, Signature *sig) {
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   PetscInt c_start, c_end, v_start, v_end, f_start, f_end;
   DMLabel  region, position;
@@ -179,8 +180,8 @@ PetscErrorCode compareBuilds(const std::string &tag, const char *options) {
     PetscCall(PetscOptionsSetValue(opts, "-mesh_build", b == 0 ? "serial" : "distributed"));
     PetscCall(PetscOptionsPush(opts));
     DM                              dm;
-    slipwave::mesh::MeshDescription desc;
-    PetscCall(slipwave::mesh::MeshCreate(PETSC_COMM_WORLD, &dm, &desc));
+    slipwave::meshing::MeshDescription desc;
+    PetscCall(slipwave::meshing::MeshCreate(PETSC_COMM_WORLD, &dm, &desc));
     const bool refined = desc.source.find("built distributed") != std::string::npos;
     unit::check(refined == (b == 1), tag + ": " + (b ? "distributed" : "serial") + " build reported as such (" + desc.source + ")");
     std::vector<std::string> faces = desc.boundaries;

@@ -2,14 +2,15 @@
 // Jacobian ratio 1; an r:1 rectangle or r:1:1 box has aspect r; a trapezoid's corner
 // Jacobians are the cross products of its edges; a bow-tie folds (ratio -1); collapsed
 // cells are degenerate; reversing the node order changes nothing.
-#include "slipwave/fem/cell_quality.hpp"
+#include "slipwave/mesh/cell_quality.hpp"
 
 #include "unit_check.hpp"
 
 #include <cmath>
 #include <vector>
 
-using namespace slipwave::fem;
+using namespace slipwave::numerics;
+using namespace slipwave::mesh;
 
 namespace {
 

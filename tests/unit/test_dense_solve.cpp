@@ -1,13 +1,13 @@
-// The small dense solve of physics/dense_solve against systems whose solutions are known by
+// The small dense solve of numerics/dense_solve against systems whose solutions are known by
 // construction: b = A x_true for a chosen x_true, including a matrix whose first pivot is 0
 // (it needs the row exchange) and the constant-Q fit's size (8, a Hilbert-like matrix).
-#include "slipwave/physics/dense_solve.hpp"
+#include "slipwave/numerics/dense_solve.hpp"
 
 #include "unit_check.hpp"
 
 #include <vector>
 
-using slipwave::physics::solveDense;
+using slipwave::numerics::solveDense;
 
 namespace {
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 using namespace slipwave::fem;
+using namespace slipwave::numerics;
 
 namespace {
 
@@ -189,7 +190,7 @@ void testConstantStrain(const Cell &c) {
   const std::vector<double> f = multiply(stiffness(c.shape, c.coords), us);
   double energy = 0;
   for (int k = 0; k < nd; ++k) energy += 0.5 * us[k] * f[k];
-  const double V = elementVolume(c.shape, c.coords.data());
+  const double V = cellVolume(c.shape, c.coords.data());
   unit::near(energy, 0.5 * (kLame.lambda * tr * tr + 2 * kLame.mu * eps_eps) * V, 1e-12, 0,
              std::string(c.name) + ": 1/2 u^T K u = 1/2 eps:C:eps V for constant strain");
 }
@@ -200,7 +201,7 @@ void testMassSumsToRhoVolume(const Cell &c) {
   elementLumpedMass(c.shape, c.coords.data(), rho, m.data());
   double sum = 0;
   for (double v : m) sum += v;
-  unit::near(sum, rho * elementVolume(c.shape, c.coords.data()), 1e-14, 0,
+  unit::near(sum, rho * cellVolume(c.shape, c.coords.data()), 1e-14, 0,
              std::string(c.name) + ": lumped mass sums to rho V");
 }
 
@@ -242,13 +243,13 @@ void testReferenceCoordinates(const Cell &c) {
 void testVolumesOfKnownShapes() {
   // Right triangle legs 2 and 3: area 3.
   const double tri[] = {0, 0, 2, 0, 0, 3};
-  unit::near(elementVolume(CellShape::Tri3, tri), 3.0, 1e-15, 0, "Tri3 area of right triangle = 3");
+  unit::near(cellVolume(CellShape::Tri3, tri), 3.0, 1e-15, 0, "Tri3 area of right triangle = 3");
   // Trapezoid, parallel sides 4 and 2 at distance 1.5, clockwise: area (4+2)/2*1.5 = 4.5.
   const double quad[] = {0, 0, 1, 1.5, 3, 1.5, 4, 0};
-  unit::near(elementVolume(CellShape::Quad4, quad), 4.5, 1e-15, 0, "Quad4 area of trapezoid = 4.5 (clockwise)");
+  unit::near(cellVolume(CellShape::Quad4, quad), 4.5, 1e-15, 0, "Quad4 area of trapezoid = 4.5 (clockwise)");
   // Tet with edges 1, 2, 3 along the axes: 1*2*3/6 = 1.
   const double tet[] = {0, 0, 0, 1, 0, 0, 0, 2, 0, 0, 0, 3};
-  unit::near(elementVolume(CellShape::Tet4, tet), 1.0, 1e-15, 0, "Tet4 volume 1*2*3/6 = 1");
+  unit::near(cellVolume(CellShape::Tet4, tet), 1.0, 1e-15, 0, "Tet4 volume 1*2*3/6 = 1");
   // Parallelepiped on edges (2,0,0), (0.5,1,0), (0.2,0.3,1.5): det = 2*1*1.5 = 3.
   const double e[3][3] = {{2, 0, 0}, {0.5, 1, 0}, {0.2, 0.3, 1.5}};
   std::vector<double> hex;
@@ -256,12 +257,12 @@ void testVolumesOfKnownShapes() {
   for (int z = 0; z < 2; ++z)
     for (const auto &c : corner)
       for (int i = 0; i < 3; ++i) hex.push_back(c[0] * e[0][i] + c[1] * e[1][i] + z * e[2][i]);
-  unit::near(elementVolume(CellShape::Hex8, hex.data()), 3.0, 1e-14, 0, "Hex8 parallelepiped volume = det = 3");
+  unit::near(cellVolume(CellShape::Hex8, hex.data()), 3.0, 1e-14, 0, "Hex8 parallelepiped volume = det = 3");
   // Trapezoidal prism: the trapezoid above extruded 2 in z: 4.5*2 = 9.
   std::vector<double> prism;
   for (int z = 0; z < 2; ++z)
     for (int a = 0; a < 4; ++a) prism.insert(prism.end(), {quad[2 * a], quad[2 * a + 1], 2.0 * z});
-  unit::near(elementVolume(CellShape::Hex8, prism.data()), 9.0, 1e-14, 0, "Hex8 trapezoidal prism volume = 9");
+  unit::near(cellVolume(CellShape::Hex8, prism.data()), 9.0, 1e-14, 0, "Hex8 trapezoidal prism volume = 9");
   // Parallelogram: det J is constant, so each N_a integrates to V/4 by symmetry.
   const double para[] = {0, 0, 2, 0, 2.5, 1, 0.5, 1};
   double m[4];

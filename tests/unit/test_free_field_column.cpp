@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "slipwave/fem/gll_basis.hpp"
+#include "slipwave/numerics/gll_basis.hpp"
 #include "slipwave/physics/constant_q.hpp"
 #include "slipwave/physics/elastic_material.hpp"
 #include "slipwave/physics/free_field_column.hpp"
@@ -194,13 +194,13 @@ void constantQ() {
 
 } // namespace
 
-// A column of degree p from the GLL rule (fem/gll_basis) on nel equal elements of [0, H].
+// A column of degree p from the GLL rule (numerics/gll_basis) on nel equal elements of [0, H].
 slipwave::physics::ColumnElement gllElement(int p) {
   slipwave::physics::ColumnElement el;
   el.degree = p;
   el.x.resize(p + 1), el.w.resize(p + 1), el.D.resize((p + 1) * (p + 1));
-  slipwave::fem::gllPointsWeights(p, el.x.data(), el.w.data());
-  slipwave::fem::lagrangeDerivativeMatrix(p, el.x.data(), el.D.data());
+  slipwave::numerics::gllPointsWeights(p, el.x.data(), el.w.data());
+  slipwave::numerics::lagrangeDerivativeMatrix(p, el.x.data(), el.D.data());
   return el;
 }
 std::vector<double> gllHeights(double H, int nel, const slipwave::physics::ColumnElement &el) {

@@ -1,13 +1,13 @@
 // GLL points, weights, Lagrange basis and derivative matrix against closed forms and the
 // exactness properties that define them.
-#include "slipwave/fem/gll_basis.hpp"
+#include "slipwave/numerics/gll_basis.hpp"
 
 #include "unit_check.hpp"
 
 #include <cmath>
 #include <string>
 
-using namespace slipwave::fem;
+using namespace slipwave::numerics;
 
 int main() {
   constexpr int N = kMaxSpectralDegree + 1;

@@ -1,6 +1,6 @@
 // Ground-motion readers (CSV and PEER .AT2) on small files written here, their error
 // messages with line numbers, the trapezoid integration order and the baseline correction.
-#include "slipwave/model/ground_motion_record.hpp"
+#include "slipwave/input/ground_motion_record.hpp"
 
 #include "unit_check.hpp"
 
@@ -11,7 +11,7 @@
 #include <unistd.h>
 #include <vector>
 
-using namespace slipwave::model;
+using namespace slipwave::input;
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The interface split (src/mesh/interface_split.cpp): duplicating the structure-side vertices
+// The interface split (src/meshing/interface_split.cpp): duplicating the structure-side vertices
 // of an interface on the serial mesh, and the pair tables on the (distributed) split mesh.
 //   test_interface_split               one rank: quads, footing, hexes, triangles, tets, two
 //                                      interfaces at once, input errors
@@ -10,10 +10,10 @@
 // Expected areas are the lumped face weights ∫ N_a dA of the faces around a pair: a segment of
 // length L gives L/2 to each end, a unit square face 1/4 to each corner, a triangle of area A
 // gives A/3 to each corner.
-#include "slipwave/mesh/interface_split.hpp"
-#include "slipwave/mesh/mesh_builder.hpp"
+#include "slipwave/fem/node_fields.hpp"
 #include "slipwave/mesh/partition_metis.hpp"
-#include "slipwave/model/node_fields.hpp"
+#include "slipwave/meshing/interface_split.hpp"
+#include "slipwave/meshing/mesh_builder.hpp"
 
 #include "petsc_test_main.hpp"
 
@@ -29,8 +29,8 @@
 
 namespace {
 
-using slipwave::mesh::InterfacePairs;
-using slipwave::mesh::InterfaceSpec;
+using slipwave::meshing::InterfacePairs;
+using slipwave::meshing::InterfaceSpec;
 using slipwave::mesh::kRegionLabel;
 
 using RegionOf = std::function<PetscInt(const double *)>; // region index from a cell centroid
@@ -250,8 +250,8 @@ PetscErrorCode buildPairs(DM split, const InterfaceSpec &spec, std::vector<Pair>
   InterfacePairs pairs;
   PetscFunctionBeginUser;
   PetscCall(DMGetDimension(split, &dim));
-  PetscCall(slipwave::model::NodeFieldSetSection(split, dim));
-  PetscCall(slipwave::mesh::InterfacePairsBuild(split, spec, &pairs));
+  PetscCall(slipwave::fem::NodeFieldSetSection(split, dim));
+  PetscCall(slipwave::meshing::InterfacePairsBuild(split, spec, &pairs));
   out->clear();
   for (size_t k = 0; k < pairs.id.size(); ++k) {
     Pair p{};
@@ -303,7 +303,7 @@ PetscErrorCode testQuads() {
   PetscFunctionBeginUser;
   PetscCall(createBox(2, faces, lo, hi, [](const double *x) -> PetscInt { return x[1] < 2 ? 0 : 1; }, &dm, &sides));
   const std::vector<InterfaceSpec> specs = {{"base", "soil", "block", ""}};
-  PetscCall(slipwave::mesh::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, specs, &split));
+  PetscCall(slipwave::meshing::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, specs, &split));
   PetscCall(checkSplit("quads 4x4", dm, split, sides, specs, {1}, {0}, {5}));
   unit::check(labelCount(split, "interface_base", 1) == 4, "quads 4x4: interface label holds the 4 soil-side faces");
   // Left/right faces of the block: the two lowest (y in [2,3]) touch y = 2 and must use the copy.
@@ -369,7 +369,7 @@ PetscErrorCode testFooting() {
   bnd.push_back("footing_base");
   {
     const std::vector<InterfaceSpec> specs = {{"base", "soil", "block", "footing_base"}};
-    PetscCall(slipwave::mesh::InterfaceSplitSerialMesh(dm, {"soil", "block"}, bnd, specs, &split));
+    PetscCall(slipwave::meshing::InterfaceSplitSerialMesh(dm, {"soil", "block"}, bnd, specs, &split));
     PetscCall(checkSplit("footing (base label)", dm, split, sides, specs, {1}, {0}, {3}));
     // The interior group lies along the interface: both sides' faces keep it (value 7).
     unit::check(labelCount(split, "footing_base", 7) == 4, "footing (base label): interior face group carried to both sides (2 + 2 faces)");
@@ -380,7 +380,7 @@ PetscErrorCode testFooting() {
   }
   {
     const std::vector<InterfaceSpec> specs = {{"all", "soil", "block", ""}};
-    PetscCall(slipwave::mesh::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, specs, &split));
+    PetscCall(slipwave::meshing::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, specs, &split));
     PetscCall(checkSplit("footing (all faces)", dm, split, sides, specs, {1}, {0}, {5}));
     std::vector<Pair> pairs;
     PetscCall(buildPairs(split, specs[0], &pairs));
@@ -403,7 +403,7 @@ PetscErrorCode testHexes() {
   PetscFunctionBeginUser;
   PetscCall(createBox(3, faces, lo, hi, [](const double *x) -> PetscInt { return x[2] < 1 ? 0 : 1; }, &dm, &sides));
   const std::vector<InterfaceSpec> specs = {{"base", "soil", "block", ""}};
-  PetscCall(slipwave::mesh::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, specs, &split));
+  PetscCall(slipwave::meshing::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, specs, &split));
   PetscCall(checkSplit("hexes 2x2x2", dm, split, sides, specs, {1}, {0}, {9}));
   std::vector<Pair> pairs;
   PetscCall(buildPairs(split, specs[0], &pairs));
@@ -452,7 +452,7 @@ PetscErrorCode testTriangles() {
   std::vector<std::string> sides;
   PetscCall(labelSides(dm, lo, hi, &sides));
   const std::vector<InterfaceSpec> specs = {{"base", "soil", "block", ""}};
-  PetscCall(slipwave::mesh::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, specs, &split));
+  PetscCall(slipwave::meshing::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, specs, &split));
   PetscCall(checkSplit("triangles", dm, split, sides, specs, {1}, {0}, {3}));
   std::vector<Pair> pairs;
   PetscCall(buildPairs(split, specs[0], &pairs));
@@ -500,7 +500,7 @@ PetscErrorCode testTets() {
   std::vector<std::string> sides;
   PetscCall(labelSides(dm, lo, hi, &sides));
   const std::vector<InterfaceSpec> specs = {{"base", "soil", "block", ""}};
-  PetscCall(slipwave::mesh::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, specs, &split));
+  PetscCall(slipwave::meshing::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, specs, &split));
   PetscCall(checkSplit("tets", dm, split, sides, specs, {1}, {0}, {4}));
   std::vector<Pair> pairs;
   PetscCall(buildPairs(split, specs[0], &pairs));
@@ -535,7 +535,7 @@ PetscErrorCode testSeveralAndErrors() {
   PetscFunctionBeginUser;
   PetscCall(createBox(2, faces, lo, hi, [](const double *x) -> PetscInt { return x[1] < 2 ? 0 : (x[1] < 3 ? 1 : 2); }, &dm, &sides));
   const std::vector<InterfaceSpec> specs = {{"lower", "soil", "mid", ""}, {"upper", "mid", "top", ""}};
-  PetscCall(slipwave::mesh::InterfaceSplitSerialMesh(dm, regions, sides, specs, &split));
+  PetscCall(slipwave::meshing::InterfaceSplitSerialMesh(dm, regions, sides, specs, &split));
   PetscCall(checkSplit("two interfaces", dm, split, sides, specs, {1, 2}, {0, 1}, {5, 5}));
   for (size_t s = 0; s < specs.size(); ++s) {
     std::vector<Pair> pairs;
@@ -547,22 +547,22 @@ PetscErrorCode testSeveralAndErrors() {
 
   PetscErrorCode code;
   std::string    msg;
-  PetscCall(expectError([&]() { return slipwave::mesh::InterfaceSplitSerialMesh(dm, regions, sides, {{"far", "soil", "top", ""}}, &split); }, &code, &msg));
+  PetscCall(expectError([&]() { return slipwave::meshing::InterfaceSplitSerialMesh(dm, regions, sides, {{"far", "soil", "top", ""}}, &split); }, &code, &msg));
   std::printf("# no shared face: %s\n", msg.c_str());
   unit::check(code == PETSC_ERR_USER_INPUT, "regions without a common face: PETSC_ERR_USER_INPUT");
   unit::check(msg.find("'far'") != std::string::npos && msg.find("'soil'") != std::string::npos && msg.find("'top'") != std::string::npos &&
                   msg.find("share no face") != std::string::npos,
               "regions without a common face: the message names the interface, both regions and says they share no face");
-  PetscCall(expectError([&]() { return slipwave::mesh::InterfaceSplitSerialMesh(dm, regions, sides, {{"x", "soil", "rock", ""}}, &split); }, &code, &msg));
+  PetscCall(expectError([&]() { return slipwave::meshing::InterfaceSplitSerialMesh(dm, regions, sides, {{"x", "soil", "rock", ""}}, &split); }, &code, &msg));
   unit::check(code == PETSC_ERR_USER_INPUT && msg.find("'rock'") != std::string::npos, "unknown region: PETSC_ERR_USER_INPUT naming it");
-  PetscCall(expectError([&]() { return slipwave::mesh::InterfaceSplitSerialMesh(dm, regions, sides, {{"x", "soil", "mid", "nolabel"}}, &split); }, &code, &msg));
+  PetscCall(expectError([&]() { return slipwave::meshing::InterfaceSplitSerialMesh(dm, regions, sides, {{"x", "soil", "mid", "nolabel"}}, &split); }, &code, &msg));
   unit::check(code == PETSC_ERR_USER_INPUT && msg.find("'nolabel'") != std::string::npos, "unknown face label: PETSC_ERR_USER_INPUT naming it");
   PetscCall(DMDestroy(&dm));
 
   // soil | left block and soil | right block meet at the vertex (2,2).
   PetscCall(createBox(2, faces, lo, hi, [](const double *x) -> PetscInt { return x[1] < 2 ? 0 : (x[0] < 2 ? 1 : 2); }, &dm, &sides));
   PetscCall(expectError(
-      [&]() { return slipwave::mesh::InterfaceSplitSerialMesh(dm, {"soil", "a", "b"}, sides, {{"ia", "soil", "a", ""}, {"ib", "soil", "b", ""}}, &split); }, &code, &msg));
+      [&]() { return slipwave::meshing::InterfaceSplitSerialMesh(dm, {"soil", "a", "b"}, sides, {{"ia", "soil", "a", ""}, {"ib", "soil", "b", ""}}, &split); }, &code, &msg));
   std::printf("# touching interfaces: %s\n", msg.c_str());
   unit::check(code == PETSC_ERR_USER_INPUT && msg.find("'ia'") != std::string::npos && msg.find("'ib'") != std::string::npos,
               "interfaces sharing a vertex: PETSC_ERR_USER_INPUT naming both");
@@ -593,7 +593,7 @@ PetscErrorCode testGmsh(const char *file, double h) {
   PetscCall(labelSides(dm, lo, hi, &sides));
   const std::string tag = std::string("gmsh ") + (dim == 2 ? "triangles" : "tets");
   const std::vector<InterfaceSpec> specs = {{"base", "soil", "block", ""}};
-  PetscCall(slipwave::mesh::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, specs, &split));
+  PetscCall(slipwave::meshing::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, specs, &split));
   PetscCall(checkSplit(tag, dm, split, sides, specs, {1}, {0}, {on_plane}));
   std::vector<Pair> pairs;
   PetscCall(buildPairs(split, specs[0], &pairs));
@@ -628,7 +628,7 @@ PetscErrorCode distributedCase(const char *how) {
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
   PetscCall(createBox(2, faces, lo, hi, [](const double *x) -> PetscInt { return x[1] < 4 ? 0 : 1; }, &dm, &sides));
   const InterfaceSpec spec = {"base", "soil", "block", ""};
-  PetscCall(slipwave::mesh::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, {spec}, &split));
+  PetscCall(slipwave::meshing::InterfaceSplitSerialMesh(dm, {"soil", "block"}, sides, {spec}, &split));
   PetscCall(DMDestroy(&dm));
 
   // Serial reference on the same split mesh (all on rank 0, which owns every pair).
@@ -636,8 +636,8 @@ PetscErrorCode distributedCase(const char *how) {
   {
     DM copy;
     PetscCall(DMClone(split, &copy));
-    PetscCall(slipwave::model::NodeFieldSetSection(copy, 2));
-    PetscCall(slipwave::mesh::InterfacePairsBuild(copy, spec, &serial));
+    PetscCall(slipwave::fem::NodeFieldSetSection(copy, 2));
+    PetscCall(slipwave::meshing::InterfacePairsBuild(copy, spec, &serial));
     PetscCall(DMDestroy(&copy));
   }
   std::vector<double> ref_area(9, 0), ref_normal(18, 0), ref_x(18, 0);
@@ -682,9 +682,9 @@ PetscErrorCode distributedCase(const char *how) {
     PetscCall(DMDestroy(&split));
     split = dist;
   }
-  PetscCall(slipwave::model::NodeFieldSetSection(split, 2));
+  PetscCall(slipwave::fem::NodeFieldSetSection(split, 2));
   InterfacePairs pairs;
-  PetscCall(slipwave::mesh::InterfacePairsBuild(split, spec, &pairs));
+  PetscCall(slipwave::meshing::InterfacePairsBuild(split, spec, &pairs));
 
   // Is the interface cut? (soil-side faces on more than one rank)
   PetscInt has_faces = pairs.face_pairs.empty() ? 0 : 1, ranks_with_faces = 0, owned = (PetscInt)pairs.id.size(), owned_total = 0;

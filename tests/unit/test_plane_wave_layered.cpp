@@ -1,5 +1,5 @@
 // Plane waves in a layered half-space (physics/plane_wave_layered) and the FFT behind their
-// histories (physics/fft), against closed forms:
+// histories (numerics/fft), against closed forms:
 //  - FFT: a direct DFT sum;
 //  - free-surface reflection coefficients of a homogeneous half-space (Aki & Richards,
 //    Quantitative Seismology, 2nd ed., eqs. 5.27 and 5.30);
@@ -17,12 +17,13 @@
 #include <cstdio>
 #include <vector>
 
-#include "slipwave/physics/fft.hpp"
+#include "slipwave/numerics/fft.hpp"
 #include "slipwave/physics/plane_wave_layered.hpp"
 #include "slipwave/physics/source_time_function.hpp"
 #include "unit_check.hpp"
 
 using namespace slipwave::physics;
+using namespace slipwave::numerics;
 
 namespace {
 

@@ -1,6 +1,6 @@
 // The right-hand side is a function of (t, u, v_{n+1/2}) and the committed history only: the
 // interface pairs, the free-field columns and the constant-Q memory advance into trial states
-// that the "cd" TS's commit hook accepts after each step (model/elastodynamics.hpp). Checked
+// that the "cd" TS's commit hook accepts after each step (problem/elastodynamics.hpp). Checked
 // on two scenes of config/scenes (run from the repository root):
 //  - default.yaml, coarsened (interface with contact damping, constant-Q soil and block,
 //    gravity without the geostatic stage, so the block settles and the pairs' states change),
@@ -13,9 +13,9 @@
 // would have moved the pairs' jump reference to the probe, stepped the columns past t_{n+1}
 // (then refused to go back) and committed the memory at t_{n+2}. Also: the two probes at the
 // same (t, u) give the same acceleration bit for bit.
-#include "slipwave/model/elastodynamics.hpp"
-#include "slipwave/model/pore_pressure.hpp"
-#include "slipwave/model/stable_step.hpp"
+#include "slipwave/porous/pore_pressure.hpp"
+#include "slipwave/problem/elastodynamics.hpp"
+#include "slipwave/problem/stable_step.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 #include "petsc_test_main.hpp"
@@ -37,21 +37,21 @@ struct Final {
 
 PetscErrorCode runScene(const std::string &scene_options, PetscReal t_end, bool probe, Final *out) {
   MPI_Comm              comm = PETSC_COMM_WORLD;
-  model::Elastodynamics m;
-  model::StableStep     step;
+  problem::Elastodynamics m;
+  problem::StableStep     step;
   TS                    ts;
   Vec                   u, v, a_probe, a_again, u_probe;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsClear(nullptr));
   PetscCall(PetscOptionsInsertString(nullptr, scene_options.c_str()));
-  PetscCall(model::ElastodynamicsCreate(comm, &m));
-  PetscCall(model::StableStepCompute(&m, &step));
+  PetscCall(problem::ElastodynamicsCreate(comm, &m));
+  PetscCall(problem::StableStepCompute(&m, &step));
   PetscCall(TSCreate(comm, &ts));
   PetscCall(TSSetType(ts, time::kTSCentralDifference));
   PetscCall(TSSetMaxTime(ts, t_end));
   PetscCall(TSSetExactFinalTime(ts, TS_EXACTFINALTIME_MATCHSTEP));
-  PetscCall(model::TimeStepChoose(ts, step, model::TimeStepOptions{}, !m.interfaces.empty()));
-  PetscCall(model::ElastodynamicsSetUpTS(&m, ts));
+  PetscCall(problem::TimeStepChoose(ts, step, problem::TimeStepOptions{}, !m.interfaces.empty()));
+  PetscCall(problem::ElastodynamicsSetUpTS(&m, ts));
   PetscCall(DMCreateGlobalVector(m.dm, &u));
   PetscCall(VecDuplicate(u, &v));
   PetscCall(VecDuplicate(u, &a_probe));
@@ -72,8 +72,8 @@ PetscErrorCode runScene(const std::string &scene_options, PetscReal t_end, bool 
       PetscCall(TSGetTimeStep(ts, &dt));
       PetscCall(VecSetRandom(u_probe, rnd));
       PetscCall(VecAXPY(u_probe, 1.0, u));
-      PetscCall(model::ElastodynamicsRHS(ts, t + 2 * dt, u_probe, a_probe, &m));
-      PetscCall(model::ElastodynamicsRHS(ts, t + 2 * dt, u_probe, a_again, &m));
+      PetscCall(problem::ElastodynamicsRHS(ts, t + 2 * dt, u_probe, a_probe, &m));
+      PetscCall(problem::ElastodynamicsRHS(ts, t + 2 * dt, u_probe, a_again, &m));
       PetscBool equal;
       PetscCall(VecEqual(a_probe, a_again, &equal));
       same_probe = same_probe && equal;
@@ -100,7 +100,7 @@ PetscErrorCode runScene(const std::string &scene_options, PetscReal t_end, bool 
   PetscCall(PetscRandomDestroy(&rnd));
   for (Vec *x : {&u, &v, &a_probe, &a_again, &u_probe}) PetscCall(VecDestroy(x));
   PetscCall(TSDestroy(&ts));
-  PetscCall(model::ElastodynamicsDestroy(&m));
+  PetscCall(problem::ElastodynamicsDestroy(&m));
   PetscFunctionReturn(0);
 }
 

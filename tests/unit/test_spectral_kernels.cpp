@@ -5,7 +5,7 @@
 // the patch test, the mass of the whole element, a partition of unity.
 #include "slipwave/fem/spectral_kernels.hpp"
 
-#include "slipwave/fem/gll_basis.hpp"
+#include "slipwave/numerics/gll_basis.hpp"
 #include "unit_check.hpp"
 
 #include <algorithm>
@@ -15,6 +15,7 @@
 #include <vector>
 
 using namespace slipwave::fem;
+using namespace slipwave::numerics;
 
 namespace {
 

@@ -17,7 +17,7 @@
 
 using namespace slipwave;
 using fem::SpectralOperator;
-using fem::kMaxSpectralDegree;
+using numerics::kMaxSpectralDegree;
 
 namespace {
 

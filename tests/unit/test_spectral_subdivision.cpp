@@ -1,8 +1,8 @@
-// Spectral elements as GLL sub-cells (mesh/spectral_subdivision, spectral_layout,
+// Spectral elements as GLL sub-cells (meshing/spectral_subdivision, spectral_layout,
 // spectral_face_weights), through MeshCreate with -element_degree, on any number of ranks
 // (tests/cases/spectral_mesh.sh runs it on 1 and 2). Expected numbers:
 //  - a box of n_x x n_y (x n_z) elements of degree p has (n_x p + 1)(n_y p + 1)(...) nodes, at
-//    x = lower + h (e + (xi_i + 1)/2) per axis (xi_i the GLL points, fem::gllPointsWeights,
+//    x = lower + h (e + (xi_i + 1)/2) per axis (xi_i the GLL points, numerics::gllPointsWeights,
 //    themselves unit-tested against closed forms);
 //  - a labelled side of m faces has m p^(dim-1) sub-faces;
 //  - the layout groups p^dim sub-cells per element, whole on one rank, every element once,
@@ -16,12 +16,12 @@
 //    frame axis, node 2 - node 0 along the second, right-handed).
 //  - -gmsh_file f.msh [-gmsh_cells V,E,C]: a Gmsh quad or hex mesh at p = 3 has
 //    V + E (p-1) + F (p-1)^2 + C (p-1)^dim nodes (see gmsh()).
-#include "slipwave/fem/gll_basis.hpp"
-#include "slipwave/mesh/mesh_builder.hpp"
+#include "slipwave/fem/node_fields.hpp"
+#include "slipwave/input/boundary_faces.hpp"
 #include "slipwave/mesh/spectral_face_weights.hpp"
 #include "slipwave/mesh/spectral_layout.hpp"
-#include "slipwave/model/boundary_faces.hpp"
-#include "slipwave/model/node_fields.hpp"
+#include "slipwave/meshing/mesh_builder.hpp"
+#include "slipwave/numerics/gll_basis.hpp"
 
 #include "petsc_test_main.hpp"
 
@@ -40,10 +40,10 @@ namespace {
 
 using Options = std::vector<std::pair<const char *, const char *>>;
 
-PetscErrorCode build(const Options &opts, DM *dm, slipwave::mesh::MeshDescription *desc) {
+PetscErrorCode build(const Options &opts, DM *dm, slipwave::meshing::MeshDescription *desc) {
   PetscFunctionBeginUser;
   for (auto &o : opts) PetscCall(PetscOptionsSetValue(nullptr, o.first, o.second));
-  PetscCall(slipwave::mesh::MeshCreate(PETSC_COMM_WORLD, dm, desc));
+  PetscCall(slipwave::meshing::MeshCreate(PETSC_COMM_WORLD, dm, desc));
   for (auto &o : opts) PetscCall(PetscOptionsClearValue(nullptr, o.first));
   PetscFunctionReturn(0);
 }
@@ -90,7 +90,7 @@ PetscErrorCode checkLayout(DM dm, PetscInt degree, PetscInt nelem_global, const 
   PetscCall(DMGetDimension(dm, &dim));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
   double gll[9], w[9];
-  slipwave::fem::gllPointsWeights((int)degree, gll, w);
+  slipwave::numerics::gllPointsWeights((int)degree, gll, w);
   const PetscInt np1 = degree + 1, nnode = dim == 2 ? np1 * np1 : np1 * np1 * np1, nsub = dim == 2 ? degree * degree : degree * degree * degree;
   std::vector<double> centre; // per element: the mean of its corners, to count each once over ranks
   double                err = 0;
@@ -162,8 +162,8 @@ PetscErrorCode checkLayout(DM dm, PetscInt degree, PetscInt nelem_global, const 
 }
 
 PetscInt countFaces(DM dm, const char *name) {
-  std::vector<slipwave::model::BoundaryFace> faces;
-  PetscCallAbort(PETSC_COMM_WORLD, slipwave::model::BoundaryFacesGet(dm, name, &faces));
+  std::vector<slipwave::input::BoundaryFace> faces;
+  PetscCallAbort(PETSC_COMM_WORLD, slipwave::input::BoundaryFacesGet(dm, name, &faces));
   PetscInt n = (PetscInt)faces.size();
   MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
   return n;
@@ -171,12 +171,12 @@ PetscInt countFaces(DM dm, const char *name) {
 
 PetscErrorCode box2d() {
   DM                              dm;
-  slipwave::mesh::MeshDescription desc;
+  slipwave::meshing::MeshDescription desc;
   PetscFunctionBeginUser;
   PetscCall(build({{"-mesh_box_faces", "3,2"}, {"-mesh_box_upper", "6,2"}, {"-element_degree", "4"}}, &dm, &desc));
   const PetscInt p = 4;
   double         gll[5], w[5];
-  slipwave::fem::gllPointsWeights(4, gll, w);
+  slipwave::numerics::gllPointsWeights(4, gll, w);
   PetscInt nv;
   PetscCall(globalVertexCount(dm, &nv));
   unit::check(nv == 13 * 9 && desc.degree == 4, "2D box 3x2, p = 4: (3*4+1)(2*4+1) = 117 nodes");
@@ -196,8 +196,8 @@ PetscErrorCode box2d() {
               "2D box: sides have 3*4 (bottom, top) and 2*4 (left, right) sub-faces");
   PetscCall(checkLayout(dm, p, 6, "2D box p = 4"));
   // Bottom weights per node, assembled over ranks by the node's x index.
-  std::vector<slipwave::model::BoundaryFace> faces;
-  PetscCall(slipwave::model::BoundaryFacesGet(dm, "bottom", &faces));
+  std::vector<slipwave::input::BoundaryFace> faces;
+  PetscCall(slipwave::input::BoundaryFacesGet(dm, "bottom", &faces));
   std::vector<double> node_w(13, 0.0);
   for (auto &f : faces)
     for (PetscInt a = 0; a < f.nvert; ++a) {
@@ -223,7 +223,7 @@ PetscErrorCode box2d() {
 
 PetscErrorCode box3d() {
   DM                              dm;
-  slipwave::mesh::MeshDescription desc;
+  slipwave::meshing::MeshDescription desc;
   PetscFunctionBeginUser;
   PetscCall(build({{"-mesh_dim", "3"}, {"-mesh_box_faces", "2,1,1"}, {"-mesh_box_upper", "2,1,1"}, {"-element_degree", "3"}}, &dm, &desc));
   PetscInt nv;
@@ -231,8 +231,8 @@ PetscErrorCode box3d() {
   unit::check(nv == 7 * 4 * 4, "3D box 2x1x1, p = 3: 7*4*4 = 112 nodes");
   unit::check(countFaces(dm, "top") == 18 && countFaces(dm, "left") == 9, "3D box: top 2*3^2 = 18, left 3^2 = 9 sub-faces");
   PetscCall(checkLayout(dm, 3, 2, "3D box p = 3"));
-  std::vector<slipwave::model::BoundaryFace> faces;
-  PetscCall(slipwave::model::BoundaryFacesGet(dm, "top", &faces));
+  std::vector<slipwave::input::BoundaryFace> faces;
+  PetscCall(slipwave::input::BoundaryFacesGet(dm, "top", &faces));
   slipwave::mesh::VertexCoordinates vc;
   PetscCall(vc.Open(dm));
   double sum = 0, corner = 0;
@@ -254,17 +254,17 @@ PetscErrorCode box3d() {
 
 PetscErrorCode interface2d() {
   DM                              dm;
-  slipwave::mesh::MeshDescription desc;
+  slipwave::meshing::MeshDescription desc;
   PetscFunctionBeginUser;
   PetscCall(build({{"-mesh_box_faces", "4,2"}, {"-mesh_box_upper", "4,2"}, {"-element_degree", "4"}, {"-regions", "soil,block"}, {"-region_block_box", "0,4,1,2"},
                    {"-interfaces", "base"}, {"-interface_base_regions", "soil,block"}},
                   &dm, &desc));
-  PetscCall(slipwave::model::NodeFieldSetSection(dm, 2));
-  slipwave::mesh::InterfacePairs pairs;
-  PetscCall(slipwave::mesh::InterfacePairsBuild(dm, desc.interfaces[0], &pairs));
+  PetscCall(slipwave::fem::NodeFieldSetSection(dm, 2));
+  slipwave::meshing::InterfacePairs pairs;
+  PetscCall(slipwave::meshing::InterfacePairsBuild(dm, desc.interfaces[0], &pairs));
   unit::check(pairs.n_global == 17, "interface along y = 1, 4 elements of p = 4: 4*4+1 = 17 pairs");
   double gll[5], w[5];
-  slipwave::fem::gllPointsWeights(4, gll, w);
+  slipwave::numerics::gllPointsWeights(4, gll, w);
   const double gw[5] = {1. / 10, 49. / 90, 32. / 45, 49. / 90, 1. / 10};
   double       err = 0, sum = 0;
   for (size_t k = 0; k < pairs.id.size(); ++k) {
@@ -287,14 +287,14 @@ PetscErrorCode interface2d() {
 // the one at its centre (1,1,1), a corner of 4 elements, 4/36; they sum to the area 4.
 PetscErrorCode interface3d() {
   DM                              dm;
-  slipwave::mesh::MeshDescription desc;
+  slipwave::meshing::MeshDescription desc;
   PetscFunctionBeginUser;
   PetscCall(build({{"-mesh_dim", "3"}, {"-mesh_box_faces", "2,2,2"}, {"-mesh_box_upper", "2,2,2"}, {"-element_degree", "2"}, {"-regions", "soil,block"},
                    {"-region_block_box", "0,2,0,2,1,2"}, {"-interfaces", "base"}, {"-interface_base_regions", "soil,block"}},
                   &dm, &desc));
-  PetscCall(slipwave::model::NodeFieldSetSection(dm, 3));
-  slipwave::mesh::InterfacePairs pairs;
-  PetscCall(slipwave::mesh::InterfacePairsBuild(dm, desc.interfaces[0], &pairs));
+  PetscCall(slipwave::fem::NodeFieldSetSection(dm, 3));
+  slipwave::meshing::InterfacePairs pairs;
+  PetscCall(slipwave::meshing::InterfacePairsBuild(dm, desc.interfaces[0], &pairs));
   unit::check(pairs.n_global == 25, "3D interface z = 1, 2x2 elements of p = 2: 5^2 = 25 pairs");
   double sum = 0, corner = 0, centre = 0;
   for (size_t k = 0; k < pairs.id.size(); ++k) {
@@ -314,7 +314,7 @@ PetscErrorCode interface3d() {
 
 PetscErrorCode linear() {
   DM                              dm;
-  slipwave::mesh::MeshDescription desc;
+  slipwave::meshing::MeshDescription desc;
   PetscFunctionBeginUser;
   PetscCall(build({{"-mesh_box_faces", "3,2"}, {"-mesh_box_upper", "6,2"}}, &dm, &desc));
   PetscInt nv;
@@ -330,7 +330,7 @@ PetscErrorCode linear() {
 // vertex one node, each edge, face and cell its interior GLL nodes).
 PetscErrorCode gmsh(const char *file, const char *counts) {
   DM                              dm, parent;
-  slipwave::mesh::MeshDescription desc;
+  slipwave::meshing::MeshDescription desc;
   PetscInt                        V, E, F = 0, C, dim;
   PetscFunctionBeginUser;
   PetscCall(DMPlexCreateFromFile(PETSC_COMM_WORLD, file, "parent", PETSC_TRUE, &parent));

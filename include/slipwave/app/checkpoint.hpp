@@ -13,15 +13,15 @@
 #include <vector>
 
 #include "slipwave/io/stations.hpp"
-#include "slipwave/model/elastodynamics.hpp"
-#include "slipwave/model/energy_ledger.hpp"
+#include "slipwave/problem/elastodynamics.hpp"
+#include "slipwave/problem/energy_ledger.hpp"
 
 namespace slipwave::app {
 
 struct CheckpointState {
-  model::Elastodynamics *model       = nullptr;
+  problem::Elastodynamics *model       = nullptr;
   TS                     ts          = nullptr;
-  model::EnergyLedger   *ledger      = nullptr;
+  problem::EnergyLedger   *ledger      = nullptr;
   io::Stations          *stations    = nullptr;
   std::vector<PetscReal> *frame_times = nullptr; // times of the output frames written so far
   PetscReal             *next_output = nullptr;

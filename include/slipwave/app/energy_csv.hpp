@@ -12,7 +12,7 @@
 #include <string>
 
 #include "slipwave/interface/interface_assembler.hpp"
-#include "slipwave/model/energy_ledger.hpp"
+#include "slipwave/problem/energy_ledger.hpp"
 
 namespace slipwave::app {
 
@@ -25,7 +25,7 @@ public:
   // Before Open, in saturated scenes: the fluid columns (fluid_stored, darcy_dissipated,
   // fluid_inflow_work) follow the others.
   void SetFluid(bool fluid) { fluid_ = fluid; }
-  void           Append(PetscInt step, PetscReal t, const model::EnergyLedger &ledger, const interface::InterfaceTotals &interfaces);
+  void           Append(PetscInt step, PetscReal t, const problem::EnergyLedger &ledger, const interface::InterfaceTotals &interfaces);
   // Writes the rows kept since the last flush: the file on disk then holds every row so far.
   void Flush();
   void Close();

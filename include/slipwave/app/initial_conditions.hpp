@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "slipwave/fem/bulk_operator.hpp"
-#include "slipwave/model/materials.hpp"
+#include "slipwave/medium/materials.hpp"
 
 namespace slipwave::app {
 
@@ -17,7 +17,7 @@ namespace slipwave::app {
 using RegionVelocities = std::vector<std::vector<PetscReal>>;
 
 // Read with the other options, before the run starts.
-PetscErrorCode RegionVelocitiesRead(MPI_Comm comm, PetscInt dim, const std::vector<model::RegionMaterialInfo> &materials, RegionVelocities *velocities);
+PetscErrorCode RegionVelocitiesRead(MPI_Comm comm, PetscInt dim, const std::vector<medium::RegionMaterialInfo> &materials, RegionVelocities *velocities);
 
 // v = the uniform velocity on every free node, then each region's own velocity on the free
 // nodes of its cells (free_mask: 1 on free dofs, 0 on held ones).

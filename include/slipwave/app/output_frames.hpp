@@ -12,7 +12,7 @@
 
 #include "slipwave/io/interface_output.hpp"
 #include "slipwave/io/volume_output.hpp"
-#include "slipwave/model/elastodynamics.hpp"
+#include "slipwave/problem/elastodynamics.hpp"
 
 namespace slipwave::app {
 
@@ -21,10 +21,10 @@ public:
   // interval: time between frames [s]; volume: write the volume grid. After a restart
   // (checkpoint_dir: the checkpoint's folder, else empty) the frames in times() are kept: the
   // files are copied from checkpoint_dir when dir is another folder, and the series continues.
-  PetscErrorCode Open(const model::Elastodynamics &model, const std::string &dir, PetscReal interval, bool volume, const std::string &checkpoint_dir);
+  PetscErrorCode Open(const problem::Elastodynamics &model, const std::string &dir, PetscReal interval, bool volume, const std::string &checkpoint_dir);
   // Writes a frame at the first step, at the last one and whenever the next output time is
   // reached; due says whether this step was an output time.
-  PetscErrorCode WriteIfDue(const model::Elastodynamics &model, PetscInt step, PetscReal t, bool last, Vec u, Vec v, Vec a, bool *due);
+  PetscErrorCode WriteIfDue(const problem::Elastodynamics &model, PetscInt step, PetscReal t, bool last, Vec u, Vec v, Vec a, bool *due);
   // Whether this step is an output time (the first, the last, or the next output time reached).
   bool Due(PetscInt step, PetscReal t, bool last) const { return t >= next_output_ * (1 - 1e-12) || last || step == 0; }
   PetscErrorCode Close();

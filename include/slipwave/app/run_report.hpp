@@ -8,22 +8,22 @@
 #include <string>
 
 #include "slipwave/io/stations.hpp"
-#include "slipwave/model/elastodynamics.hpp"
-#include "slipwave/model/stable_step.hpp"
-#include "slipwave/model/energy_ledger.hpp"
+#include "slipwave/problem/elastodynamics.hpp"
+#include "slipwave/problem/energy_ledger.hpp"
+#include "slipwave/problem/stable_step.hpp"
 
 namespace slipwave::app {
 
 // dt: the time step chosen; max_time: -ts_max_time [s].
-PetscErrorCode ReportSetup(const model::Elastodynamics &model, const model::StableStep &limit, const io::Stations &stations, PetscReal dt, PetscReal max_time,
+PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::StableStep &limit, const io::Stations &stations, PetscReal dt, PetscReal max_time,
                            const std::string &output_dir);
 
 // Rank 0: OUTPUT_DIR/run_info.json (resolved frequency, h_min, input top frequency, dt).
-void WriteRunInfo(const model::Elastodynamics &model, const std::string &output_dir, double dt);
+void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt);
 
 // The interfaces' final states, the contact dashpots' work, steps and wall time, the energy
 // balance error and where the output is: files, the names of the run's files in it.
-PetscErrorCode ReportEnd(const model::Elastodynamics &model, const model::EnergyLedger &ledger, const std::vector<std::string> &files, PetscInt steps, double wall,
+PetscErrorCode ReportEnd(const problem::Elastodynamics &model, const problem::EnergyLedger &ledger, const std::vector<std::string> &files, PetscInt steps, double wall,
                          const std::string &output_dir);
 
 } // namespace slipwave::app

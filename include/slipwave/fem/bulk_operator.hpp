@@ -103,4 +103,8 @@ private:
   std::vector<PetscInt> cell_element_, cell_position_; // degree > 1: per cell, its element and place in it
 };
 
+// rows (global) = the row bounds of addStiffnessRowBounds summed over the ranks' cells:
+// K <= diag(rows), what every stable-step bound of the assembled problem starts from.
+PetscErrorCode BulkStiffnessRowBounds(DM dm, const BulkOperator &bulk, Vec rows);
+
 } // namespace slipwave::fem

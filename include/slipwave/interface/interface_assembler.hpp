@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "slipwave/interface/interface_options.hpp"
-#include "slipwave/mesh/interface_split.hpp"
+#include "slipwave/meshing/interface_split.hpp"
 #include "slipwave/physics/mohr_coulomb_interface.hpp"
 
 namespace slipwave::interface {
@@ -30,7 +30,7 @@ public:
   // `mass`: the global lumped mass per dof (its layout gives the pairs' dof indices; its
   // values size the contact dashpots). `contact_damping`: fraction of each pair's critical
   // normal damping, 0 for none (physics/contact_damping.hpp).
-  PetscErrorCode Setup(MPI_Comm comm, PetscInt dim, const mesh::InterfaceSpec &spec, const mesh::InterfacePairs &pairs, const physics::InterfaceParams &params,
+  PetscErrorCode Setup(MPI_Comm comm, PetscInt dim, const meshing::InterfaceSpec &spec, const meshing::InterfacePairs &pairs, const physics::InterfaceParams &params,
                        double sigma_N0, double contact_damping, Vec mass);
   // f += interface forces at displacement u: every pair advanced from its committed state into
   // the trial state.
@@ -39,7 +39,7 @@ public:
   void Commit();
   // Saturated soil side: from now on AddForces reads the pore pressure at the pairs' soil
   // nodes from p (a global vector with one value per node, node i of it being node i of the
-  // displacement: model/pore_pressure.hpp) and applies the law in effective stress.
+  // displacement: porous/pore_pressure.hpp) and applies the law in effective stress.
   PetscErrorCode SetPorePressure(Vec p);
   // f += contact damping forces of the pairs closed in the last AddForces' trial, from the
   // velocity v (the half-step velocity that the step's other damping terms use). No-op
@@ -78,8 +78,8 @@ public:
   std::vector<std::string> pairFieldNames() const;
   PetscErrorCode Destroy();
 
-  const mesh::InterfaceSpec  &spec() const { return spec_; }
-  const mesh::InterfacePairs &pairs() const { return pairs_; }
+  const meshing::InterfaceSpec  &spec() const { return spec_; }
+  const meshing::InterfacePairs &pairs() const { return pairs_; }
   const physics::InterfaceParams &params() const { return params_; }
 
 private:
@@ -91,8 +91,8 @@ private:
   PetscErrorCode addPairRowAbsSums(Vec rowabs, const std::function<double(size_t, const double *, PetscInt, PetscInt)> &k);
   MPI_Comm                 comm_ = MPI_COMM_NULL;
   PetscInt                 dim_  = 0;
-  mesh::InterfaceSpec      spec_;
-  mesh::InterfacePairs     pairs_;
+  meshing::InterfaceSpec      spec_;
+  meshing::InterfacePairs     pairs_;
   physics::InterfaceParams params_{};
   std::vector<physics::InterfaceState<2>> states2_;
   std::vector<physics::InterfaceState<3>> states3_;

@@ -1,16 +1,37 @@
 // Command-line options of one interface law: -<prefix>E, -<prefix>G, -<prefix>phi,
 // -<prefix>psi, -<prefix>c, -<prefix>e_ini, -<prefix>tensile_strength, -<prefix>sigma_N0,
-// and, for an interface of a mesh, -<prefix>penalty_factor and -<prefix>contact_damping;
+// and, for an interface of a mesh, -<prefix>penalty_rule, -<prefix>penalty_length,
+// -<prefix>penalty_factor and -<prefix>contact_damping;
 // default prefix "interface_" (a simulation with several interfaces passes its own). The
 // interface's geometry (-interfaces, -interface_<n>_regions, _faces) is the mesh's: see
-// mesh/mesh_builder.hpp.
+// meshing/mesh_builder.hpp.
 #pragma once
 
 #include "slipwave/physics/mohr_coulomb_interface.hpp"
 
 #include <petscsys.h>
 
+#include <string>
+
 namespace slipwave::interface {
+
+// How E, G given as `auto` are chosen (docs/convergence-study.md):
+//  Physical: E = (lambda+2mu)/L, G = mu/L of the softer side, L = -<prefix>penalty_length [m]:
+//            the interface is as compliant as a layer of the softer material L thick, whatever
+//            the mesh. Default L: the interface's width (2D: its length; 3D: the square root of
+//            its area) x kDefaultPenaltyLengthFraction.
+//  Mesh:     factor x (lambda+2mu)/h and factor x mu/h (h: the smallest cell size; at
+//            -element_degree p, 3 h_e/(p^2+p+1)): as stiff as one layer of cells, so it
+//            changes with the mesh. Still the default: the physical rule's stiff contact
+//            makes each landing ring the elastic block's modes (66 % of the default scene's
+//            block-top acceleration power above the resolved 25 Hz), which a structure model
+//            without those modes has to answer before it can be the default.
+enum class PenaltyRule { Physical = 0, Mesh = 1 };
+// Default penalty length as a fraction of the interface's width. In the default scene
+// (docs/convergence-study.md) halving L from width/100 moves uplift, rocking angle, the block's
+// spectra and the free field by at most 1.1 %, the slip measures by 4-8 % (they converge as
+// O(L)); width/50 moved the slip by 10-15 %. The step it costs there: 20 % at h = 1 m.
+constexpr double kDefaultPenaltyLengthFraction = 1.0 / 100.0;
 
 struct InterfaceOptions {
   physics::InterfaceParams params; // angles converted to radians
@@ -19,7 +40,9 @@ struct InterfaceOptions {
   // InterfaceOptionsCheck; params holds 0 for them until then.
   PetscBool E_auto = PETSC_FALSE;
   PetscBool G_auto = PETSC_FALSE;
-  double    penalty_factor = 1.0; // `auto`: factor x (lambda+2mu)/h and x mu/h of the softer side
+  PenaltyRule penalty_rule = PenaltyRule::Mesh;
+  double      penalty_length = 0.0;          // [m], physical rule; 0: not given (default from the width)
+  double      penalty_factor = 1.0;          // mesh rule: factor x (lambda+2mu)/h and x mu/h of the softer side
   // Fraction of each closed pair's critical normal damping. 0.1 removes the contact stress
   // ripple of the two-bar impact (48 % -> 0.02 %) and the energy the switching created
   // (2.3e-4 -> 0) while moving the exit velocities by 0.1 % and the step by 1.4 % in the
@@ -35,6 +58,13 @@ enum class InterfaceUse { LawAlone, Mesh };
 // Reads and validates the options (stiffnesses given as `auto` are left unchecked).
 // prefix nullptr means "interface_".
 PetscErrorCode InterfaceOptionsRead(MPI_Comm comm, const char *prefix, InterfaceUse use, InterfaceOptions *options);
+
+// The `auto` stiffnesses of an interface of a mesh from the softer side's moduli m_soft =
+// lambda+2mu and mu_soft [Pa], the mesh's h [m] (mesh rule) and the interface's width [m]
+// (physical rule's default length); E and G given as numbers are kept. Fills options->params
+// and a one-line description for the run report. Collective only for errors.
+PetscErrorCode InterfaceAutoPenalty(MPI_Comm comm, const char *prefix, double m_soft, double mu_soft, double h, double width,
+                                    InterfaceOptions *options, std::string *note);
 
 // Stops with a user-input error naming the first option out of range, its value and the
 // allowed range.

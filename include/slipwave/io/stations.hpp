@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "slipwave/fem/bulk_operator.hpp"
-#include "slipwave/mesh/mesh_builder.hpp"
+#include "slipwave/meshing/mesh_builder.hpp"
 
 namespace slipwave::io {
 
@@ -31,7 +31,7 @@ PetscErrorCode StationFileCheck(MPI_Comm comm);
 
 class Stations {
 public:
-  PetscErrorCode Setup(DM dm, const fem::BulkOperator &bulk, const mesh::MeshDescription &mesh);
+  PetscErrorCode Setup(DM dm, const fem::BulkOperator &bulk, const meshing::MeshDescription &mesh);
   // One line per station on an interface: where it is and which side it records.
   const std::vector<std::string> &ambiguities() const { return ambiguities_; }
   bool           empty() const { return names_.empty(); }

@@ -21,7 +21,7 @@ public:
                       Vec pore_layout = nullptr);
   // initial_stress: 6 per local cell added to the stress of u (the geostatic state), or empty.
   // p_total, p_excess: saturated scenes, one value per node in the same node order (global
-  // vectors of model/pore_pressure.hpp), written as the node fields pore_pressure and
+  // vectors of porous/pore_pressure.hpp), written as the node fields pore_pressure and
   // excess_pore_pressure [Pa]; else null. The stress written is then the effective stress
   // (total = effective - alpha p I).
   PetscErrorCode Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a, const std::vector<double> &initial_stress,

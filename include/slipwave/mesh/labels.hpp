@@ -8,7 +8,7 @@ namespace slipwave::mesh {
 // Every cell; value = index of its region in MeshDescription::regions.
 inline constexpr char kRegionLabel[] = "region";
 
-// Spectral elements of degree p > 1 (mesh/spectral_subdivision.hpp): every GLL sub-cell;
+// Spectral elements of degree p > 1 (meshing/spectral_subdivision.hpp): every GLL sub-cell;
 // value = its lexicographic position in its element (x fastest), 0..p^dim-1. Which element
 // follows from the topology (spectral_layout.hpp); a label value per element would make
 // DMPlex's labels slow (DMLabelGetValue searches every value).

@@ -3,7 +3,7 @@
 // weight of that face, w_I w_J |surface Jacobian at the node| (2D: w_I |dx/dxi|), split equally
 // among the GLL sub-faces of the parent face that touch it ((I in {0,p} ? 1 : 2) per face
 // direction), so that summing the sub-faces' weights per node gives exact GLL quadrature on
-// the parent face. At p = 1 callers keep fem::faceLumpedWeights (exact ∫ N_a dA).
+// the parent face. At p = 1 callers keep numerics::faceLumpedWeights (exact ∫ N_a dA).
 #pragma once
 #include <petscdmplex.h>
 

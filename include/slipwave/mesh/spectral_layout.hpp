@@ -1,5 +1,5 @@
 // Spectral elements of degree p live in the mesh as p^dim linear sub-cells per element whose
-// vertices are the element's GLL nodes (mesh/spectral_subdivision builds them before the
+// vertices are the element's GLL nodes (meshing/spectral_subdivision builds them before the
 // interface split and the distribution, and partitions whole elements). Every node is then a
 // DMPlex vertex: boundaries, interface pairs, output and every vertex loop work unchanged,
 // and the output is the "linear sub-cells on the GLL nodes" a viewer opens. This table groups

@@ -51,7 +51,7 @@ namespace slipwave::physics {
 
 // The column's reference element on [-1, 1]: its degree, GLL points x and weights w (p+1
 // each) and derivative matrix D[i*(p+1) + j] = l_j'(x_i) (the caller takes them from
-// fem/gll_basis). Left empty: degree 1 (points -1, 1, weights 1, D rows (-1/2, 1/2)).
+// numerics/gll_basis). Left empty: degree 1 (points -1, 1, weights 1, D rows (-1/2, 1/2)).
 constexpr int kMaxColumnDegree = 8;
 struct ColumnElement {
   int                 degree = 1;
@@ -69,7 +69,7 @@ public:
   // The incident wave: particle-velocity component (0 .. dim-1) and its speed (vs for an S
   // wave, vp for a P wave). Without a call the base only absorbs.
   void setInput(int component, bool p_wave);
-  // Constant-Q damping per segment, as the main mesh's cells have it (model/attenuation.hpp):
+  // Constant-Q damping per segment, as the main mesh's cells have it (medium/attenuation.hpp):
   // models[e] is the segment's fitted body (no mechanisms: elastic), factor[e] its unrelaxed
   // modulus factor M_U/(rho c^2). Every spring becomes k_U Δu - sum_l zeta_l with
   // d zeta_l/dt = w_l (Y_l k_U Δu - zeta_l), updated exactly (memoryUpdate) once per step.

@@ -1,0 +1,35 @@
+// Linear elastic isotropic material per region, from -material_<region>_{rho,vp,vs} or
+// -material_<region>_{rho,E,nu}, and a constant-Q damping ratio -material_<region>_damping_ratio.
+// A region without a material, or a -material_<name>_*
+// option naming no region, stops the run.
+#pragma once
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+#include "slipwave/fem/bulk_operator.hpp"
+#include "slipwave/physics/elastic_material.hpp"
+
+namespace slipwave::medium {
+
+struct RegionMaterialInfo {
+  std::string               region;
+  physics::ElasticMaterial  elastic;
+  fem::RegionMaterial       fe;            // element moduli: unrelaxed ones in a damped region (medium/attenuation.hpp)
+  double                    damping_ratio = 0; // constant-Q damping ratio; 0: elastic
+  double                    reference_frequency = 0; // where vp, vs hold in a damped region [Hz]; 0: the global choice
+  double                    vp_undrained = 0; // saturated region: P speed with the pore fluid locked in (porous/pore_pressure.hpp); 0: dry
+};
+
+// What a boundary of the region sees (absorbing dashpots, free-field columns): a saturated
+// region's P wave is the undrained one (the fluid moves with the skeleton).
+inline physics::ElasticMaterial boundaryElastic(const RegionMaterialInfo &m) {
+  physics::ElasticMaterial e = m.elastic;
+  if (m.vp_undrained > 0) e.vp = m.vp_undrained;
+  return e;
+}
+
+PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regions, std::vector<RegionMaterialInfo> *materials);
+
+} // namespace slipwave::medium

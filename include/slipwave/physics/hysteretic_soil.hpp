@@ -1,0 +1,131 @@
+// Hysteretic (Masing) soil, total stress: the volumetric part elastic (bulk modulus K), the
+// deviatoric part a parallel Iwan model (Iwan 1967): N elastic-perfectly-plastic von Mises
+// elements in parallel, element i with shear modulus G_i and yield strain gamma_i (the
+// engineering shear strain at which it yields in simple shear). The deviatoric stress is
+//   s = sum_i 2 G_i (e - p_i),   |e - p_i| <= r_i = gamma_i / sqrt(2),
+// with e the deviatoric strain and p_i element i's plastic strain. In simple shear the
+// stress on first loading is sum_i G_i min(gamma, gamma_i), a piecewise-linear backbone with
+// its kinks at the gamma_i, and a reversal after gamma_a unloads along
+// tau_a - 2 F((gamma_a - gamma)/2) exactly (each element stays elastic for twice its yield
+// strain): Masing's rules, without iteration. In 3D every element is a closed-form radial
+// return. docs/hysteretic-soil.md states the model, its sources and its error.
+//
+// The model (per region, immutable) is built from Gmax, K, a backbone (soil_backbone.hpp) and
+// N: the piecewise-linear backbone passes exactly through the backbone at N knot strains
+// log-spaced up to last_knot (a concave backbone; see the constructor for others), starts
+// with slope Gmax up to the elastic limit (so the stable step and the small-strain answer are
+// those of the linear soil) and is flat (perfectly plastic) beyond the last knot.
+//
+// The state of a quadrature point is a plain array of hystereticStateSize(model, Dim) doubles
+// (zero: the virgin, stress-free state), so a region keeps one flat vector of them, copied or
+// checkpointed as it is. The update is a pure function of (model, state, total strain): it may
+// write a trial state apart from the committed one, work in place, or only evaluate.
+#pragma once
+#include <vector>
+
+#include "slipwave/physics/soil_backbone.hpp"
+
+namespace slipwave::physics {
+
+// Components of the arrays the update reads and writes:
+//   strain, Dim 3: xx, yy, zz, xy, yz, xz (tensor components: eps_xy = gamma_xy / 2);
+//           Dim 2 (plane strain, eps_zz = eps_xz = eps_yz = 0): xx, yy, xy.
+//   stress, Dim 3: xx, yy, zz, xy, yz, xz; Dim 2: xx, yy, xy, zz (the in-plane ones first, in
+//           the strain's order; sigma_zz != 0 in plane strain).
+//   state:  the plastic strains p_i, component-major (c * N + i), in the deviatoric
+//           components xx, yy, xy [, yz, xz] (zz = -(xx + yy)), then the largest equivalent
+//           shear strain reached (output).
+template <int Dim>
+struct HystereticLayout {
+  static_assert(Dim == 2 || Dim == 3, "plane strain (2) or 3D");
+  static constexpr int kStrain = Dim == 2 ? 3 : 6;
+  static constexpr int kStress = Dim == 2 ? 4 : 6;
+  static constexpr int kDeviator = Dim == 2 ? 3 : 5;
+};
+
+struct HystereticSurfaces {
+  // N, the number of elements (surfaces): see docs/hysteretic-soil.md for its error and cost.
+  int    count = 24;
+  // The piecewise-linear backbone is linear (slope Gmax) up to this strain exactly.
+  double elastic_limit = 1e-6;
+  // The last knot; the model is perfectly plastic at tau(last_knot) beyond it.
+  double last_knot = 1e-1;
+};
+
+class HystereticSoilModel {
+public:
+  // Throws std::invalid_argument for Gmax or K <= 0, count outside 2..1000, elastic_limit not
+  // in (0, last_knot / 8), or a backbone that falls so fast below the elastic limit that no
+  // first knot gives it. A backbone that is not concave and non-decreasing on the knots (a table
+  // whose G/Gmax flattens between rows, a curve past a peak) is replaced there by its least
+  // concave majorant, the closest curve a parallel Iwan model holds: see knotDeviation().
+
+  HystereticSoilModel(double shear_modulus, double bulk_modulus, const SoilBackbone &backbone, const HystereticSurfaces &surfaces = {});
+
+  int    surfaces() const { return (int)modulus_.size(); }
+  double shearModulus() const { return shear_modulus_; }
+  double bulkModulus() const { return bulk_modulus_; }
+  // The strains where the piecewise-linear backbone equals the backbone (N of them).
+  const std::vector<double> &knotStrains() const { return knots_; }
+  // Element i: its shear modulus G_i (sum = Gmax) and yield strain gamma_i (ascending:
+  // gamma_0 = the elastic limit, gamma_i = knot i for i >= 1; the .cpp says why).
+  const std::vector<double> &elementModulus() const { return modulus_; }
+  const std::vector<double> &elementYieldStrain() const { return yield_strain_; }
+  // The model's backbone tau(gamma) in simple shear: sum_i G_i min(gamma, gamma_i).
+  double backboneStress(double gamma) const;
+  // tau(gamma) / (Gmax gamma): the secant G/Gmax of a first loading to gamma (1 at gamma = 0).
+  double secantModulusRatio(double gamma) const;
+  // The strength sum_i G_i gamma_i = tau(last_knot).
+  double strength() const { return strength_; }
+  // max over the knots of |tau_model - tau_backbone| / tau_backbone: 0 (to round-off) for a
+  // concave backbone; else how far the concave majorant moved it (the options layer may warn).
+  double knotDeviation() const { return knot_deviation_; }
+
+  // Per-element constants of the update, 2 G_i and r_i = gamma_i / sqrt(2).
+  const double *twiceModulus() const { return twice_modulus_.data(); }
+  const double *radius() const { return radius_.data(); }
+
+private:
+  double              shear_modulus_, bulk_modulus_, strength_, knot_deviation_ = 0;
+  std::vector<double> knots_, modulus_, yield_strain_, twice_modulus_, radius_;
+};
+
+// Doubles per quadrature point: kDeviator * N + 1.
+template <int Dim>
+int hystereticStateSize(const HystereticSoilModel &model) {
+  return HystereticLayout<Dim>::kDeviator * model.surfaces() + 1;
+}
+
+// The update. From the state state_in and the total strain, writes the stress and, unless
+// state_out is null, the new state (state_out == state_in is allowed). Returns the energy the
+// elements dissipate per unit volume in this update, sum_i R_i |dp_i| with R_i = 2 G_i r_i the
+// element's yield stress (>= 0; exactly the plastic work in 1D, where the return is exact for
+// any monotone increment). The strain path between the two states is taken as straight (one
+// radial return per element: backward Euler, exact in 1D, first order for a path that turns).
+template <int Dim>
+double hystereticUpdate(const HystereticSoilModel &model, const double *state_in, const double *strain, double *stress, double *state_out);
+
+// Energy stored per unit volume at (state, strain): K tr(eps)^2 / 2 + sum_i G_i |e - p_i|^2,
+// for a state that the update returned for this strain (then |e - p_i| <= r_i). Work done on a
+// point = change of this + the dissipation the updates return.
+template <int Dim>
+double hystereticStoredEnergy(const HystereticSoilModel &model, const double *state, const double *strain);
+
+// Equivalent (octahedral-type) shear strain sqrt(2 e:e) of a strain (= |gamma| in simple
+// shear), and equivalent shear stress sqrt(s:s / 2) of a stress (= |tau| in simple shear).
+template <int Dim>
+double equivalentShearStrain(const double *strain);
+template <int Dim>
+double equivalentShearStress(const double *stress);
+// The largest equivalent shear strain the point has reached (kept in its state).
+template <int Dim>
+double maxShearStrain(const HystereticSoilModel &model, const double *state) {
+  return state[HystereticLayout<Dim>::kDeviator * model.surfaces()];
+}
+// Mobilised strength: equivalent shear stress / strength (1 when every element yields).
+template <int Dim>
+double mobilisedStrengthRatio(const HystereticSoilModel &model, const double *stress) {
+  return equivalentShearStress<Dim>(stress) / model.strength();
+}
+
+} // namespace slipwave::physics

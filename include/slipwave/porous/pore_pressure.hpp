@@ -1,0 +1,138 @@
+// Pore pressure of the saturated regions: Biot's u-p equations integrated explicitly
+// (docs/saturated-soil.md). porous/pore_pressure.cpp: layout, update, stable-step rows,
+// energy, water table; porous/pore_fluid.cpp: the per-region options and the report;
+// porous/pore_pressure_bc.cpp: the fluid boundary conditions. The pressure is a nodal scalar on its own node layout (a clone
+// of the mesh DM with one dof per vertex, node i of it is node i of the displacement), so the
+// displacement layout, the "cd" TS and every dry-scene pass stay as they are; a dry scene
+// never creates this object.
+//
+// One step, with S the lumped storage (integral of N_a / M), Q the coupling
+// (integral of N_a div), H the Darcy matrix (integral of kappa grad N_a . grad N_b), split:
+//   p*      = p_n after m explicit diffusion sub-steps S (p^{k+1} - p^k) = -(h/m) H p^k
+//             (m = 1, or with -pore_pressure_subcycle enough that h/m is within the
+//             diffusion limit), so S (p* - p_n) = -h Hbar, Hbar the mean of H p^k;
+//   p_{n+1} = p* - S^{-1} [ alpha Q (u_{n+1} - u_n) - h q ]            on free pressure nodes,
+//   f_pore  = alpha Q^T p                                             (force on the skeleton),
+// so total stress = effective stress - alpha p I. p* depends on p_n and h only: it is
+// computed once per step (cached for that h) by whichever needs it first, the RHS or the
+// energy ledger. p_{n+1} is a trial state of the RHS (it needs u_{n+1}, which the RHS
+// receives) that PorePressureCommit accepts.
+//
+// Options per region r (prefix -material_r_): saturated, porosity, fluid_bulk_modulus,
+// grain_bulk_modulus, hydraulic_conductivity, fluid_density. Per boundary b: -bc_b_fluid
+// noflow|drained|flux, -bc_b_fluid_flux q [m/s]. With gravity, -water_table z [m]: the
+// hydrostatic pressure p_h = rho_f g (z - elevation)+ below it. The unknown p is the excess
+// pore pressure over p_h (p_h drives no flow); its force on the skeleton, alpha Q^T p_h, is
+// a constant load (PorePressureAddHydrostaticForce); outputs give p_h + p and p.
+#pragma once
+#include <petscdmplex.h>
+
+#include <string>
+#include <vector>
+
+#include "slipwave/fem/bulk_operator.hpp"
+#include "slipwave/medium/materials.hpp"
+#include "slipwave/physics/biot.hpp"
+
+namespace slipwave::porous {
+
+struct SaturatedRegion {
+  bool                 saturated = false;
+  physics::BiotMaterial biot{};
+  double               alpha = 0, M = 0, kappa = 0; // Biot coefficient [-], modulus [Pa], mobility [m^2/(Pa s)]
+};
+
+struct PorePressure {
+  DM                           pdm = nullptr;    // one dof per vertex
+  std::vector<SaturatedRegion> regions;          // per region, in materials order
+  // Element matrices per distinct bulk matrix (region and geometry): alpha Q, kappa H, S.
+  std::vector<double>   coupling, diffusion, storage_element;
+  std::vector<PetscInt> cells;                   // local cells of saturated regions
+  std::vector<PetscInt> cell_matrix;             // per cell of `cells`: its distinct-matrix index
+  std::vector<PetscInt> cell_p, cell_u;          // per cell node: local offset in p, in u
+  PetscInt              nen = 0, dim = 0;
+  Vec storage = nullptr, inv_storage = nullptr;  // lumped S per node (0 off the saturated regions)
+  Vec free_mask = nullptr;                       // 1 where p evolves: S > 0 and not drained
+  Vec inflow = nullptr;                          // q: prescribed boundary inflow per node [m^3/s]
+  Vec p = nullptr, p_trial = nullptr;            // committed p_n and the RHS's trial p_{n+1} [Pa]
+  Vec Qu = nullptr, Qu_trial = nullptr;          // alpha Q u at the same two states [m^3]
+  Vec p_star = nullptr, Hbar = nullptr;          // the diffusion part of the step from p_n: p*, mean H p^k [m^3/s]
+  Vec Hbar_trial = nullptr, Hbar_previous = nullptr; // Hbar the trial used; that of the step before
+  Vec Hp = nullptr, Hp_trial = nullptr;          // H p_n and H p_trial, from the pass that forms f_pore [m^3/s]
+  Vec p_local = nullptr, q_local = nullptr;
+  double t = 0, t_trial = 0;
+  bool   started = false;                        // Qu holds the initial state
+  double diffused_h = -1;                        // the step p_star and Hbar are for; < 0: none since the commit
+  double dt_diffusion = 1e300;                   // explicit diffusion limit [s]
+  bool   subcycle = true;                        // -pore_pressure_subcycle: sub-steps instead of a smaller step
+  PetscInt substeps = 1;                         // sub-steps of the last diffusion part
+  double vp_undrained_max = 0;                   // [m/s], for the report
+  std::vector<std::string> drained, flux;        // boundary names, for the report
+  Vec    p_hydrostatic = nullptr;                // p_h per node [Pa]; zero without a water table
+  Vec    p_total = nullptr;                      // p_h + p, refreshed by PorePressureTotal
+  Vec    p_total_trial = nullptr;                // p_h + p_trial, what interfaces on saturated soil read
+  bool   water_table = false;
+  Vec    at_water_table = nullptr;               // 1 at free nodes the water table drained because they lie on it
+                                                 // (not above): a noflow interface seals those of its soil side
+  double water_table_elevation = 0;              // [m] along minus the gravity direction
+};
+
+// Reads the per-region options after MaterialsRead; sets vp_undrained of saturated regions
+// (the absorbing boundaries match it). *any: whether some region is saturated.
+PetscErrorCode PorePressureReadMaterials(MPI_Comm comm, std::vector<medium::RegionMaterialInfo> *materials, std::vector<SaturatedRegion> *regions, bool *any);
+// Builds the layout, element matrices, storage, fluid boundary conditions and diffusion
+// limit; reads -pore_pressure_subcycle.
+// gravity [m/s^2] along the unit vector gravity_direction (the scene's -gravity).
+PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const std::vector<std::string> &boundaries, std::vector<SaturatedRegion> regions,
+                                  double gravity, const double *gravity_direction, PorePressure **pore);
+// f += alpha Q^T p_h (global, displacement layout): the hydrostatic pressure's load.
+PetscErrorCode PorePressureAddHydrostaticForce(PorePressure *pore, DM dm, Vec f);
+// p_h + p of the committed state, in pore->p_total.
+PetscErrorCode PorePressureTotal(PorePressure *pore);
+// An interface whose soil side is saturated: -interface_<name>_fluid noflow (default) or
+// drained, which holds the excess pore pressure at zero at its soil nodes (soil_dofs: global
+// indices of their x components).
+PetscErrorCode PorePressureInterfaceFluid(PorePressure *pore, MPI_Comm comm, const std::string &name, const std::vector<PetscInt> &soil_dofs);
+PetscErrorCode PorePressureDestroy(PorePressure **pore);
+// Trial state at time t from the ghosted displacement u_local: p_trial, and the force on the
+// skeleton f_pore = alpha Q^T p_trial (global, displacement layout, overwritten).
+PetscErrorCode PorePressureTrial(PorePressure *pore, DM dm, const PetscScalar *u_local, PetscReal t, Vec f_pore);
+void           PorePressureCommit(PorePressure *pore);
+// The diffusion part (p*, Hbar) of the coming step of size h from the committed p_n, as the
+// energy ledger computes it first in every step; a restart calls it with the checkpoint's
+// step (whose monitor, and so the ledger, it skips), so the continued run repeats the
+// uninterrupted one bit for bit (the RHS's own h = t_{n+1} - t_n differs by round-off).
+PetscErrorCode PorePressureDiffuseStep(PorePressure *pore, PetscReal h);
+// Adds alpha^2 (|Q|^T S^{-1} |Q| 1) to the Gershgorin rows of K (global, displacement layout):
+// the undrained stiffening the wave step must cover (rows of drained nodes do not stiffen).
+PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pore, DM dm, Vec rows);
+
+// Report lines: per saturated region its Biot numbers, the fluid boundaries, and what the
+// pore pressure costs in step: dt_drained (bulk without the undrained stiffening),
+// dt_undrained (with it), dt_diffusion, and the run's limit.
+std::vector<std::string> PorePressureReport(const PorePressure *pore, const std::vector<medium::RegionMaterialInfo> &materials, double dt_drained, double dt_undrained,
+                                            double dt_limit, double dt);
+
+// Within the module (porous/pore_pressure_bc.cpp): -bc_<b>_fluid of every boundary, drained
+// nodes into drained_local (1) and the inflow integral of N_a q into inflow_local (local
+// vectors of the pressure layout).
+PetscErrorCode PorePressureReadFluidBoundaries(DM dm, DM pdm, const std::vector<std::string> &boundaries, const std::vector<SaturatedRegion> &regions,
+                                               Vec drained_local, Vec inflow_local, PorePressure *pore);
+// Holds the excess pore pressure at zero where the global marker (pressure layout) is > 0.
+PetscErrorCode PorePressureDrainNodes(PorePressure *pore, Vec marker);
+
+// Sub-steps per step of size h: 1 without sub-cycling (the step is then within the limit).
+PetscInt PorePressureSubsteps(const PorePressure *pore, double h);
+
+// The fluid's terms of the energy budget at t_n (docs/saturated-soil.md): the shadow storage
+// energy F_{n+1/2} = ½ p_n S p_{n+1}, and this step's Darcy dissipation
+// ½ h p_n (Hbar_n + Hbar_{n-1}) and work of the prescribed inflow h p_n q.
+// held_power = v_n . f_pore on held dofs: the part of the supports' reaction power that the
+// pore pressure supplies, which the ledger takes out of the reactions (it is internal work).
+struct PoreEnergy {
+  double storage = 0, darcy = 0, inflow = 0, held_power = 0;
+};
+// v, a: v_n and a_n; f_pore at t_n; free_mask of the displacement dofs.
+PetscErrorCode PorePressureEnergy(PorePressure *pore, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e);
+
+} // namespace slipwave::porous

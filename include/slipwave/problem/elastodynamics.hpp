@@ -1,0 +1,81 @@
+// The semi-discrete elastodynamic system M a + C v + K u = f(t) on the mesh: lumped mass,
+// bulk stiffness (our element loop), boundary conditions and loads, Rayleigh damping.
+// ElastodynamicsRHS is the TS right-hand side for the "cd" type: it returns
+// a* = M^{-1}(f_ext - K u - beta K v_{n+1/2} + f_anelastic) on free dofs and the prescribed acceleration
+// on held ones; the nodal part of C (dashpots, alpha M) goes to the TS as damping blocks.
+// It is a function of (t, u, v_{n+1/2}) and the committed history (interface pairs, free-field
+// columns, constant-Q memory), which it advances into trial states only; ElastodynamicsCommit,
+// the TS's commit hook, accepts them after each step.
+#pragma once
+#include <petscts.h>
+
+#include <string>
+#include <vector>
+
+#include "slipwave/fem/bulk_operator.hpp"
+#include "slipwave/input/boundary_conditions.hpp"
+#include "slipwave/interface/interface_assembler.hpp"
+#include "slipwave/medium/materials.hpp"
+#include "slipwave/meshing/mesh_builder.hpp"
+#include "slipwave/physics/rayleigh_damping.hpp"
+#include "slipwave/problem/nodal_acceleration.hpp"
+
+namespace slipwave::input {
+struct FreeField;  // input/free_field.hpp
+struct LateralTie; // input/lateral_tie.hpp
+struct Drm;        // input/drm.hpp
+} // namespace slipwave::input
+namespace slipwave::medium {
+struct Attenuation; // medium/attenuation.hpp
+} // namespace slipwave::medium
+namespace slipwave::porous {
+struct PorePressure; // porous/pore_pressure.hpp
+} // namespace slipwave::porous
+
+namespace slipwave::problem {
+
+struct Elastodynamics {
+  MPI_Comm                        comm = MPI_COMM_NULL;
+  DM                              dm   = nullptr;
+  PetscInt                        dim  = 0;
+  meshing::MeshDescription           mesh;
+  std::vector<medium::RegionMaterialInfo> materials;
+  fem::BulkOperator               bulk;
+  input::BoundaryConditions              bc;
+  double                          damping_ratio = 0, damping_f1 = 0, damping_f2 = 0;
+  physics::RayleighCoefficients   rayleigh{0, 0};
+  std::vector<interface::InterfaceAssembler> interfaces;
+  std::vector<std::string>        penalty_notes; // how each auto penalty was chosen, for the report
+
+  Vec mass = nullptr, inv_mass = nullptr; // lumped, per dof
+  Vec damping_blocks = nullptr;           // per node (C_abs + alpha M)/m, held dofs decoupled; null if none
+  std::vector<PetscInt> absorbing_nodes;  // owned nodes (global-vector order) with a dashpot
+  Vec u_local = nullptr, f_local = nullptr;
+  // Parts of the last RHS evaluation, for the energy ledger.
+  Vec       f_internal = nullptr, f_external = nullptr, f_input = nullptr, f_stiffness_damping = nullptr, f_interface = nullptr;
+  Vec       f_anelastic = nullptr; // + sum of the constant-Q memory forces (zero without attenuation)
+  Vec       f_contact_damping = nullptr; // the interfaces' contact dashpots (zero without them)
+  bool      input_enabled = true;       // off during the geostatic stage
+  std::vector<double> initial_stress;   // 6 per local cell: the geostatic state, added to the output
+  input::FreeField  *free_field = nullptr; // free-field lateral columns (-bc_<side>_type freefield), or null
+  input::LateralTie *tie        = nullptr; // tied lateral sides (-bc_<side>_type tied), or null
+  medium::Attenuation *attenuation = nullptr; // constant-Q damping of regions with a damping ratio, or null
+  input::Drm *drm        = nullptr; // Domain Reduction Method input (-input_method drm), or null
+  porous::PorePressure *pore = nullptr; // pore pressure of saturated regions, or null (dry scenes)
+  Vec       f_pore = nullptr;   // + alpha Q^T p, the pore pressure's force on the skeleton (saturated scenes only)
+  NodalAcceleration nodal;      // a* from the force parts, and where f_ext can be nonzero
+};
+
+PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);
+PetscErrorCode ElastodynamicsDestroy(Elastodynamics *model);
+PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx);
+// The trial states of the last RHS evaluation become the committed ones.
+PetscErrorCode ElastodynamicsCommit(Elastodynamics *model);
+// A "cd" TS (type set, options read) gets the RHS, the commit hook and the nodal damping.
+PetscErrorCode ElastodynamicsSetUpTS(Elastodynamics *model, TS ts);
+// Global f = K x by the element loop (ghost exchange included), as the RHS computes it.
+PetscErrorCode ElastodynamicsStiffnessTimes(Elastodynamics *model, Vec x, Vec f);
+// Stores the cell stresses of the global displacement u as the initial stress.
+PetscErrorCode ElastodynamicsSetInitialStress(Elastodynamics *model, Vec u);
+
+} // namespace slipwave::problem

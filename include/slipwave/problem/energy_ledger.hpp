@@ -1,0 +1,63 @@
+// The energy budget of a run. Central difference conserves, for a linear system at constant
+// step h, the shadow energy W_{n+1/2} = ½ v_{n+1/2}ᵀ M v_{n+1/2} + ½ u_nᵀ K u_{n+1}, and
+//   W_{n+1/2} − W_{n−1/2} = h v_n · f_n,   f_n = M a_n + K u_n (all non-internal forces).
+// The ledger books h v_n·f_n term by term (incident-wave input, gravity and tractions,
+// reactions of held dofs, interface forces, minus dashpot absorption, Rayleigh damping, the
+// work of the constant-Q memory forces and the interfaces' contact dashpots), so
+//   balance error = W_{n+1/2} − W_{1/2} − Σ booked work
+// is round-off for a consistent discretisation, and a growth of it flags an instability.
+#pragma once
+#include <petscts.h>
+
+#include <vector>
+
+#include "slipwave/problem/elastodynamics.hpp"
+
+namespace slipwave::problem {
+
+struct EnergyLedger {
+  double kinetic = 0;   // ½ v_nᵀ M v_n
+  double strain  = 0;   // ½ u_nᵀ K u_n
+  double input   = 0;   // cumulative work of the incident-wave traction
+  double external = 0;  // cumulative work of gravity, tractions, point and body forces
+  double external_gross = 0; // cumulative |work| of those per step: what a load that reverses
+                             // (a Ricker force) put in, though its net work falls back
+  double reactions = 0; // cumulative work of held dofs (prescribed velocity)
+  double absorbed  = 0; // cumulative energy taken by absorbing dashpots
+  double damped    = 0; // cumulative Rayleigh dissipation
+  double anelastic = 0; // cumulative work done against the constant-Q memory forces (energy
+                        // the mechanisms hold or dissipated)
+  double interface_work = 0; // cumulative work of the interface forces on the bulk (minus what
+                             // the interfaces store and dissipate)
+  double contact_damped = 0; // cumulative energy taken by the interfaces' contact dashpots
+  // Saturated scenes (porous/pore_pressure.hpp): the pore pressure's work on the skeleton is
+  // internal; the fluid's shadow storage energy F_{n+1/2} joins the stored energy.
+  bool   fluid = false;
+  double fluid_stored = 0;   // F_{n+1/2} ≈ ½ pᵀ S p, S = ∫N/M
+  double darcy = 0;          // cumulative Darcy (viscous) dissipation, h ½ p_n H (p_n + p_{n-1})
+  double fluid_inflow = 0;   // cumulative work of the prescribed boundary inflow, h p_n q
+  double shadow    = 0; // W_{n+1/2}
+  double shadow_start = 0;
+  double balance_error = 0;
+  double scale = 0;     // largest energy magnitude seen, to make the error relative
+  double h_prev = 0;    // the step before the current one
+  bool   started = false;
+  bool   evaluated = false; // the last update evaluated the stored energies (see below)
+  // The dashpot blocks C of model->absorbing_nodes, bs x bs each, zero in the rows and columns
+  // of held dofs: contiguous, so the per-step absorbed power does not gather them from the
+  // whole-mesh vector of blocks (built at the first update of a run).
+  std::vector<double> absorbing_free_blocks;
+
+  double relativeError() const { return scale > 0 ? balance_error / scale : 0.0; }
+};
+
+// Call once at t_0 (after the initial acceleration) and after every step, with the step size
+// h that the next step will use. Work is booked with the mean of the steps before and after
+// t_n, which keeps the identity to O(Δh) when the step changes. The work is booked at every
+// call (cheap: boundary sums where the scene allows); the stored energies (kinetic, strain,
+// shadow) and the balance only when `evaluate` (and at the first call): a sweep of every dof
+// that costs about a third of a step, so runs evaluate every -energy_interval steps. The
+// balance at an evaluation is the same as if every step had been evaluated.
+PetscErrorCode EnergyLedgerUpdate(Elastodynamics *model, TS ts, PetscReal h, bool evaluate, EnergyLedger *ledger);
+
+} // namespace slipwave::problem

@@ -1,0 +1,46 @@
+// The stable time step of the explicit central difference, in one place: every contribution
+// (bulk Gershgorin rows, interface penalty springs, contact dashpots, Rayleigh stiffness
+// damping, free-field columns) gathered into one limit and what governs it, and the choice of
+// the run's step from -ts_dt / -ts_max_time / -time_step_safety with the check against that
+// limit. The closed forms of one row or mode are physics/stable_time_step.hpp.
+#pragma once
+#include <petscts.h>
+
+#include <string>
+
+#include "slipwave/fem/bulk_operator.hpp"
+#include "slipwave/problem/elastodynamics.hpp"
+
+namespace slipwave::problem {
+
+struct StableStep {
+  double omega_max_bulk = 0; // Gershgorin bound on the largest angular frequency [rad/s]
+  double dt_bulk = 0;        // critical step of the bulk (with stiffness damping) [s]
+  double dt_cfl = 0;         // h_min / vp_max, for comparison only [s]
+  double dt_limit = 0;       // the limit a run must respect [s]
+  double dt_without_interfaces = 0; // the bulk alone, to report what the penalty costs [s]
+  double dt_free_field = 1e300; // the free-field columns' own limit (normally above the bulk's) [s]
+  double dt_without_stiffness_damping = 0; // the same bound with beta = 0, to report what Rayleigh costs [s]
+  double dt_drained = 1e300;  // saturated scenes: the bulk bound without the undrained stiffening alpha^2 Q^T S^-1 Q [s]
+  double dt_diffusion = 1e300; // saturated scenes: the explicit pore-pressure diffusion limit [s]
+  std::string governing;     // which constraint sets dt_limit
+};
+
+struct TimeStepOptions {
+  PetscReal safety     = -1; // fraction of the limit; default kSafetyBulk, or kSafetyInterfaces with interfaces
+  PetscBool safety_set = PETSC_FALSE;
+};
+
+// rows_i with K <= diag(rows) for the bulk stiffness (global vector laid out like u,
+// overwritten; fem::BulkOperator::addStiffnessRowBounds): max rows_i / m_i bounds omega_max^2,
+// for the stable step and the constant-Q reference frequencies.
+// The limit of the whole model (interfaces and free field set up).
+PetscErrorCode StableStepCompute(Elastodynamics *model, StableStep *step);
+// -time_step_safety (read before the heavy setup, so a bad value stops early).
+PetscErrorCode TimeStepOptionsRead(MPI_Comm comm, TimeStepOptions *options);
+// Sets the TS's step (after TSSetFromOptions): -ts_dt when given, else the safety fraction of
+// the limit shortened to a whole number of equal steps to -ts_max_time; stops with one line
+// when the step is above the limit or not positive, or the end time is not positive.
+PetscErrorCode TimeStepChoose(TS ts, const StableStep &step, const TimeStepOptions &options, bool interfaces);
+
+} // namespace slipwave::problem

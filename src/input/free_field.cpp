@@ -1,0 +1,245 @@
+#include "slipwave/input/free_field.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "slipwave/input/boundary_faces.hpp"
+#include "slipwave/medium/attenuation.hpp"
+#include "slipwave/mesh/spectral_layout.hpp"
+#include "slipwave/mesh/vertex_coordinates.hpp"
+#include "slipwave/numerics/gll_basis.hpp"
+#include "slipwave/physics/absorbing_boundary.hpp"
+
+namespace slipwave::input {
+namespace {
+
+// Height (last coordinate) of a vertex point.
+PetscErrorCode vertexHeight(const mesh::VertexCoordinates &vc, PetscInt v, double *z) {
+  double x[3];
+  PetscFunctionBeginUser;
+  PetscCall(vc.Get(v, x));
+  *z = x[vc.dimension() - 1];
+  PetscFunctionReturn(0);
+}
+
+bool sameMaterial(const medium::RegionMaterialInfo &a, const medium::RegionMaterialInfo &b) {
+  return a.elastic.rho == b.elastic.rho && a.elastic.vp == b.elastic.vp && a.elastic.vs == b.elastic.vs && a.damping_ratio == b.damping_ratio;
+}
+
+PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryConditions &bc, const std::vector<medium::RegionMaterialInfo> &materials,
+                         const physics::RayleighCoefficients &rayleigh, const medium::Attenuation *att, double tol, FreeFieldSide *side) {
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  PetscInt dim;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(dm, &dim));
+  side->name = name;
+  std::vector<BoundaryFace> faces;
+  PetscCall(BoundaryFacesGet(dm, name, &faces));
+  mesh::VertexCoordinates vc;
+  PetscCall(vc.Open(dm));
+  // Faces must be vertical: the column models a vertically propagating wave seen through a
+  // vertical side.
+  std::vector<double> local_z;
+  for (const BoundaryFace &f : faces) {
+    PetscCheck(std::fabs(f.normal[dim - 1]) <= 1e-6, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+               "-bc_%s_type freefield: boundary '%s' has a face with normal (%g, %g%s) that is not horizontal; allowed: free-field boundaries on vertical sides",
+               name.c_str(), name.c_str(), f.normal[0], f.normal[1], dim == 3 ? ", ..." : "");
+    for (PetscInt k = 0; k < f.nvert; ++k) {
+      double z = 0;
+      PetscCall(vertexHeight(vc, f.vertices[k], &z));
+      local_z.push_back(z);
+    }
+  }
+  // Node heights: the union over ranks of the side's vertex heights, merged within tol.
+  PetscMPIInt size, nloc = (PetscMPIInt)local_z.size();
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  std::vector<PetscMPIInt> counts(size), displs(size, 0);
+  PetscCallMPI(MPI_Allgather(&nloc, 1, MPI_INT, counts.data(), 1, MPI_INT, comm));
+  for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
+  std::vector<double> all_z(displs[size - 1] + counts[size - 1]);
+  PetscCallMPI(MPI_Allgatherv(local_z.data(), nloc, MPI_DOUBLE, all_z.data(), counts.data(), displs.data(), MPI_DOUBLE, comm));
+  std::sort(all_z.begin(), all_z.end());
+  std::vector<double> heights;
+  for (double z : all_z)
+    if (heights.empty() || z - heights.back() > tol) heights.push_back(z);
+  PetscCheck(heights.size() >= 2, comm, PETSC_ERR_USER_INPUT, "-bc_%s_type freefield: boundary '%s' has no vertical extent; allowed: a vertical side of the mesh",
+             name.c_str(), name.c_str());
+  const int nseg = (int)heights.size() - 1;
+
+  // Each face spans exactly one segment; its region gives the segment's material.
+  physics::FreeFieldColumn probe; // for findNode on the heights
+  {
+    std::vector<physics::ElasticMaterial> dummy(nseg, materials[0].elastic);
+    const std::string problem = probe.setup((int)dim, heights, dummy, 0, 0);
+    PetscCheck(problem.empty(), comm, PETSC_ERR_PLIB, "free-field column of '%s': %s", name.c_str(), problem.c_str());
+  }
+  std::vector<PetscInt> seg_min(nseg, PETSC_MAX_INT), seg_max(nseg, -1);
+  PetscSection          s;
+  PetscCall(DMGetLocalSection(dm, &s));
+  for (const BoundaryFace &f : faces) {
+    int    lo = INT32_MAX, hi = -1;
+    int    nodes[4];
+    for (PetscInt k = 0; k < f.nvert; ++k) {
+      double z = 0;
+      PetscCall(vertexHeight(vc, f.vertices[k], &z));
+      nodes[k] = probe.findNode(z, tol);
+      PetscCheck(nodes[k] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "free-field side '%s': vertex at height %g has no column node", name.c_str(), z);
+      lo = std::min(lo, nodes[k]);
+      hi = std::max(hi, nodes[k]);
+    }
+    PetscCheck(hi == lo + 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+               "-bc_%s_type freefield: a face of '%s' spans heights %g to %g, which holds %d other node height(s) of the side; allowed: a side whose nodes lie on "
+               "common heights (layers of cells, e.g. a box mesh or a Gmsh mesh with the same vertical spacing along the side)",
+               name.c_str(), name.c_str(), heights[lo], heights[hi], std::max(hi - lo - 1, 0));
+    seg_min[lo] = std::min(seg_min[lo], f.region);
+    seg_max[lo] = std::max(seg_max[lo], f.region);
+    for (PetscInt k = 0; k < f.nvert; ++k) {
+      FreeFieldTerm term;
+      PetscCall(PetscSectionGetOffset(s, f.vertices[k], &term.offset));
+      term.node    = nodes[k];
+      term.segment = lo;
+      term.weight  = f.weights[k];
+      for (int d = 0; d < 3; ++d) term.normal[d] = f.normal[d];
+      physics::lysmerDashpot((int)dim, f.normal, f.weights[k], medium::boundaryElastic(materials[f.region]), term.C);
+      side->terms.push_back(term);
+    }
+  }
+  PetscCall(vc.Close());
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, seg_min.data(), nseg, MPIU_INT, MPI_MIN, comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, seg_max.data(), nseg, MPIU_INT, MPI_MAX, comm));
+  std::vector<physics::ElasticMaterial> seg_mat(nseg);
+  for (int e = 0; e < nseg; ++e) {
+    PetscCheck(seg_max[e] >= 0, comm, PETSC_ERR_USER_INPUT, "-bc_%s_type freefield: boundary '%s' has no face between heights %g and %g; allowed: a side without gaps",
+               name.c_str(), name.c_str(), heights[e], heights[e + 1]);
+    const auto &a = materials[seg_min[e]], &b = materials[seg_max[e]];
+    PetscCheck(sameMaterial(a, b), comm, PETSC_ERR_USER_INPUT,
+               "-bc_%s_type freefield: along '%s' between heights %g and %g the regions %s and %s differ; allowed: horizontally layered materials along a free-field side",
+               name.c_str(), name.c_str(), heights[e], heights[e + 1], a.region.c_str(), b.region.c_str());
+    // A saturated segment's vertical chain carries the undrained P modulus: exact for the
+    // vertically incident SV wave (no volume change, no pore pressure), which is why only it
+    // drives free-field sides of saturated sites (problem/elastodynamics.cpp).
+    seg_mat[e] = medium::boundaryElastic(a);
+  }
+  // Spectral elements: the column is the 1D element of the mesh's degree on the side's GLL
+  // nodes (physics/free_field_column.hpp), so a height-only motion is an exact discrete
+  // solution of the main mesh at any degree.
+  const mesh::SpectralLayout *layout = nullptr;
+  PetscCall(mesh::SpectralLayoutOf(dm, &layout));
+  physics::ColumnElement element;
+  if (layout && layout->degree > 1) {
+    const int p    = (int)layout->degree;
+    element.degree = p;
+    element.x.resize(p + 1);
+    element.w.resize(p + 1);
+    element.D.resize((p + 1) * (p + 1));
+    numerics::gllPointsWeights(p, element.x.data(), element.w.data());
+    numerics::lagrangeDerivativeMatrix(p, element.x.data(), element.D.data());
+  }
+  const std::string problem = side->column.setup((int)dim, heights, seg_mat, rayleigh.alpha, rayleigh.beta, element);
+  PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "-bc_%s_type freefield: %s", name.c_str(), problem.c_str());
+  if (att) {
+    // The column's segments carry the damping of the side's cells, so that the free-field
+    // traction matches the interior's stress, memory included.
+    std::vector<physics::ConstantQModel> seg_models(nseg);
+    std::vector<double>                  seg_factor(nseg);
+    for (int e = 0; e < nseg; ++e) {
+      seg_models[e] = att->region_models[seg_min[e]];
+      seg_factor[e] = att->region_factor[seg_min[e]];
+    }
+    const std::string q_problem = side->column.setAttenuation(seg_models, seg_factor);
+    PetscCheck(q_problem.empty(), comm, PETSC_ERR_PLIB, "-bc_%s_type freefield: %s", name.c_str(), q_problem.c_str());
+  }
+  if (bc.input_wave != InputWave::None) side->column.setInput((int)bc.input_component, bc.input_wave == InputWave::P);
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode FreeFieldCreate(DM dm, const BoundaryConditions &bc, const std::vector<medium::RegionMaterialInfo> &materials, const physics::RayleighCoefficients &rayleigh,
+                               const medium::Attenuation *att, double h_min, FreeField **out) {
+  PetscFunctionBeginUser;
+  auto *ff = new FreeField();
+  PetscCall(DMGetDimension(dm, &ff->dim));
+  for (size_t i = 0; i < bc.names.size(); ++i)
+    if (bc.types[i] == BoundaryType::FreeField) {
+      ff->sides.emplace_back();
+      PetscCall(buildSide(dm, bc.names[i], bc, materials, rayleigh, att, 1e-9 * h_min, &ff->sides.back()));
+    }
+  PetscCall(DMCreateGlobalVector(dm, &ff->force));
+  PetscCall(DMCreateLocalVector(dm, &ff->force_local));
+  PetscCall(VecZeroEntries(ff->force));
+  *out = ff;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FreeFieldUpdate(FreeField *ff, DM dm, TS ts, PetscReal t, double v_in, bool enabled) {
+  PetscFunctionBeginUser;
+  if (!enabled) {
+    PetscCall(VecZeroEntries(ff->force));
+    PetscFunctionReturn(0);
+  }
+  PetscReal h_ts = 0;
+  if (ts) PetscCall(TSGetTimeStep(ts, &h_ts));
+  for (FreeFieldSide &side : ff->sides) {
+    physics::FreeFieldColumn &col = side.trial;
+    col                           = side.column;
+    if (!col.started()) {
+      col.start(t, v_in);
+    } else if (t > col.time()) {
+      // The TS's own step when it is the one being taken (avoids the round-off of t - t_n).
+      const double h = ts && std::fabs(col.time() + h_ts - t) <= 1e-9 * h_ts ? (double)h_ts : t - col.time();
+      col.step(h, v_in);
+    } else {
+      PetscCheck(t == col.time(), PETSC_COMM_SELF, PETSC_ERR_ORDER, "free-field column of '%s' is at t = %.17g s and cannot go back to t = %.17g s", side.name.c_str(),
+                 col.time(), (double)t);
+    }
+  }
+  ff->has_trial = true;
+  PetscScalar   *f;
+  const PetscInt dim = ff->dim;
+  PetscCall(VecZeroEntries(ff->force_local));
+  PetscCall(VecGetArray(ff->force_local, &f));
+  for (FreeFieldSide &side : ff->sides) {
+    const physics::FreeFieldColumn &col = side.trial;
+    for (const FreeFieldTerm &term : side.terms) {
+      // The face's element's stress at the term's node (GLL face rule; degree 1: the segment's).
+      double sig[9];
+      col.stress(term.segment, term.node, sig);
+      for (PetscInt i = 0; i < dim; ++i) {
+        double fi = 0;
+        for (PetscInt j = 0; j < dim; ++j) fi += term.C[i * dim + j] * col.velocity(term.node, (int)j) + term.weight * sig[i * dim + j] * term.normal[j];
+        f[term.offset + i] += fi;
+      }
+    }
+  }
+  PetscCall(VecRestoreArray(ff->force_local, &f));
+  PetscCall(VecZeroEntries(ff->force));
+  PetscCall(DMLocalToGlobal(dm, ff->force_local, ADD_VALUES, ff->force));
+  PetscFunctionReturn(0);
+}
+
+void FreeFieldCommit(FreeField *ff) {
+  if (!ff || !ff->has_trial) return;
+  for (FreeFieldSide &side : ff->sides) std::swap(side.column, side.trial);
+  ff->has_trial = false;
+}
+
+double FreeFieldStableStep(const FreeField *ff) {
+  double dt = 1e300;
+  if (ff)
+    for (const FreeFieldSide &side : ff->sides) dt = std::min(dt, side.column.stableStep());
+  return dt;
+}
+
+PetscErrorCode FreeFieldDestroy(FreeField **ff) {
+  PetscFunctionBeginUser;
+  if (!*ff) PetscFunctionReturn(0);
+  PetscCall(VecDestroy(&(*ff)->force));
+  PetscCall(VecDestroy(&(*ff)->force_local));
+  delete *ff;
+  *ff = nullptr;
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::input

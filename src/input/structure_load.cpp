@@ -1,0 +1,162 @@
+#include "slipwave/input/structure_load.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace slipwave::input {
+namespace {
+
+struct StructureLoadOptions {
+  std::string  region;
+  PetscReal    force[3]  = {0, 0, 0};
+  PetscReal    moment[3] = {0, 0, 0}; // 2D: moment[0] about z
+  TimeFunction history;
+};
+
+PetscErrorCode readStructureLoad(MPI_Comm comm, PetscInt dim, const std::vector<std::string> &regions, StructureLoadOptions *o, PetscBool *given) {
+  char      region[256] = "";
+  PetscInt  nf = 4, nm = 4; // room for one value too many, to report it
+  PetscReal force[4] = {0, 0, 0, 0}, moment[4] = {0, 0, 0, 0};
+  PetscBool force_set, moment_set;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, "structure_load_", "Structure load (forced vibration)", "slipwave");
+  PetscCall(PetscOptionsString("-region", "region carrying the resultant force and moment (a structure or foundation)", "StructureLoadCreate", region, region, sizeof region,
+                               given));
+  PetscCall(PetscOptionsRealArray("-force", "resultant force fx,fy[,fz] [N; N/m in 2D]", "StructureLoadCreate", force, &nf, &force_set));
+  PetscCall(PetscOptionsRealArray("-moment", "resultant moment about the region's node centroid: M [N m/m] about z in 2D, mx,my,mz [N m] in 3D", "StructureLoadCreate",
+                                  moment, &nm, &moment_set));
+  if (*given) PetscCall(o->history.Read(comm, "structure_load_", HistoryRole::Load, PetscOptionsObject));
+  PetscOptionsEnd();
+  PetscCheck(*given || (!force_set && !moment_set), comm, PETSC_ERR_USER_INPUT,
+             "-structure_load_force or -structure_load_moment is given without its region; allowed: -structure_load_region <one of -regions>");
+  if (!*given) PetscFunctionReturn(0);
+  o->region = region;
+  PetscCheck(std::find(regions.begin(), regions.end(), o->region) != regions.end(), comm, PETSC_ERR_USER_INPUT,
+             "-structure_load_region = %s is not a region; allowed: one of -regions", region);
+  PetscCheck(force_set || moment_set, comm, PETSC_ERR_USER_INPUT, "-structure_load_region = %s has no load; allowed: -structure_load_force and/or -structure_load_moment",
+             region);
+  PetscCheck(!force_set || nf == dim, comm, PETSC_ERR_USER_INPUT, "-structure_load_force has %" PetscInt_FMT " values; allowed: %" PetscInt_FMT, nf, dim);
+  PetscCheck(!moment_set || nm == (dim == 2 ? 1 : 3), comm, PETSC_ERR_USER_INPUT, "-structure_load_moment has %" PetscInt_FMT " values; allowed: %d", nm, dim == 2 ? 1 : 3);
+  std::copy(force, force + 3, o->force);
+  std::copy(moment, moment + 3, o->moment);
+  PetscFunctionReturn(0);
+}
+
+// Global vectors in the displacement layout: 1 on the dofs of the region's nodes, and the
+// nodes' coordinates.
+PetscErrorCode regionNodes(DM dm, const fem::BulkOperator &bulk, PetscInt region, Vec marks, Vec coords) {
+  Vec          mark_local, coord_local;
+  PetscScalar *m, *x;
+  const PetscInt dim = bulk.dimension(), nen = bulk.nodesPerCell();
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(dm, &mark_local));
+  PetscCall(DMGetLocalVector(dm, &coord_local));
+  PetscCall(VecZeroEntries(mark_local));
+  PetscCall(VecGetArray(mark_local, &m));
+  PetscCall(VecGetArray(coord_local, &x));
+  for (PetscInt c = 0; c < bulk.cellCount(); ++c)
+    for (PetscInt a = 0; a < nen; ++a) {
+      const PetscInt off = bulk.cellNodeOffset(c, a);
+      for (PetscInt d = 0; d < dim; ++d) {
+        x[off + d] = bulk.cellCoordinates(c)[a * dim + d];
+        if (bulk.cellRegion(c) == region) m[off + d] = 1;
+      }
+    }
+  PetscCall(VecRestoreArray(coord_local, &x));
+  PetscCall(VecRestoreArray(mark_local, &m));
+  PetscCall(VecZeroEntries(marks));
+  PetscCall(DMLocalToGlobal(dm, mark_local, ADD_VALUES, marks));
+  PetscCall(DMLocalToGlobal(dm, coord_local, INSERT_VALUES, coords));
+  PetscCall(DMRestoreLocalVector(dm, &coord_local));
+  PetscCall(DMRestoreLocalVector(dm, &mark_local));
+  PetscFunctionReturn(0);
+}
+
+// Solves the symmetric 3 x 3 system A x = b by Cramer's rule.
+void solve3(const double A[9], const double b[3], double x[3]) {
+  auto det = [](const double M[9]) { return M[0] * (M[4] * M[8] - M[5] * M[7]) - M[1] * (M[3] * M[8] - M[5] * M[6]) + M[2] * (M[3] * M[7] - M[4] * M[6]); };
+  const double d = det(A);
+  for (int k = 0; k < 3; ++k) {
+    double Ak[9];
+    std::copy(A, A + 9, Ak);
+    for (int i = 0; i < 3; ++i) Ak[i * 3 + k] = b[i];
+    x[k] = det(Ak) / d;
+  }
+}
+
+// pattern_i = F/N + theta x r_i on the marked nodes (see the header).
+PetscErrorCode rigidBodyForces(MPI_Comm comm, PetscInt dim, const StructureLoadOptions &o, Vec marks, Vec coords, Vec pattern, double centroid[3], double *count) {
+  PetscInt           n;
+  const PetscScalar *m, *x;
+  PetscScalar       *f;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(marks, &n));
+  PetscCall(VecGetArrayRead(marks, &m));
+  PetscCall(VecGetArrayRead(coords, &x));
+  double s[4] = {0, 0, 0, 0}; // node count, sum of coordinates
+  for (PetscInt i = 0; i < n; i += dim)
+    if (PetscRealPart(m[i]) > 0) {
+      s[0] += 1;
+      for (PetscInt d = 0; d < dim; ++d) s[1 + d] += x[i + d];
+    }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 4, MPI_DOUBLE, MPI_SUM, comm));
+  *count = s[0];
+  for (int d = 0; d < 3; ++d) centroid[d] = s[0] > 0 ? s[1 + d] / s[0] : 0;
+  double I[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}; // sum of |r|^2 1 - r r^T (r padded to 3D)
+  for (PetscInt i = 0; i < n; i += dim)
+    if (PetscRealPart(m[i]) > 0) {
+      double r[3] = {0, 0, 0};
+      for (PetscInt d = 0; d < dim; ++d) r[d] = x[i + d] - centroid[d];
+      const double r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) I[a * 3 + b] += (a == b ? r2 : 0.0) - r[a] * r[b];
+    }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, I, 9, MPI_DOUBLE, MPI_SUM, comm));
+  double theta[3] = {0, 0, 0};
+  if (dim == 2) theta[2] = I[8] > 0 ? o.moment[0] / I[8] : 0;
+  else solve3(I, o.moment, theta);
+  PetscCall(VecGetArray(pattern, &f));
+  for (PetscInt i = 0; i < n; i += dim) {
+    if (!(PetscRealPart(m[i]) > 0)) continue;
+    double r[3] = {0, 0, 0};
+    for (PetscInt d = 0; d < dim; ++d) r[d] = x[i + d] - centroid[d];
+    const double rot[3] = {theta[1] * r[2] - theta[2] * r[1], theta[2] * r[0] - theta[0] * r[2], theta[0] * r[1] - theta[1] * r[0]};
+    for (PetscInt d = 0; d < dim; ++d) f[i + d] = o.force[d] / s[0] + rot[d];
+  }
+  PetscCall(VecRestoreArray(pattern, &f));
+  PetscCall(VecRestoreArrayRead(coords, &x));
+  PetscCall(VecRestoreArrayRead(marks, &m));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode StructureLoadCreate(DM dm, const fem::BulkOperator &bulk, const std::vector<std::string> &regions, BoundaryConditions *bc) {
+  MPI_Comm             comm = PetscObjectComm((PetscObject)dm);
+  const PetscInt       dim  = bulk.dimension();
+  StructureLoadOptions o;
+  PetscBool            given;
+  PetscFunctionBeginUser;
+  PetscCall(readStructureLoad(comm, dim, regions, &o, &given));
+  if (!given) PetscFunctionReturn(0);
+  const PetscInt region = (PetscInt)(std::find(regions.begin(), regions.end(), o.region) - regions.begin());
+  Vec            marks, coords, pattern;
+  double         centroid[3] = {0, 0, 0}, count = 0;
+  PetscCall(DMCreateGlobalVector(dm, &marks));
+  PetscCall(VecDuplicate(marks, &coords));
+  PetscCall(VecDuplicate(marks, &pattern));
+  PetscCall(VecZeroEntries(pattern));
+  PetscCall(regionNodes(dm, bulk, region, marks, coords));
+  PetscCall(rigidBodyForces(comm, dim, o, marks, coords, pattern, centroid, &count));
+  PetscCall(VecDestroy(&coords));
+  PetscCall(VecDestroy(&marks));
+  const std::string note = "structure load on '" + o.region + "' (" + std::to_string((long)count) + " nodes, centroid " + LoadVectorText(centroid, dim) +
+                           "): force " + LoadVectorText(o.force, dim) + ", moment " + LoadVectorText(o.moment, dim == 2 ? 1 : 3) + ", " +
+                           (o.history.active() ? o.history.describe() : "constant");
+  bc->load_notes.push_back(note);
+  PetscCall(TimedLoadAdopt("structure load " + o.region, pattern, std::move(o.history), bc->constant_force, &bc->timed_loads));
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::input

@@ -1,0 +1,343 @@
+#include "slipwave/physics/hysteretic_soil.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#ifdef __AVX__
+#include <immintrin.h>
+#endif
+#include <stdexcept>
+#include <string>
+
+namespace slipwave::physics {
+namespace {
+
+// Backbone stress over Gmax (a strain).
+double normalisedStress(const SoilBackbone &b, double gamma) { return gamma * modulusReduction(b, gamma); }
+
+std::vector<double> logSpaced(double first, double last, int count) {
+  std::vector<double> v(count);
+  for (int k = 0; k < count; ++k) v[k] = first * std::pow(last / first, (double)k / (count - 1));
+  v.back() = last;
+  return v;
+}
+
+// The backbone at the knots as the model can hold it: the least concave majorant of the points
+// (0, 0), (K_j, F(K_j)) after a running maximum. A parallel Iwan model has a concave,
+// non-decreasing backbone (element moduli >= 0); the given curve is, for the MKZ, GQ/H and
+// Darendeli forms, and then this changes nothing. A table interpolated linearly in ln gamma is
+// not, at a row where its G/Gmax flattens (the slope of tau jumps up there), nor is a curve
+// past a peak; the majorant is the closest admissible curve above it (HystereticSoilModel::
+// knotDeviation says how far it moved a knot).
+std::vector<double> admissibleKnotStress(const SoilBackbone &b, const std::vector<double> &knots) {
+  const int           n = (int)knots.size();
+  std::vector<double> f(n);
+  for (int j = 0; j < n; ++j) f[j] = std::max(normalisedStress(b, knots[j]), j > 0 ? f[j - 1] : 0.0);
+  // Upper hull by the monotone chain, the origin first.
+  std::vector<double> hx = {0.0}, hy = {0.0};
+  for (int j = 0; j < n; ++j) {
+    while (hx.size() >= 2) {
+      const size_t k = hx.size() - 1;
+      // Drop the last vertex if it lies on or below the chord from the one before it to point j.
+      if ((hy[k] - hy[k - 1]) * (knots[j] - hx[k - 1]) <= (f[j] - hy[k - 1]) * (hx[k] - hx[k - 1])) {
+        hx.pop_back();
+        hy.pop_back();
+      } else {
+        break;
+      }
+    }
+    hx.push_back(knots[j]);
+    hy.push_back(f[j]);
+  }
+  std::vector<double> h(n);
+  size_t              seg = 1;
+  for (int j = 0; j < n; ++j) {
+    while (seg + 1 < hx.size() && hx[seg] < knots[j]) ++seg;
+    // A vertex keeps its own value (no interpolation round-off at the points that stay).
+    h[j] = hx[seg] == knots[j] ? hy[seg] : hy[seg - 1] + (hy[seg] - hy[seg - 1]) * (knots[j] - hx[seg - 1]) / (hx[seg] - hx[seg - 1]);
+  }
+  return h;
+}
+
+// Where the line of slope Gmax from the origin meets the first chord (knots 0 and 1) extended
+// back: the model's elastic limit for these knots. A backbone still linear at knot 0 (no
+// deficit) or a first chord of slope Gmax keeps the model elastic up to knot 0 itself.
+double chordElasticLimit(const SoilBackbone &b, const std::vector<double> &knots) {
+  const std::vector<double> f = admissibleKnotStress(b, knots);
+  const double              g0 = knots[0], slope = (f[1] - f[0]) / (knots[1] - g0), deficit = g0 - f[0];
+  if (deficit <= 0 || slope >= 1) return g0;
+  return g0 - deficit / (1 - slope);
+}
+
+void require(bool ok, const std::string &what) {
+  if (!ok) throw std::invalid_argument("hysteretic soil: " + what);
+}
+
+} // namespace
+
+// The piecewise-linear backbone. With knots K_0 < ... < K_{N-1} (log-spaced up to last_knot)
+// the model's backbone is, in stress over Gmax:
+//   slope 1 (Gmax) from 0 to gamma_e, then the chord K_0-K_1 extended back to meet that line
+//   at gamma_e, then the chords K_{j-1}-K_j, and flat beyond K_{N-1}.
+// Its kinks gamma_e, K_1, ..., K_{N-1} are the N yield strains, and the slope drop at each kink
+// is that element's modulus (the slopes sum telescopically to Gmax). It equals the backbone at
+// every knot, K_0 included (K_0 lies on the extended chord), and is linear with slope Gmax
+// below gamma_e. K_0 is placed so that gamma_e = elastic_limit: a chord through K_0 interpolates
+// the small-strain tail that Gmax gamma alone would overstate (putting the first kink on the
+// backbone at the elastic limit instead makes the next chord steeper than the one before
+// it for hyperbolic curves: a negative element modulus). gamma_e grows with K_0 (between K_0/r
+// and K_0 for a hyperbola, r the knot ratio), so bisection in ln K_0 finds it.
+HystereticSoilModel::HystereticSoilModel(double shear_modulus, double bulk_modulus, const SoilBackbone &backbone, const HystereticSurfaces &surfaces)
+    : shear_modulus_(shear_modulus), bulk_modulus_(bulk_modulus), strength_(0) {
+  const int n = surfaces.count;
+  require(shear_modulus > 0 && std::isfinite(shear_modulus), "Gmax must be > 0");
+  require(bulk_modulus > 0 && std::isfinite(bulk_modulus), "the bulk modulus must be > 0");
+  require(n >= 2 && n <= 1000, "the number of surfaces must be 2 to 1000");
+  const double limit = surfaces.elastic_limit, last = surfaces.last_knot;
+  require(limit > 0 && last > 8 * limit && std::isfinite(last), "needs 0 < elastic limit < last knot / 8");
+
+  double lo = std::log(limit), hi = std::log(std::min(8 * limit, std::sqrt(limit * last)));
+  if (chordElasticLimit(backbone, logSpaced(limit, last, n)) >= limit) {
+    hi = lo; // still linear at the elastic limit: the first knot is the elastic limit
+  } else {
+    require(chordElasticLimit(backbone, logSpaced(std::exp(hi), last, n)) >= limit,
+            "the backbone softens too fast below the elastic limit (raise the number of surfaces or lower the elastic limit)");
+    for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (chordElasticLimit(backbone, logSpaced(std::exp(mid), last, n)) >= limit ? hi : lo) = mid;
+    }
+  }
+  // The upper end of the bracket: the elastic limit is reached or passed, never short of it.
+  knots_ = logSpaced(std::exp(hi), last, n);
+
+  const std::vector<double> f = admissibleKnotStress(backbone, knots_);
+  knot_deviation_ = 0;
+  for (int j = 0; j < n; ++j) {
+    const double given = normalisedStress(backbone, knots_[j]);
+    knot_deviation_ = std::max(knot_deviation_, std::fabs(f[j] - given) / given);
+  }
+  std::vector<double> kink(n), slope(n + 1);
+  kink[0] = chordElasticLimit(backbone, knots_);
+  slope[0] = 1;
+  for (int j = 1; j < n; ++j) {
+    kink[j] = knots_[j];
+    slope[j] = (f[j] - f[j - 1]) / (knots_[j] - knots_[j - 1]);
+  }
+  slope[n] = 0;
+  modulus_.resize(n);
+  yield_strain_ = kink;
+  for (int j = 0; j < n; ++j) {
+    // The majorant's slopes fall; what is left is the round-off of a straight stretch.
+    modulus_[j] = shear_modulus * std::max(0.0, slope[j] - slope[j + 1]);
+  }
+  twice_modulus_.resize(n);
+  radius_.resize(n);
+  for (int j = 0; j < n; ++j) {
+    twice_modulus_[j] = 2 * modulus_[j];
+    radius_[j] = yield_strain_[j] / std::sqrt(2.0); // |e - p| of simple shear gamma: gamma / sqrt(2)
+    strength_ += modulus_[j] * yield_strain_[j];
+  }
+}
+
+double HystereticSoilModel::backboneStress(double gamma) const {
+  double tau = 0;
+  for (int j = 0; j < surfaces(); ++j) tau += modulus_[j] * std::min(gamma, yield_strain_[j]);
+  return tau;
+}
+
+double HystereticSoilModel::secantModulusRatio(double gamma) const { return gamma > 0 ? backboneStress(gamma) / (shear_modulus_ * gamma) : 1.0; }
+
+namespace {
+
+// Deviatoric strain in the state's components (xx, yy, xy [, yz, xz]) and the trace.
+template <int Dim>
+double deviator(const double *strain, double *e) {
+  if constexpr (Dim == 2) {
+    const double tr = strain[0] + strain[1], m = tr / 3;
+    e[0] = strain[0] - m;
+    e[1] = strain[1] - m;
+    e[2] = strain[2];
+    return tr;
+  } else {
+    const double tr = strain[0] + strain[1] + strain[2], m = tr / 3;
+    e[0] = strain[0] - m;
+    e[1] = strain[1] - m;
+    e[2] = strain[3];
+    e[3] = strain[4];
+    e[4] = strain[5];
+    return tr;
+  }
+}
+
+// d:d of a deviator in the state's components (d_zz = -(d_xx + d_yy)).
+template <int Dim>
+inline double contracted(const double *d) {
+  double shear = d[2] * d[2];
+  if constexpr (Dim == 3) shear += d[3] * d[3] + d[4] * d[4];
+  const double zz = d[0] + d[1];
+  return d[0] * d[0] + d[1] * d[1] + zz * zz + 2 * shear;
+}
+
+} // namespace
+
+namespace {
+
+// Four elements at a time in explicit vector types: the sums over the elements are reductions
+// that the compiler vectorises only when allowed to reorder them (-ffast-math), which the
+// project does not use. The order of the sums is fixed (four lanes, then lane 0 + 1 + 2 + 3,
+// then the remainder in element order), so a point's answer does not depend on the caller.
+typedef double    Lanes __attribute__((vector_size(4 * sizeof(double))));
+typedef long long Mask __attribute__((vector_size(4 * sizeof(double))));
+
+inline Lanes loadLanes(const double *p) {
+  Lanes v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+inline void storeLanes(double *p, Lanes v) { std::memcpy(p, &v, sizeof v); }
+inline Lanes broadcast(double x) { return Lanes{x, x, x, x}; }
+// sqrt of each lane: one instruction where AVX is there (std::sqrt per lane is not vectorised
+// without -fno-math-errno).
+inline Lanes laneSqrt(Lanes x) {
+#ifdef __AVX__
+  return (Lanes)_mm256_sqrt_pd((__m256d)x);
+#else
+  return Lanes{std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2]), std::sqrt(x[3])};
+#endif
+}
+
+// Element i of the scalar remainder: returns its dissipation, adds its stress 2 G_i d to s.
+template <int Dim>
+inline double updateElement(int n, int i, double two_g, double r, const double *e, const double *state_in, double *state_out, double *s) {
+  constexpr int kDev = HystereticLayout<Dim>::kDeviator;
+  double        d[kDev], dissipation = 0;
+  for (int c = 0; c < kDev; ++c) d[c] = e[c] - state_in[c * n + i];
+  const double n2 = contracted<Dim>(d);
+  if (n2 > r * r) {
+    // Radial return onto |d| = r: p moves along d by |d| - r.
+    const double norm = std::sqrt(n2), scale = r / norm;
+    for (int c = 0; c < kDev; ++c) {
+      d[c] *= scale;
+      if (state_out) state_out[c * n + i] = e[c] - d[c];
+    }
+    dissipation = two_g * r * (norm - r);
+  } else if (state_out && state_out != state_in) {
+    for (int c = 0; c < kDev; ++c) state_out[c * n + i] = state_in[c * n + i];
+  }
+  for (int c = 0; c < kDev; ++c) s[c] += two_g * d[c];
+  return dissipation;
+}
+
+} // namespace
+
+template <int Dim>
+double hystereticUpdate(const HystereticSoilModel &model, const double *state_in, const double *strain, double *stress, double *state_out) {
+  constexpr int kDev = HystereticLayout<Dim>::kDeviator;
+  const int     n = model.surfaces();
+  const double *two_g = model.twiceModulus(), *radius = model.radius();
+  double        e[kDev];
+  const double  tr = deviator<Dim>(strain, e);
+  Lanes         e4[kDev], s4[kDev], dissipation4 = broadcast(0);
+  for (int c = 0; c < kDev; ++c) {
+    e4[c] = broadcast(e[c]);
+    s4[c] = broadcast(0);
+  }
+  int i = 0;
+  for (; i + 4 <= n; i += 4) {
+    Lanes d[kDev];
+    for (int c = 0; c < kDev; ++c) d[c] = e4[c] - loadLanes(state_in + c * n + i);
+    const Lanes zz = d[0] + d[1];
+    Lanes       shear = d[2] * d[2];
+    if constexpr (Dim == 3) shear += d[3] * d[3] + d[4] * d[4];
+    const Lanes n2 = d[0] * d[0] + d[1] * d[1] + zz * zz + 2 * shear;
+    const Lanes r = loadLanes(radius + i), g2 = loadLanes(two_g + i);
+    const Mask  yields = n2 > r * r;
+    if (yields[0] | yields[1] | yields[2] | yields[3]) {
+      // Radial return of the yielding lanes onto |d| = r (scale 1 and no dissipation elsewhere).
+      const Lanes norm = laneSqrt(n2);
+      const Lanes scale = yields ? r / norm : broadcast(1), excess = yields ? norm - r : broadcast(0);
+      for (int c = 0; c < kDev; ++c) {
+        const Lanes p_old = loadLanes(state_in + c * n + i);
+        d[c] *= scale;
+        if (state_out) storeLanes(state_out + c * n + i, yields ? e4[c] - d[c] : p_old);
+      }
+      dissipation4 += g2 * r * excess;
+    } else if (state_out && state_out != state_in) {
+      for (int c = 0; c < kDev; ++c) storeLanes(state_out + c * n + i, loadLanes(state_in + c * n + i));
+    }
+    for (int c = 0; c < kDev; ++c) s4[c] += g2 * d[c];
+  }
+  double s[kDev], dissipation = dissipation4[0] + dissipation4[1] + dissipation4[2] + dissipation4[3];
+  for (int c = 0; c < kDev; ++c) s[c] = s4[c][0] + s4[c][1] + s4[c][2] + s4[c][3];
+  for (; i < n; ++i) dissipation += updateElement<Dim>(n, i, two_g[i], radius[i], e, state_in, state_out, s);
+
+  const double p = model.bulkModulus() * tr;
+  if constexpr (Dim == 2) {
+    stress[0] = p + s[0];
+    stress[1] = p + s[1];
+    stress[2] = s[2];
+    stress[3] = p - (s[0] + s[1]);
+  } else {
+    stress[0] = p + s[0];
+    stress[1] = p + s[1];
+    stress[2] = p - (s[0] + s[1]);
+    stress[3] = s[2];
+    stress[4] = s[3];
+    stress[5] = s[4];
+  }
+  if (state_out) state_out[kDev * n] = std::max(state_in[kDev * n], std::sqrt(2 * contracted<Dim>(e)));
+  return dissipation;
+}
+
+template <int Dim>
+double hystereticStoredEnergy(const HystereticSoilModel &model, const double *state, const double *strain) {
+  constexpr int kDev = HystereticLayout<Dim>::kDeviator;
+  const int     n = model.surfaces();
+  double        e[kDev];
+  const double  tr = deviator<Dim>(strain, e);
+  double        w = 0.5 * model.bulkModulus() * tr * tr;
+  for (int i = 0; i < n; ++i) {
+    double d[kDev];
+    for (int c = 0; c < kDev; ++c) d[c] = e[c] - state[c * n + i];
+    w += 0.5 * model.twiceModulus()[i] * contracted<Dim>(d);
+  }
+  return w;
+}
+
+template <int Dim>
+double equivalentShearStrain(const double *strain) {
+  double e[HystereticLayout<Dim>::kDeviator];
+  deviator<Dim>(strain, e);
+  return std::sqrt(2 * contracted<Dim>(e));
+}
+
+template <int Dim>
+double equivalentShearStress(const double *stress) {
+  // The deviator of the stress in the state's components; s:s / 2 = tau^2 in simple shear.
+  double sd[HystereticLayout<Dim>::kDeviator];
+  if constexpr (Dim == 2) {
+    const double m = (stress[0] + stress[1] + stress[3]) / 3;
+    sd[0] = stress[0] - m;
+    sd[1] = stress[1] - m;
+    sd[2] = stress[2];
+  } else {
+    const double m = (stress[0] + stress[1] + stress[2]) / 3;
+    sd[0] = stress[0] - m;
+    sd[1] = stress[1] - m;
+    sd[2] = stress[3];
+    sd[3] = stress[4];
+    sd[4] = stress[5];
+  }
+  return std::sqrt(0.5 * contracted<Dim>(sd));
+}
+
+template double hystereticUpdate<2>(const HystereticSoilModel &, const double *, const double *, double *, double *);
+template double hystereticUpdate<3>(const HystereticSoilModel &, const double *, const double *, double *, double *);
+template double hystereticStoredEnergy<2>(const HystereticSoilModel &, const double *, const double *);
+template double hystereticStoredEnergy<3>(const HystereticSoilModel &, const double *, const double *);
+template double equivalentShearStrain<2>(const double *);
+template double equivalentShearStrain<3>(const double *);
+template double equivalentShearStress<2>(const double *);
+template double equivalentShearStress<3>(const double *);
+
+} // namespace slipwave::physics

@@ -1,0 +1,646 @@
+#include "slipwave/porous/pore_pressure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "slipwave/fem/node_fields.hpp"
+
+namespace slipwave::porous {
+namespace {
+
+// Adds local per-node values into a global vector of the pressure layout (overwritten).
+PetscErrorCode localToGlobalSum(DM pdm, Vec local, Vec global) {
+  PetscFunctionBeginUser;
+  PetscCall(VecZeroEntries(global));
+  PetscCall(DMLocalToGlobal(pdm, local, ADD_VALUES, global));
+  PetscFunctionReturn(0);
+}
+
+// The per-step cell loops, with the node count and dimension as compile-time constants so
+// the small products unroll, and, like the bulk loop (fem/bulk_operator.cpp), runs of kBatch
+// consecutive cells that share their matrices (every cell of a box-mesh region) done
+// together: each cell's values in one SIMD lane, the matrix entry broadcast. Without this the
+// two loops cost 2.5x the bulk force per flop.
+constexpr int kBatch = 8;
+typedef double BatchVec __attribute__((vector_size(kBatch * sizeof(double))));
+union Lanes {
+  BatchVec v;
+  double   d[kBatch];
+};
+
+// Length of the run of cells from c sharing cell c's matrices, at most kBatch.
+inline size_t runLength(const PetscInt *matrix, size_t c, size_t ncell) {
+  size_t run = 1;
+  while (run < (size_t)kBatch && c + run < ncell && matrix[c + run] == matrix[c]) ++run;
+  return run;
+}
+
+// q_a += sum (alpha Q)_a,bj u_bj: alpha Q u per pressure node.
+template <int NEN, int DIM>
+void addCouplingTimesU(size_t ncell, const PetscInt *matrix, const PetscInt *cell_u, const PetscInt *cell_p, const double *pool, const PetscScalar *u, PetscScalar *q) {
+  constexpr int N = NEN * DIM;
+  size_t        c = 0;
+  while (c < ncell) {
+    const double *__restrict Q   = pool + (size_t)matrix[c] * NEN * N;
+    const size_t             run = runLength(matrix, c, ncell);
+    if (run < (size_t)kBatch) {
+      for (size_t i = c; i < c + run; ++i) {
+        double ue[N];
+        for (int b = 0; b < NEN; ++b)
+          for (int j = 0; j < DIM; ++j) ue[b * DIM + j] = PetscRealPart(u[cell_u[i * NEN + b] + j]);
+        for (int r = 0; r < NEN; ++r) {
+          double sum = 0;
+          for (int k = 0; k < N; ++k) sum += Q[r * N + k] * ue[k];
+          q[cell_p[i * NEN + r]] += sum;
+        }
+      }
+      c += run;
+      continue;
+    }
+    Lanes ue[N], acc[NEN];
+    for (int l = 0; l < kBatch; ++l)
+      for (int b = 0; b < NEN; ++b)
+        for (int j = 0; j < DIM; ++j) ue[b * DIM + j].d[l] = PetscRealPart(u[cell_u[(c + l) * NEN + b] + j]);
+    for (int r = 0; r < NEN; ++r) {
+      BatchVec sum = Q[r * N] * ue[0].v;
+      for (int k = 1; k < N; ++k) sum += Q[r * N + k] * ue[k].v;
+      acc[r].v = sum;
+    }
+    for (int l = 0; l < kBatch; ++l)
+      for (int r = 0; r < NEN; ++r) q[cell_p[(c + l) * NEN + r]] += acc[r].d[l];
+    c += kBatch;
+  }
+}
+
+// One cell's f_bj += sum_a (alpha Q)_a,bj p_a (the skeleton force) from its nodal p.
+template <int NEN, int DIM>
+inline void cellCouplingTranspose(const double *__restrict Q, const double *pe, const PetscInt *cell_u, PetscScalar *f) {
+  constexpr int N = NEN * DIM;
+  double        fe[N] = {};
+  for (int r = 0; r < NEN; ++r)
+    for (int k = 0; k < N; ++k) fe[k] += Q[r * N + k] * pe[r];
+  for (int b = 0; b < NEN; ++b)
+    for (int j = 0; j < DIM; ++j) f[cell_u[b] + j] += fe[b * DIM + j];
+}
+
+// One cell's h_a += sum_b (kappa H)_ab p_b.
+template <int NEN>
+inline void cellDiffusion(const double *__restrict H, const double *pe, const PetscInt *cell_p, PetscScalar *h) {
+  for (int r = 0; r < NEN; ++r) {
+    double sum = 0;
+    for (int b = 0; b < NEN; ++b) sum += H[r * NEN + b] * pe[b];
+    h[cell_p[r]] += sum;
+  }
+}
+
+// The force on the skeleton and H p from one gather of p (the pass of every step).
+template <int NEN, int DIM>
+void addCouplingTransposeAndDiffusion(size_t ncell, const PetscInt *matrix, const PetscInt *cell_u, const PetscInt *cell_p, const double *coupling,
+                                      const double *diffusion, const PetscScalar *p, PetscScalar *f, PetscScalar *h) {
+  constexpr int N = NEN * DIM;
+  size_t        c = 0;
+  while (c < ncell) {
+    const double *__restrict Q   = coupling + (size_t)matrix[c] * NEN * N;
+    const double *__restrict H   = diffusion + (size_t)matrix[c] * NEN * NEN;
+    const size_t             run = runLength(matrix, c, ncell);
+    if (run < (size_t)kBatch) {
+      for (size_t i = c; i < c + run; ++i) {
+        double pe[NEN];
+        for (int r = 0; r < NEN; ++r) pe[r] = PetscRealPart(p[cell_p[i * NEN + r]]);
+        cellCouplingTranspose<NEN, DIM>(Q, pe, cell_u + i * NEN, f);
+        cellDiffusion<NEN>(H, pe, cell_p + i * NEN, h);
+      }
+      c += run;
+      continue;
+    }
+    Lanes pe[NEN], fe[N], he[NEN];
+    for (int l = 0; l < kBatch; ++l)
+      for (int r = 0; r < NEN; ++r) pe[r].d[l] = PetscRealPart(p[cell_p[(c + l) * NEN + r]]);
+    for (int k = 0; k < N; ++k) {
+      BatchVec sum = Q[k] * pe[0].v;
+      for (int r = 1; r < NEN; ++r) sum += Q[r * N + k] * pe[r].v;
+      fe[k].v = sum;
+    }
+    for (int r = 0; r < NEN; ++r) {
+      BatchVec sum = H[r * NEN] * pe[0].v;
+      for (int b = 1; b < NEN; ++b) sum += H[r * NEN + b] * pe[b].v;
+      he[r].v = sum;
+    }
+    for (int l = 0; l < kBatch; ++l) {
+      for (int b = 0; b < NEN; ++b)
+        for (int j = 0; j < DIM; ++j) f[cell_u[(c + l) * NEN + b] + j] += fe[b * DIM + j].d[l];
+      for (int r = 0; r < NEN; ++r) h[cell_p[(c + l) * NEN + r]] += he[r].d[l];
+    }
+    c += kBatch;
+  }
+}
+
+// H p alone (the diffusion sub-steps after the first).
+template <int NEN>
+void addDiffusion(size_t ncell, const PetscInt *matrix, const PetscInt *cell_p, const double *diffusion, const PetscScalar *p, PetscScalar *h) {
+  for (size_t i = 0; i < ncell; ++i) {
+    double pe[NEN];
+    for (int r = 0; r < NEN; ++r) pe[r] = PetscRealPart(p[cell_p[i * NEN + r]]);
+    cellDiffusion<NEN>(diffusion + (size_t)matrix[i] * NEN * NEN, pe, cell_p + i * NEN, h);
+  }
+}
+
+void couplingTimesU(const PorePressure &pp, const PetscScalar *u, PetscScalar *q) {
+  const size_t n = pp.cells.size();
+  const PetscInt *m = pp.cell_matrix.data(), *cu = pp.cell_u.data(), *cp = pp.cell_p.data();
+  switch (pp.nen * pp.dim) {
+  case 6: addCouplingTimesU<3, 2>(n, m, cu, cp, pp.coupling.data(), u, q); break;
+  case 8: addCouplingTimesU<4, 2>(n, m, cu, cp, pp.coupling.data(), u, q); break;
+  case 12: addCouplingTimesU<4, 3>(n, m, cu, cp, pp.coupling.data(), u, q); break;
+  case 24: addCouplingTimesU<8, 3>(n, m, cu, cp, pp.coupling.data(), u, q); break;
+  default: break;
+  }
+}
+
+void couplingTransposeAndDiffusion(const PorePressure &pp, const PetscScalar *p, PetscScalar *f, PetscScalar *h) {
+  const size_t n = pp.cells.size();
+  const PetscInt *m = pp.cell_matrix.data(), *cu = pp.cell_u.data(), *cp = pp.cell_p.data();
+  const double   *Q = pp.coupling.data(), *H = pp.diffusion.data();
+  switch (pp.nen * pp.dim) {
+  case 6: addCouplingTransposeAndDiffusion<3, 2>(n, m, cu, cp, Q, H, p, f, h); break;
+  case 8: addCouplingTransposeAndDiffusion<4, 2>(n, m, cu, cp, Q, H, p, f, h); break;
+  case 12: addCouplingTransposeAndDiffusion<4, 3>(n, m, cu, cp, Q, H, p, f, h); break;
+  case 24: addCouplingTransposeAndDiffusion<8, 3>(n, m, cu, cp, Q, H, p, f, h); break;
+  default: break;
+  }
+}
+
+void diffusionTimes(const PorePressure &pp, const PetscScalar *p, PetscScalar *h) {
+  const size_t n = pp.cells.size();
+  const PetscInt *m = pp.cell_matrix.data(), *cp = pp.cell_p.data();
+  switch (pp.nen) {
+  case 3: addDiffusion<3>(n, m, cp, pp.diffusion.data(), p, h); break;
+  case 4: addDiffusion<4>(n, m, cp, pp.diffusion.data(), p, h); break;
+  case 8: addDiffusion<8>(n, m, cp, pp.diffusion.data(), p, h); break;
+  default: break;
+  }
+}
+
+// The diffusion part of the step of size h from the committed p_n (cached until the commit):
+// p_star and Hbar, with S (p_star - p_n) = -h Hbar on free nodes.
+PetscErrorCode diffuse(PorePressure *pp, double h) {
+  PetscFunctionBeginUser;
+  // The ledger asks with the TS's step, the RHS with t_{n+1} - t_n: equal up to round-off.
+  if (pp->diffused_h >= 0 && std::fabs(pp->diffused_h - h) <= 1e-12 * h) PetscFunctionReturn(0);
+  pp->substeps = PorePressureSubsteps(pp, h);
+  const double sub = h / (double)pp->substeps;
+  PetscCall(VecCopy(pp->p, pp->p_star));
+  PetscCall(VecZeroEntries(pp->Hbar));
+  for (PetscInt k = 0; k < pp->substeps && h > 0; ++k) {
+    PetscScalar       *q, *ps, *hb;
+    const PetscScalar *pl, *hl, *inv;
+    // H p^k: for k = 0 the pass that formed the last force left H p_n; later ones are summed
+    // over ranks into Hbar_trial (a free work vector here).
+    Vec Hpk = pp->Hp;
+    if (k > 0) {
+      PetscCall(DMGlobalToLocal(pp->pdm, pp->p_star, INSERT_VALUES, pp->p_local));
+      PetscCall(VecZeroEntries(pp->q_local));
+      PetscCall(VecGetArray(pp->q_local, &q));
+      PetscCall(VecGetArrayRead(pp->p_local, &pl));
+      diffusionTimes(*pp, pl, q);
+      PetscCall(VecRestoreArrayRead(pp->p_local, &pl));
+      PetscCall(VecRestoreArray(pp->q_local, &q));
+      PetscCall(localToGlobalSum(pp->pdm, pp->q_local, pp->Hbar_trial));
+      Hpk = pp->Hbar_trial;
+    }
+    PetscInt n;
+    PetscCall(VecGetLocalSize(pp->p_star, &n));
+    PetscCall(VecGetArray(pp->p_star, &ps));
+    PetscCall(VecGetArray(pp->Hbar, &hb));
+    PetscCall(VecGetArrayRead(Hpk, &hl));
+    PetscCall(VecGetArrayRead(pp->inv_storage, &inv));
+    for (PetscInt i = 0; i < n; ++i) {
+      hb[i] += hl[i] / (double)pp->substeps;
+      ps[i] -= sub * inv[i] * hl[i];
+    }
+    PetscCall(VecRestoreArrayRead(pp->inv_storage, &inv));
+    PetscCall(VecRestoreArrayRead(Hpk, &hl));
+    PetscCall(VecRestoreArray(pp->Hbar, &hb));
+    PetscCall(VecRestoreArray(pp->p_star, &ps));
+  }
+  pp->diffused_h = h;
+  PetscFunctionReturn(0);
+}
+
+// Element matrices per distinct bulk matrix, the cell lists and their node offsets.
+PetscErrorCode buildCells(DM pdm, const fem::BulkOperator &bulk, PorePressure *pp) {
+  PetscSection section;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(pdm, &section));
+  pp->nen = bulk.nodesPerCell();
+  pp->dim = bulk.dimension();
+  const PetscInt          nen = pp->nen, nd = nen * pp->dim;
+  std::map<PetscInt, PetscInt> index; // bulk matrix -> ours
+  for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
+    const SaturatedRegion &r = pp->regions[bulk.cellRegion(c)];
+    if (!r.saturated) continue;
+    auto found = index.find(bulk.cellMatrix(c));
+    if (found == index.end()) {
+      const PetscInt k = (PetscInt)index.size();
+      found            = index.emplace(bulk.cellMatrix(c), k).first;
+      pp->coupling.resize((size_t)(k + 1) * nen * nd);
+      pp->diffusion.resize((size_t)(k + 1) * nen * nen);
+      pp->storage_element.resize((size_t)(k + 1) * nen);
+      double *Q = &pp->coupling[(size_t)k * nen * nd], *H = &pp->diffusion[(size_t)k * nen * nen];
+      fem::elementCoupling(bulk.shape(), bulk.cellCoordinates(c), Q);
+      fem::elementDiffusion(bulk.shape(), bulk.cellCoordinates(c), H);
+      fem::elementLumpedMass(bulk.shape(), bulk.cellCoordinates(c), 1.0 / r.M, &pp->storage_element[(size_t)k * nen]);
+      for (PetscInt i = 0; i < nen * nd; ++i) Q[i] *= r.alpha;
+      for (PetscInt i = 0; i < nen * nen; ++i) H[i] *= r.kappa;
+    }
+    pp->cells.push_back(c);
+    pp->cell_matrix.push_back(found->second);
+    for (PetscInt a = 0; a < nen; ++a) {
+      PetscInt off;
+      PetscCall(PetscSectionGetOffset(section, bulk.cellVertex(c, a), &off));
+      pp->cell_p.push_back(off);
+      pp->cell_u.push_back(bulk.cellNodeOffset(c, a));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+// Lumped storage, the free mask, the inflow, and the explicit diffusion limit over free nodes.
+PetscErrorCode assembleNodal(DM dm, const std::vector<std::string> &boundaries, PorePressure *pp) {
+  Vec          drained_local, inflow_local, drained, rows;
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  const PetscInt nen = pp->nen;
+  PetscCall(DMCreateGlobalVector(pp->pdm, &pp->storage));
+  for (Vec *v : {&pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial}) {
+    PetscCall(VecDuplicate(pp->storage, v));
+    PetscCall(VecZeroEntries(*v));
+  }
+  PetscCall(DMCreateLocalVector(pp->pdm, &pp->p_local));
+  PetscCall(VecDuplicate(pp->p_local, &pp->q_local));
+  PetscCall(VecDuplicate(pp->p_local, &drained_local));
+  PetscCall(VecDuplicate(pp->p_local, &inflow_local));
+  PetscCall(VecDuplicate(pp->storage, &drained));
+  PetscCall(VecDuplicate(pp->storage, &rows));
+  // Storage and the Gershgorin rows of H.
+  PetscCall(VecZeroEntries(pp->q_local));
+  PetscCall(VecZeroEntries(pp->p_local));
+  {
+    PetscScalar *h;
+    PetscCall(VecGetArray(pp->q_local, &a));
+    PetscCall(VecGetArray(pp->p_local, &h));
+    for (size_t i = 0; i < pp->cells.size(); ++i) {
+      const double *S = &pp->storage_element[(size_t)pp->cell_matrix[i] * nen], *H = &pp->diffusion[(size_t)pp->cell_matrix[i] * nen * nen];
+      for (PetscInt r = 0; r < nen; ++r) {
+        a[pp->cell_p[i * nen + r]] += S[r];
+        for (PetscInt c = 0; c < nen; ++c) h[pp->cell_p[i * nen + r]] += std::fabs(H[r * nen + c]);
+      }
+    }
+    PetscCall(VecRestoreArray(pp->p_local, &h));
+    PetscCall(VecRestoreArray(pp->q_local, &a));
+  }
+  PetscCall(localToGlobalSum(pp->pdm, pp->q_local, pp->storage));
+  PetscCall(localToGlobalSum(pp->pdm, pp->p_local, rows));
+  PetscCall(VecZeroEntries(drained_local));
+  PetscCall(VecZeroEntries(inflow_local));
+  PetscCall(PorePressureReadFluidBoundaries(dm, pp->pdm, boundaries, pp->regions, drained_local, inflow_local, pp));
+  PetscCall(localToGlobalSum(pp->pdm, drained_local, drained));
+  PetscCall(localToGlobalSum(pp->pdm, inflow_local, pp->inflow));
+  {
+    PetscInt           n;
+    const PetscScalar *s, *d, *h;
+    PetscScalar       *inv, *mask;
+    PetscCall(VecGetLocalSize(pp->storage, &n));
+    PetscCall(VecGetArrayRead(pp->storage, &s));
+    PetscCall(VecGetArrayRead(drained, &d));
+    PetscCall(VecGetArrayRead(rows, &h));
+    PetscCall(VecGetArray(pp->inv_storage, &inv));
+    PetscCall(VecGetArray(pp->free_mask, &mask));
+    for (PetscInt i = 0; i < n; ++i) {
+      const bool free = PetscRealPart(s[i]) > 0 && PetscRealPart(d[i]) == 0;
+      mask[i]         = free ? 1.0 : 0.0;
+      inv[i]          = free ? 1.0 / s[i] : 0.0;
+      if (free) pp->dt_diffusion = std::min(pp->dt_diffusion, physics::explicitDiffusionStepOfRow(PetscRealPart(s[i]), PetscRealPart(h[i])));
+    }
+    PetscCall(VecRestoreArray(pp->free_mask, &mask));
+    PetscCall(VecRestoreArray(pp->inv_storage, &inv));
+    PetscCall(VecRestoreArrayRead(rows, &h));
+    PetscCall(VecRestoreArrayRead(drained, &d));
+    PetscCall(VecRestoreArrayRead(pp->storage, &s));
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &pp->dt_diffusion, 1, MPI_DOUBLE, MPI_MIN, PetscObjectComm((PetscObject)dm)));
+  for (Vec *v : {&drained_local, &inflow_local, &drained, &rows}) PetscCall(VecDestroy(v));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const std::vector<std::string> &boundaries, std::vector<SaturatedRegion> regions,
+                                  double gravity, const double *gravity_direction, PorePressure **out) {
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  PetscFunctionBeginUser;
+  auto *pp    = new PorePressure();
+  pp->regions = std::move(regions);
+  PetscBool subcycle = PETSC_TRUE, water_table = PETSC_FALSE;
+  PetscReal elevation = 0;
+  PetscOptionsBegin(comm, "", "Pore pressure of saturated regions", "slipwave");
+  PetscCall(PetscOptionsBool("-pore_pressure_subcycle", "sub-step the explicit pore-pressure diffusion within each step instead of lowering the step to its limit",
+                             "PorePressureCreate", subcycle, &subcycle, nullptr));
+  PetscCall(PetscOptionsReal("-water_table", "elevation of the free water surface [m], measured against -gravity_direction (with -gravity > 0; hydrostatic pressure below it)",
+                             "PorePressureCreate", elevation, &elevation, &water_table));
+  PetscOptionsEnd();
+  PetscCheck(gravity == 0 || water_table, comm, PETSC_ERR_USER_INPUT,
+             "-gravity = %g with a saturated region (-material_<r>_saturated) needs -water_table; allowed: the elevation [m] of the free water surface", gravity);
+  PetscCheck(!water_table || gravity > 0, comm, PETSC_ERR_USER_INPUT, "-water_table = %g m needs gravity; allowed: with -gravity > 0", (double)elevation);
+  pp->subcycle              = subcycle;
+  pp->water_table           = water_table;
+  pp->water_table_elevation = elevation;
+  double rho_f              = -1;
+  for (const SaturatedRegion &r : pp->regions)
+    if (r.saturated) {
+      PetscCheck(!water_table || rho_f < 0 || r.biot.fluid_density == rho_f, comm, PETSC_ERR_USER_INPUT,
+                 "-material_<r>_fluid_density differs between saturated regions (%g and %g kg/m^3) under one -water_table; allowed: one fluid density", rho_f,
+                 r.biot.fluid_density);
+      rho_f = r.biot.fluid_density;
+    }
+  PetscCall(fem::NodeFieldCreateDM(dm, 1, &pp->pdm));
+  PetscCall(buildCells(pp->pdm, bulk, pp));
+  PetscCall(assembleNodal(dm, boundaries, pp));
+  PetscCall(VecDuplicate(pp->p, &pp->p_hydrostatic));
+  PetscCall(VecDuplicate(pp->p, &pp->p_total));
+  PetscCall(VecDuplicate(pp->p, &pp->p_total_trial));
+  PetscCall(VecZeroEntries(pp->p_hydrostatic));
+  if (water_table) {
+    // p_h = rho_f g (elevation - z)+ at the nodes of saturated cells, z = -x . g_hat. At and
+    // above the water table the pore pressure is atmospheric: those nodes are drained.
+    PetscScalar *ph, *above;
+    Vec          above_global;
+    PetscCall(VecZeroEntries(pp->p_local));
+    PetscCall(VecZeroEntries(pp->q_local));
+    PetscCall(VecGetArray(pp->p_local, &ph));
+    PetscCall(VecGetArray(pp->q_local, &above));
+    for (size_t i = 0; i < pp->cells.size(); ++i) {
+      const double *x = bulk.cellCoordinates(pp->cells[i]);
+      for (PetscInt a = 0; a < pp->nen; ++a) {
+        double z = 0;
+        for (PetscInt d = 0; d < pp->dim; ++d) z -= x[a * pp->dim + d] * gravity_direction[d];
+        ph[pp->cell_p[i * pp->nen + a]]    = rho_f * gravity * std::max(0.0, elevation - z);
+        // 2 on the table (within round-off of its elevation), 1 above it.
+        above[pp->cell_p[i * pp->nen + a]] = z >= elevation ? (z <= elevation + 1e-9 * std::max(1.0, std::fabs(elevation)) ? 2.0 : 1.0) : 0.0;
+      }
+    }
+    PetscCall(VecRestoreArray(pp->q_local, &above));
+    PetscCall(VecRestoreArray(pp->p_local, &ph));
+    PetscCall(DMLocalToGlobal(pp->pdm, pp->p_local, INSERT_VALUES, pp->p_hydrostatic));
+    PetscCall(VecDuplicate(pp->p, &above_global));
+    PetscCall(DMLocalToGlobal(pp->pdm, pp->q_local, INSERT_VALUES, above_global));
+    {
+      // Nodes on the table that no fluid boundary drained already: a noflow interface may
+      // seal them again (PorePressureInterfaceFluid).
+      PetscInt           n;
+      PetscScalar       *at;
+      const PetscScalar *ab, *mask;
+      PetscCall(VecDuplicate(pp->p, &pp->at_water_table));
+      PetscCall(VecGetLocalSize(pp->p, &n));
+      PetscCall(VecGetArray(pp->at_water_table, &at));
+      PetscCall(VecGetArrayRead(above_global, &ab));
+      PetscCall(VecGetArrayRead(pp->free_mask, &mask));
+      for (PetscInt i = 0; i < n; ++i) at[i] = PetscRealPart(ab[i]) > 1.5 && PetscRealPart(mask[i]) > 0 ? 1.0 : 0.0;
+      PetscCall(VecRestoreArrayRead(pp->free_mask, &mask));
+      PetscCall(VecRestoreArrayRead(above_global, &ab));
+      PetscCall(VecRestoreArray(pp->at_water_table, &at));
+    }
+    PetscCall(PorePressureDrainNodes(pp, above_global));
+    PetscCall(VecDestroy(&above_global));
+    pp->drained.push_back("the water table and above");
+  }
+  // Until the first trial (and through the geostatic stage) interfaces see the hydrostatic p.
+  PetscCall(VecCopy(pp->p_hydrostatic, pp->p_total_trial));
+  *out = pp;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureAddHydrostaticForce(PorePressure *pp, DM dm, Vec f) {
+  Vec                f_local, f_global;
+  PetscScalar       *fl, *q;
+  const PetscScalar *pl;
+  PetscFunctionBeginUser;
+  PetscCall(DMGlobalToLocal(pp->pdm, pp->p_hydrostatic, INSERT_VALUES, pp->p_local));
+  PetscCall(DMGetLocalVector(dm, &f_local));
+  PetscCall(VecZeroEntries(f_local));
+  PetscCall(VecZeroEntries(pp->q_local));
+  PetscCall(VecGetArray(f_local, &fl));
+  PetscCall(VecGetArray(pp->q_local, &q)); // H p_h lands here and is not used: p_h drives no flow
+  PetscCall(VecGetArrayRead(pp->p_local, &pl));
+  couplingTransposeAndDiffusion(*pp, pl, fl, q);
+  PetscCall(VecRestoreArrayRead(pp->p_local, &pl));
+  PetscCall(VecRestoreArray(pp->q_local, &q));
+  PetscCall(VecRestoreArray(f_local, &fl));
+  PetscCall(VecDuplicate(f, &f_global));
+  PetscCall(VecZeroEntries(f_global));
+  PetscCall(DMLocalToGlobal(dm, f_local, ADD_VALUES, f_global));
+  PetscCall(DMRestoreLocalVector(dm, &f_local));
+  PetscCall(VecAXPY(f, 1.0, f_global));
+  PetscCall(VecDestroy(&f_global));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureTotal(PorePressure *pp) {
+  PetscFunctionBeginUser;
+  PetscCall(VecWAXPY(pp->p_total, 1.0, pp->p_hydrostatic, pp->p));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureDestroy(PorePressure **pore) {
+  PetscFunctionBeginUser;
+  if (!*pore) PetscFunctionReturn(0);
+  PorePressure *pp = *pore;
+  for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial, &pp->p_hydrostatic, &pp->p_total, &pp->p_total_trial, &pp->at_water_table,
+                 &pp->p_local, &pp->q_local})
+    PetscCall(VecDestroy(v));
+  PetscCall(DMDestroy(&pp->pdm));
+  delete pp;
+  *pore = nullptr;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureTrial(PorePressure *pp, DM dm, const PetscScalar *u, PetscReal t, Vec f_pore) {
+  PetscScalar *q;
+  PetscFunctionBeginUser;
+  // alpha Q u_{n+1}.
+  PetscCall(VecZeroEntries(pp->q_local));
+  PetscCall(VecGetArray(pp->q_local, &q));
+  couplingTimesU(*pp, u, q);
+  PetscCall(VecRestoreArray(pp->q_local, &q));
+  PetscCall(localToGlobalSum(pp->pdm, pp->q_local, pp->Qu_trial));
+  if (!pp->started) {
+    // The first evaluation is the initial state: its alpha Q u is the reference.
+    PetscCall(VecCopy(pp->Qu_trial, pp->Qu));
+    pp->t       = t;
+    pp->started = true;
+  }
+  // p_{n+1} = p* - S^{-1} [alpha Q (u_{n+1} - u_n) - h q] on free nodes; 0 elsewhere.
+  const double h = t - pp->t;
+  PetscCall(diffuse(pp, h));
+  PetscCall(VecCopy(pp->Hbar, pp->Hbar_trial));
+  {
+    PetscInt           n;
+    PetscScalar       *pt;
+    const PetscScalar *ps, *qt, *qc, *in, *inv, *mask;
+    PetscCall(VecGetLocalSize(pp->p, &n));
+    PetscCall(VecGetArray(pp->p_trial, &pt));
+    PetscCall(VecGetArrayRead(pp->p_star, &ps));
+    PetscCall(VecGetArrayRead(pp->Qu_trial, &qt));
+    PetscCall(VecGetArrayRead(pp->Qu, &qc));
+    PetscCall(VecGetArrayRead(pp->inflow, &in));
+    PetscCall(VecGetArrayRead(pp->inv_storage, &inv));
+    PetscCall(VecGetArrayRead(pp->free_mask, &mask));
+    for (PetscInt i = 0; i < n; ++i) pt[i] = mask[i] * (ps[i] - inv[i] * ((qt[i] - qc[i]) - h * in[i]));
+    PetscCall(VecRestoreArrayRead(pp->free_mask, &mask));
+    PetscCall(VecRestoreArrayRead(pp->inv_storage, &inv));
+    PetscCall(VecRestoreArrayRead(pp->inflow, &in));
+    PetscCall(VecRestoreArrayRead(pp->Qu, &qc));
+    PetscCall(VecRestoreArrayRead(pp->Qu_trial, &qt));
+    PetscCall(VecRestoreArrayRead(pp->p_star, &ps));
+    PetscCall(VecRestoreArray(pp->p_trial, &pt));
+  }
+  pp->t_trial = t;
+  PetscCall(VecWAXPY(pp->p_total_trial, 1.0, pp->p_hydrostatic, pp->p_trial));
+  // f_pore = alpha Q^T p and H p at the trial pressure (H p starts the next step's diffusion).
+  Vec                f_local;
+  PetscScalar       *f;
+  const PetscScalar *pl;
+  PetscCall(DMGlobalToLocal(pp->pdm, pp->p_trial, INSERT_VALUES, pp->p_local));
+  PetscCall(DMGetLocalVector(dm, &f_local));
+  PetscCall(VecZeroEntries(f_local));
+  PetscCall(VecZeroEntries(pp->q_local));
+  PetscCall(VecGetArray(f_local, &f));
+  PetscCall(VecGetArray(pp->q_local, &q));
+  PetscCall(VecGetArrayRead(pp->p_local, &pl));
+  couplingTransposeAndDiffusion(*pp, pl, f, q);
+  PetscCall(VecRestoreArrayRead(pp->p_local, &pl));
+  PetscCall(VecRestoreArray(pp->q_local, &q));
+  PetscCall(VecRestoreArray(f_local, &f));
+  PetscCall(VecZeroEntries(f_pore));
+  PetscCall(DMLocalToGlobal(dm, f_local, ADD_VALUES, f_pore));
+  PetscCall(DMRestoreLocalVector(dm, &f_local));
+  PetscCall(localToGlobalSum(pp->pdm, pp->q_local, pp->Hp_trial));
+  PetscFunctionReturn(0);
+}
+
+PetscInt PorePressureSubsteps(const PorePressure *pp, double h) {
+  // The sub-steps take the bulk's default fraction (0.9) of the diffusion limit.
+  return pp->subcycle && h > 0 ? std::max<PetscInt>(1, (PetscInt)std::ceil(h / (0.9 * pp->dt_diffusion))) : 1;
+}
+
+PetscErrorCode PorePressureDiffuseStep(PorePressure *pp, PetscReal h) { return diffuse(pp, h); }
+
+void PorePressureCommit(PorePressure *pp) {
+  if (!pp) return;
+  std::swap(pp->p, pp->p_trial);
+  std::swap(pp->Qu, pp->Qu_trial);
+  std::swap(pp->Hbar_previous, pp->Hbar_trial);
+  std::swap(pp->Hp, pp->Hp_trial);
+  pp->t          = pp->t_trial;
+  pp->diffused_h = -1;
+}
+
+PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pp, DM dm, Vec rows) {
+  const PetscInt nen = pp->nen, dim = pp->dim, nd = nen * dim;
+  Vec            w, f_local, extra;
+  PetscScalar   *q, *f;
+  const PetscScalar *wl;
+  PetscFunctionBeginUser;
+  // w_a = sum_k |alpha Q_ak| / S_a on free pressure nodes.
+  PetscCall(VecDuplicate(pp->storage, &w));
+  PetscCall(VecZeroEntries(pp->q_local));
+  PetscCall(VecGetArray(pp->q_local, &q));
+  for (size_t i = 0; i < pp->cells.size(); ++i) {
+    const double *Q = &pp->coupling[(size_t)pp->cell_matrix[i] * nen * nd];
+    for (PetscInt r = 0; r < nen; ++r)
+      for (PetscInt k = 0; k < nd; ++k) q[pp->cell_p[i * nen + r]] += std::fabs(Q[r * nd + k]);
+  }
+  PetscCall(VecRestoreArray(pp->q_local, &q));
+  PetscCall(localToGlobalSum(pp->pdm, pp->q_local, w));
+  PetscCall(VecPointwiseMult(w, w, pp->inv_storage));
+  PetscCall(DMGlobalToLocal(pp->pdm, w, INSERT_VALUES, pp->q_local));
+  // rows_(b,j) += sum_a |alpha Q_a,bj| w_a  >=  sum_(c,k) |(alpha^2 Q^T S^-1 Q)_(bj),(ck)|.
+  PetscCall(DMGetLocalVector(dm, &f_local));
+  PetscCall(VecZeroEntries(f_local));
+  PetscCall(VecGetArray(f_local, &f));
+  PetscCall(VecGetArrayRead(pp->q_local, &wl));
+  for (size_t i = 0; i < pp->cells.size(); ++i) {
+    const double *Q = &pp->coupling[(size_t)pp->cell_matrix[i] * nen * nd];
+    for (PetscInt b = 0; b < nen; ++b)
+      for (PetscInt j = 0; j < dim; ++j)
+        for (PetscInt r = 0; r < nen; ++r) f[pp->cell_u[i * nen + b] + j] += std::fabs(Q[r * nd + b * dim + j]) * PetscRealPart(wl[pp->cell_p[i * nen + r]]);
+  }
+  PetscCall(VecRestoreArrayRead(pp->q_local, &wl));
+  PetscCall(VecRestoreArray(f_local, &f));
+  PetscCall(VecDuplicate(rows, &extra));
+  PetscCall(VecZeroEntries(extra));
+  PetscCall(DMLocalToGlobal(dm, f_local, ADD_VALUES, extra));
+  PetscCall(DMRestoreLocalVector(dm, &f_local));
+  PetscCall(VecAXPY(rows, 1.0, extra));
+  PetscCall(VecDestroy(&extra));
+  PetscCall(VecDestroy(&w));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureEnergy(PorePressure *pp, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e) {
+  PetscFunctionBeginUser;
+  // Local sums, reduced once: 0 v_{n+1/2} . f_pore, 1 v_n . f_pore on held dofs, 2 p S p,
+  // 3 p . Hbar_n, 4 p . Hbar_{n-1}, 5 p . q.
+  PetscCall(diffuse(pp, h)); // Hbar_n of the step about to be taken
+  double s[6] = {0, 0, 0, 0, 0, 0};
+  {
+    PetscInt           n;
+    const PetscScalar *va, *aa, *fp, *mask;
+    PetscCall(VecGetLocalSize(v, &n));
+    PetscCall(VecGetArrayRead(v, &va));
+    PetscCall(VecGetArrayRead(a, &aa));
+    PetscCall(VecGetArrayRead(f_pore, &fp));
+    PetscCall(VecGetArrayRead(free_mask, &mask));
+    for (PetscInt k = 0; k < n; ++k) {
+      s[0] += PetscRealPart((va[k] + 0.5 * h * aa[k]) * fp[k]);
+      s[1] += PetscRealPart((1.0 - mask[k]) * va[k] * fp[k]);
+    }
+    PetscCall(VecRestoreArrayRead(free_mask, &mask));
+    PetscCall(VecRestoreArrayRead(f_pore, &fp));
+    PetscCall(VecRestoreArrayRead(a, &aa));
+    PetscCall(VecRestoreArrayRead(v, &va));
+  }
+  {
+    PetscInt           n;
+    const PetscScalar *p, *S, *hp, *hq, *q;
+    PetscCall(VecGetLocalSize(pp->p, &n));
+    PetscCall(VecGetArrayRead(pp->p, &p));
+    PetscCall(VecGetArrayRead(pp->storage, &S));
+    PetscCall(VecGetArrayRead(pp->Hbar, &hp));
+    PetscCall(VecGetArrayRead(pp->Hbar_previous, &hq));
+    PetscCall(VecGetArrayRead(pp->inflow, &q));
+    for (PetscInt k = 0; k < n; ++k) {
+      s[2] += PetscRealPart(p[k] * S[k] * p[k]);
+      s[3] += PetscRealPart(p[k] * hp[k]);
+      s[4] += PetscRealPart(p[k] * hq[k]);
+      s[5] += PetscRealPart(p[k] * q[k]);
+    }
+    PetscCall(VecRestoreArrayRead(pp->inflow, &q));
+    PetscCall(VecRestoreArrayRead(pp->Hbar_previous, &hq));
+    PetscCall(VecRestoreArrayRead(pp->Hbar, &hp));
+    PetscCall(VecRestoreArrayRead(pp->storage, &S));
+    PetscCall(VecRestoreArrayRead(pp->p, &p));
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 6, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)v)));
+  // S p_{n+1} = S p_n - h alpha Q v_{n+1/2} - h (Hbar_n - q) on free nodes, p = 0 on the
+  // others, and p_n . alpha Q v = v . alpha Q^T p_n = v . f_pore.
+  e->storage    = 0.5 * (s[2] - h * s[0] - h * s[3] + h * s[5]);
+  e->darcy      = 0.5 * h * (s[3] + s[4]);
+  e->inflow     = h * s[5];
+  e->held_power = s[1];
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::porous

@@ -1,0 +1,189 @@
+#include "slipwave/problem/energy_ledger.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "slipwave/core/log_events.hpp"
+#include "slipwave/porous/pore_pressure.hpp"
+#include "slipwave/time/central_difference.hpp"
+
+namespace slipwave::problem {
+
+namespace {
+
+// The nodal arrays the ledger reads (local, global-vector order).
+struct LedgerArrays {
+  const PetscScalar *u, *v, *a, *mass, *fi, *fx, *fin, *fsd, *fif, *fan, *fcd, *mask;
+};
+
+PetscErrorCode getArrays(Elastodynamics *m, Vec u, Vec v, Vec a, LedgerArrays *x) {
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(u, &x->u));
+  PetscCall(VecGetArrayRead(v, &x->v));
+  PetscCall(VecGetArrayRead(a, &x->a));
+  PetscCall(VecGetArrayRead(m->mass, &x->mass));
+  PetscCall(VecGetArrayRead(m->f_internal, &x->fi));
+  PetscCall(VecGetArrayRead(m->f_external, &x->fx));
+  PetscCall(VecGetArrayRead(m->f_input, &x->fin));
+  PetscCall(VecGetArrayRead(m->f_stiffness_damping, &x->fsd));
+  PetscCall(VecGetArrayRead(m->f_interface, &x->fif));
+  PetscCall(VecGetArrayRead(m->f_anelastic, &x->fan));
+  PetscCall(VecGetArrayRead(m->f_contact_damping, &x->fcd));
+  PetscCall(VecGetArrayRead(m->bc.free_mask, &x->mask));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode restoreArrays(Elastodynamics *m, Vec u, Vec v, Vec a, LedgerArrays *x) {
+  PetscFunctionBeginUser;
+  PetscCall(VecRestoreArrayRead(m->bc.free_mask, &x->mask));
+  PetscCall(VecRestoreArrayRead(m->f_contact_damping, &x->fcd));
+  PetscCall(VecRestoreArrayRead(m->f_anelastic, &x->fan));
+  PetscCall(VecRestoreArrayRead(m->f_interface, &x->fif));
+  PetscCall(VecRestoreArrayRead(m->f_stiffness_damping, &x->fsd));
+  PetscCall(VecRestoreArrayRead(m->f_input, &x->fin));
+  PetscCall(VecRestoreArrayRead(m->f_external, &x->fx));
+  PetscCall(VecRestoreArrayRead(m->f_internal, &x->fi));
+  PetscCall(VecRestoreArrayRead(m->mass, &x->mass));
+  PetscCall(VecRestoreArrayRead(a, &x->a));
+  PetscCall(VecRestoreArrayRead(v, &x->v));
+  PetscCall(VecRestoreArrayRead(u, &x->u));
+  PetscFunctionReturn(0);
+}
+
+// Local sums: 0 kinetic, 1 strain, 2 shadow (the stored energies, only when `stored`),
+// 3 input power, 4 external power, 5 reaction power, 6 absorbed power, 7 damping power,
+// 8 interface power, 9 power of the constant-Q memory forces, 10 contact dashpot power.
+// Written without branches (the mask is 0 or 1) because this pass runs over every dof.
+template <bool stored>
+void sumEveryDof(const LedgerArrays &x, PetscInt n, double h, double alpha, double s[11]) {
+  for (PetscInt k = 0; k < n; ++k) {
+    const double vk = x.v[k], mk = x.mass[k], fik = x.fi[k], held = 1.0 - x.mask[k];
+    if (stored) {
+      const double vhalf = vk + 0.5 * h * x.a[k];
+      s[0] += 0.5 * mk * vk * vk;
+      s[1] += 0.5 * x.u[k] * fik;
+      s[2] += 0.5 * mk * vhalf * vhalf + 0.5 * x.u[k] * fik + 0.5 * h * vhalf * fik;
+    }
+    s[3] += vk * x.fin[k];
+    s[4] += vk * (x.fx[k] - x.fin[k]);
+    // What a support supplies: everything M a + K u asks beyond the applied loads.
+    s[5] += held * vk * (mk * x.a[k] + fik - x.fx[k] - x.fif[k] - x.fan[k] - x.fcd[k]);
+    s[8] += vk * x.fif[k];
+    s[9] += x.mask[k] * vk * x.fan[k];
+    s[10] += vk * x.fcd[k];
+    s[7] += x.mask[k] * vk * (alpha * x.mass[k] * vk + x.fsd[k]);
+  }
+}
+
+// The same work sums where a scene has no force spread over the mesh (no Rayleigh damping,
+// constant Q or interfaces; loads listed by problem/nodal_acceleration): loads act on their
+// listed dofs only and a support's reaction on its held dofs only, so only those are visited.
+void sumListedWork(const LedgerArrays &x, const NodalAcceleration &na, double s[11]) {
+  for (PetscInt k : na.external_dofs) {
+    s[3] += x.v[k] * x.fin[k];
+    s[4] += x.v[k] * (x.fx[k] - x.fin[k]);
+  }
+  for (PetscInt k : na.held_dofs) s[5] += x.v[k] * (x.mass[k] * x.a[k] + x.fi[k] - x.fx[k] - x.fif[k] - x.fan[k] - x.fcd[k]);
+}
+
+// The stored energies alone.
+void sumStored(const LedgerArrays &x, PetscInt n, double h, double s[11]) {
+  for (PetscInt k = 0; k < n; ++k) {
+    const double vk = x.v[k], mk = x.mass[k], fik = x.fi[k];
+    const double vhalf = vk + 0.5 * h * x.a[k];
+    s[0] += 0.5 * mk * vk * vk;
+    s[1] += 0.5 * x.u[k] * fik;
+    s[2] += 0.5 * mk * vhalf * vhalf + 0.5 * x.u[k] * fik + 0.5 * h * vhalf * fik;
+  }
+}
+
+} // namespace
+
+PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool evaluate, EnergyLedger *e) {
+  Vec u, v, a;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(core::event_energy, 0, 0, 0, 0));
+  // The first call is the reference W_{1/2}: always evaluated.
+  evaluate = evaluate || !e->started;
+  PetscCall(TS2GetSolution(ts, &u, &v));
+  PetscCall(time::CentralDifferenceGetAcceleration(ts, &a));
+  PetscInt           n;
+  const PetscInt     bs = m->dim;
+  const PetscScalar *C;
+  LedgerArrays       x;
+  PetscCall(VecGetLocalSize(u, &n));
+  PetscCall(getArrays(m, u, v, a, &x));
+  PetscCall(VecGetArrayRead(m->bc.absorbing_blocks, &C));
+  double       s[11] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  const double alpha = m->rayleigh.alpha;
+  const bool   listed = m->nodal.listed && alpha == 0 && m->rayleigh.beta == 0 && !m->attenuation && m->interfaces.empty();
+  if (listed) {
+    sumListedWork(x, m->nodal, s);
+    if (evaluate) sumStored(x, n, h, s);
+  } else if (evaluate) {
+    sumEveryDof<true>(x, n, h, alpha, s);
+  } else {
+    sumEveryDof<false>(x, n, h, alpha, s);
+  }
+  // Built once per run (a restart's ledger comes without it).
+  if (e->absorbing_free_blocks.size() != m->absorbing_nodes.size() * bs * bs) {
+    e->absorbing_free_blocks.clear();
+    for (PetscInt node : m->absorbing_nodes)
+      for (PetscInt i = 0; i < bs; ++i)
+        for (PetscInt j = 0; j < bs; ++j)
+          e->absorbing_free_blocks.push_back(x.mask[node * bs + i] * x.mask[node * bs + j] > 0 ? C[node * bs * bs + i * bs + j] : 0.0);
+  }
+  PetscCall(VecRestoreArrayRead(m->bc.absorbing_blocks, &C));
+  const double *Cfree = e->absorbing_free_blocks.data();
+  for (PetscInt node : m->absorbing_nodes) {
+    const double *vn = x.v + node * bs;
+    for (PetscInt i = 0; i < bs; ++i)
+      for (PetscInt j = 0; j < bs; ++j) s[6] += vn[i] * Cfree[i * bs + j] * vn[j];
+    Cfree += bs * bs;
+  }
+  PetscCall(restoreArrays(m, u, v, a, &x));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 11, MPI_DOUBLE, MPI_SUM, m->comm));
+
+  porous::PoreEnergy fluid;
+  if (m->pore) {
+    // Its Darcy and inflow work are booked every step like the rest of the work.
+    PetscCall(porous::PorePressureEnergy(m->pore, h, v, a, m->f_pore, m->bc.free_mask, &fluid));
+    s[2] += fluid.storage;
+    s[5] -= fluid.held_power;
+    e->fluid = true;
+  }
+  if (!e->started) {
+    // W_{1/2} is the reference; the work of step 0 is inside it.
+    e->shadow_start = s[2];
+    e->started      = true;
+  } else {
+    const double h_mean = 0.5 * (e->h_prev + h);
+    e->input += h_mean * s[3];
+    e->external += h_mean * s[4];
+    e->external_gross += std::fabs(h_mean * s[4]);
+    e->reactions += h_mean * s[5];
+    e->absorbed += h_mean * s[6];
+    e->damped += h_mean * s[7];
+    e->interface_work += h_mean * s[8];
+    e->anelastic -= h_mean * s[9];
+    e->contact_damped -= h_mean * s[10];
+    e->darcy += fluid.darcy;
+    e->fluid_inflow += fluid.inflow;
+  }
+  e->h_prev = h;
+  e->evaluated = evaluate;
+  if (evaluate) {
+    e->kinetic = s[0];
+    e->strain  = s[1];
+    if (m->pore) e->fluid_stored = fluid.storage;
+    e->shadow        = s[2];
+    e->balance_error = (e->shadow - e->shadow_start) - (e->input + e->external + e->reactions + e->interface_work - e->absorbed - e->damped - e->anelastic - e->contact_damped) -
+                       (e->fluid_inflow - e->darcy);
+    e->scale         = std::max({e->scale, std::fabs(e->shadow), std::fabs(e->input), std::fabs(e->external), std::fabs(e->absorbed), std::fabs(e->damped), std::fabs(e->anelastic),
+                                 std::fabs(e->reactions), std::fabs(e->interface_work), std::fabs(e->contact_damped), e->kinetic + std::fabs(e->strain), e->darcy, std::fabs(e->fluid_stored)});
+  }
+  PetscCall(PetscLogEventEnd(core::event_energy, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::problem
