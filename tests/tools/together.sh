@@ -5,6 +5,10 @@
 # apply to it), first waiting for the oldest run while TEST_JOBS are going; `together_wait`
 # waits for the rest and fails if any run failed, so a failed run fails the test as it did
 # in sequence. Runs on 2 ranks (mpiexec) stay outside: they use both cores themselves.
+# Each run gets its own Open MPI session directory: the suite's singletons are isolated
+# (tests/run_tests.sh), so they all take job id 1 and the same /tmp/ompi.HOST.UID/jf.0/1;
+# the first to finish removed it under the other, which then exited 1 after a complete run
+# (seen in CI, and 1 in 120 in a loop of three concurrent runs).
 TEST_JOBS=${TEST_JOBS:-2}
 together_pids=()
 together_failed=0
@@ -13,7 +17,14 @@ together() {
     wait "${together_pids[0]}" || together_failed=1
     together_pids=("${together_pids[@]:1}")
   fi
-  "$@" &
+  local session
+  session=$(mktemp -d "${TMPDIR:-/tmp}/together.XXXXXX")
+  (
+    rc=0
+    OMPI_MCA_orte_tmpdir_base=$session "$@" || rc=$?
+    rm -rf "$session"
+    exit "$rc"
+  ) &
   together_pids+=($!)
 }
 together_wait() {
