@@ -4,6 +4,8 @@
 #include <cstring>
 #include <sstream>
 
+#include "slipwave/core/option_choice.hpp"
+
 namespace slipwave::medium {
 namespace {
 
@@ -17,7 +19,7 @@ PetscErrorCode materialNamesGiven(std::vector<std::string> *names) {
   std::string       token;
   // With the pore-fluid properties of saturated regions (porous/pore_pressure.cpp).
   const char       *properties[] = {"_rho", "_vp", "_vs", "_E", "_nu", "_damping_ratio", "_reference_frequency", "_saturated", "_porosity",
-                                    "_hydraulic_conductivity", "_fluid_bulk_modulus", "_grain_bulk_modulus", "_fluid_density"};
+                                    "_hydraulic_conductivity", "_fluid_bulk_modulus", "_grain_bulk_modulus", "_fluid_density", "_model"};
   while (ss >> token) {
     if (token.rfind("-material_", 0) != 0) continue;
     std::string rest = token.substr(std::strlen("-material_"));
@@ -52,6 +54,7 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
     const std::string title  = "Material of region " + region;
     PetscReal         rho = 0, vp = 0, vs = 0, young = 0, nu = 0, damping_ratio = 0, reference_frequency = 0;
     PetscBool         has_rho, has_vp, has_vs, has_e, has_nu, has_reference;
+    PetscInt          model = (PetscInt)MaterialModel::Elastic;
     PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
     PetscCall(PetscOptionsReal("-rho", "mass density [kg/m^3], > 0", "MaterialsRead", rho, &rho, &has_rho));
     PetscCall(PetscOptionsReal("-vp", "P-wave speed [m/s], >= sqrt(2) vs (with -vs)", "MaterialsRead", vp, &vp, &has_vp));
@@ -64,6 +67,10 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
     PetscCall(PetscOptionsReal("-reference_frequency",
                                "frequency [Hz] at which this damped region's vp, vs hold (> 0; default: -attenuation_reference_frequency, or automatic)",
                                "MaterialsRead", reference_frequency, &reference_frequency, &has_reference));
+    PetscCall(core::OptionsChoice(PetscOptionsObject, "-model",
+                                  "how the region deforms: elastic, or rigid (one rigid body: no internal waves, no step limit of its own; for a structure "
+                                  "far stiffer than the soil)",
+                                  kMaterialModelNames, 2, &model, nullptr));
     PetscOptionsEnd();
     const char *r = region.c_str();
     PetscCheck(has_rho || has_vp || has_vs || has_e || has_nu, comm, PETSC_ERR_USER_INPUT,
@@ -90,12 +97,16 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
                (double)damping_ratio);
     PetscCheck(!has_reference || (reference_frequency > 0 && damping_ratio > 0), comm, PETSC_ERR_USER_INPUT,
                "-material_%s_reference_frequency = %g; allowed: > 0 Hz, in a region with -material_%s_damping_ratio > 0", r, (double)reference_frequency, r);
+    // A rigid region has no strain: nothing for a damping law to act on.
+    PetscCheck(model != (PetscInt)MaterialModel::Rigid || damping_ratio == 0, comm, PETSC_ERR_USER_INPUT,
+               "-material_%s_damping_ratio = %g with -material_%s_model rigid; allowed: 0 (a rigid region does not deform)", r, (double)damping_ratio, r);
     RegionMaterialInfo info;
     info.region  = region;
     info.elastic = m;
     info.fe      = fem::RegionMaterial{m.rho, physics::lame(m)};
     info.damping_ratio = damping_ratio;
     info.reference_frequency = reference_frequency;
+    info.model               = (MaterialModel)model;
     materials->push_back(info);
   }
   PetscFunctionReturn(0);

@@ -1,5 +1,8 @@
 // Linear elastic isotropic material per region, from -material_<region>_{rho,vp,vs} or
 // -material_<region>_{rho,E,nu}, and a constant-Q damping ratio -material_<region>_damping_ratio.
+// -material_<region>_model says how the region deforms: elastic (the default) or rigid (the
+// region moves as one rigid body, problem/rigid_bodies.hpp; its elastic constants still serve
+// the geostatic stage's static solve).
 // A region without a material, or a -material_<name>_*
 // option naming no region, stops the run.
 #pragma once
@@ -13,6 +16,10 @@
 
 namespace slipwave::medium {
 
+// How a region's material deforms (-material_<region>_model).
+enum class MaterialModel { Elastic, Rigid };
+inline constexpr const char *kMaterialModelNames[] = {"elastic", "rigid"};
+
 struct RegionMaterialInfo {
   std::string               region;
   physics::ElasticMaterial  elastic;
@@ -20,6 +27,7 @@ struct RegionMaterialInfo {
   double                    damping_ratio = 0; // constant-Q damping ratio; 0: elastic
   double                    reference_frequency = 0; // where vp, vs hold in a damped region [Hz]; 0: the global choice
   double                    vp_undrained = 0; // saturated region: P speed with the pore fluid locked in (porous/pore_pressure.hpp); 0: dry
+  MaterialModel             model = MaterialModel::Elastic;
 };
 
 // What a boundary of the region sees (absorbing dashpots, free-field columns): a saturated
