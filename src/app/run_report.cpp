@@ -8,6 +8,7 @@
 #include "slipwave/input/drm.hpp"
 #include "slipwave/medium/attenuation.hpp"
 #include "slipwave/porous/pore_pressure.hpp"
+#include "slipwave/problem/rigid_bodies.hpp"
 
 namespace slipwave::app {
 namespace {
@@ -69,6 +70,7 @@ Resolution resolvedFrequency(const problem::Elastodynamics &model) {
   const PetscInt p = model.bulk.degree();
   Resolution     res;
   for (const auto &m : model.materials) {
+    if (m.model == medium::MaterialModel::Rigid) continue; // carries no waves
     const double f = (double)p * m.elastic.vs / (nodesPerWavelengthNeeded(p) * model.bulk.minElementSize());
     if (res.region.empty() || f < res.frequency) res = {f, m.region};
   }
@@ -135,20 +137,23 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
   const double h    = model.bulk.minElementSize();
   for (const auto &m : model.materials) {
     PetscCall(PetscPrintf(comm, "  region %-10s rho %8.1f kg/m3  vp %8.1f m/s  vs %8.1f m/s", m.region.c_str(), m.elastic.rho, m.elastic.vp, m.elastic.vs));
-    if (fmax > 0 && p == 1) PetscCall(PetscPrintf(comm, "  %5.1f points per S wavelength at %.2f Hz (h_min %.3g m)", nodesPerWavelength(model, m.elastic.vs, fmax), fmax, h));
+    if (m.model == medium::MaterialModel::Rigid) PetscCall(PetscPrintf(comm, "  rigid (its vp, vs serve the geostatic stage only)"));
+    else if (fmax > 0 && p == 1) PetscCall(PetscPrintf(comm, "  %5.1f points per S wavelength at %.2f Hz (h_min %.3g m)", nodesPerWavelength(model, m.elastic.vs, fmax), fmax, h));
     else if (fmax > 0)
       PetscCall(PetscPrintf(comm, "  %5.1f GLL nodes per S wavelength at %.2f Hz (degree %" PetscInt_FMT ", element size %.3g m)", nodesPerWavelength(model, m.elastic.vs, fmax),
                             fmax, p, h));
     PetscCall(PetscPrintf(comm, "\n"));
   }
   for (const auto &m : model.materials)
-    if (fmax > 0 && nodesPerWavelength(model, m.elastic.vs, fmax) < nodesPerWavelengthNeeded(p))
+    if (m.model != medium::MaterialModel::Rigid && fmax > 0 && nodesPerWavelength(model, m.elastic.vs, fmax) < nodesPerWavelengthNeeded(p))
       PetscCall(PetscPrintf(comm,
                             "  warning: region %s is under-resolved for the input's top frequency %.2f Hz: %.1f %s per S wavelength, below the %.3g that elements of degree %" PetscInt_FMT " need (%s); refine the mesh or raise -element_degree\n",
                             m.region.c_str(), fmax, nodesPerWavelength(model, m.elastic.vs, fmax), p == 1 ? "points" : "GLL nodes", nodesPerWavelengthNeeded(p), p,
                             nodesPerWavelengthSource(p)));
   const Resolution res = resolvedFrequency(model);
-  if (p == 1)
+  if (res.region.empty()) {
+    // Every region is rigid: no waves to resolve.
+  } else if (p == 1)
     PetscCall(PetscPrintf(comm, "  resolution: S waves up to %.3g Hz (%d points per wavelength in region %s, h_min %.3g m)\n", res.frequency, (int)nodesPerWavelengthNeeded(p),
                           res.region.c_str(), h));
   else
@@ -169,13 +174,16 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
     PetscCall(PetscPrintf(comm, "    its stiffness-proportional part lowers the stable step from %.4e s (undamped) to %.4e s (-%.1f %%)\n", limit.dt_without_stiffness_damping,
                           limit.dt_bulk, 100 * (1 - limit.dt_bulk / limit.dt_without_stiffness_damping)));
   for (const std::string &line : medium::AttenuationReport(model.attenuation, model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+  PetscCall(PetscPrintf(comm, "%s", problem::RigidBodiesDescribe(model.rigid).c_str()));
   PetscCall(reportInterfaces(model));
   if (model.pore)
     for (const std::string &line : porous::PorePressureReport(model.pore, model.materials, limit.dt_drained, limit.dt_bulk, limit.dt_limit, dt)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   for (const std::string &line : stations.ambiguities()) PetscCall(PetscPrintf(comm, "  %s\n", line.c_str()));
-  PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", limit.dt_limit, limit.governing.c_str(), limit.dt_cfl));
+  if (limit.dt_cfl < 1e300)
+    PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", limit.dt_limit, limit.governing.c_str(), limit.dt_cfl));
+  else PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s)\n", limit.dt_limit, limit.governing.c_str()));
   // dt_bulk, not dt_limit: the free-field columns or the pore-pressure diffusion may set the limit lower without any interface.
-  if (limit.dt_bulk < limit.dt_without_interfaces * (1 - 1e-12))
+  if (limit.dt_without_interfaces < 1e300 && limit.dt_bulk < limit.dt_without_interfaces * (1 - 1e-12))
     PetscCall(PetscPrintf(comm, "  warning: the interface penalty lowers the stable step from %.4e s (bulk alone) to %.4e s (-%.1f %%)\n", limit.dt_without_interfaces,
                           limit.dt_bulk, 100 * (1 - limit.dt_bulk / limit.dt_without_interfaces)));
   PetscCall(PetscPrintf(comm, "  time step %.4e s = %.3f of the limit; %.0f steps to t = %g s\n", (double)dt, dt / limit.dt_limit, std::ceil(max_time / dt), (double)max_time));

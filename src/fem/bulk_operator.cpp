@@ -149,6 +149,8 @@ void applyCells(PetscInt ncell, const PetscInt *__restrict cell_dofs, const Pets
 } // namespace
 
 PetscErrorCode BulkOperator::Setup(DM dm, const std::vector<RegionMaterial> &materials) {
+  region_deforms_.clear();
+  for (const RegionMaterial &m : materials) region_deforms_.push_back(m.deforms);
   PetscInt     c_start, c_end;
   PetscSection section;
   DMLabel      region_label;
@@ -341,12 +343,13 @@ void BulkOperator::addLumpedMass(PetscScalar *mass) const {
 void BulkOperator::addStiffnessRowBounds(PetscScalar *rowabs) const {
   if (degree_ > 1) {
     std::vector<PetscScalar> mass(local_size_, 0.0);
-    spectral_.addLumpedMass(mass.data());
+    spectral_.addLumpedMass(mass.data(), true);
     for (PetscInt k = 0; k < local_size_; ++k) rowabs[k] += omega2_bound_ * mass[k];
     return;
   }
   const PetscInt n = nen_ * dim_;
   for (PetscInt c = 0; c < ncell_; ++c) {
+    if (!region_deforms_[cell_region_[c]]) continue;
     const double *K = &stiffness_[(size_t)cell_matrix_[c] * n * n];
     for (PetscInt a = 0; a < nen_; ++a)
       for (PetscInt i = 0; i < dim_; ++i) {

@@ -185,9 +185,10 @@ void SpectralOperator::addStiffnessTimes(const Subset &s, const PetscScalar *u, 
   fn(s, t, u, f);
 }
 
-void SpectralOperator::addLumpedMass(PetscScalar *mass) const {
+void SpectralOperator::addLumpedMass(PetscScalar *mass, bool deforming_only) const {
   for (PetscInt e = 0; e < nelem_; ++e) {
     const PetscInt r = record_[e];
+    if (deforming_only && !record_material_[r].deforms) continue;
     for (PetscInt a = 0; a < nq_; ++a)
       for (PetscInt c = 0; c < dim_; ++c) mass[node_offset_[e * nq_ + a] + c] += record_material_[r].rho * wdet_[(size_t)r * nq_ + a];
   }
@@ -206,7 +207,8 @@ void SpectralOperator::addStiffnessRowAbsSums(PetscScalar *rowabs) const {
 double SpectralOperator::maxElementEigenBound(EigenBoundKind kind) const {
   double bound = 0;
   for (PetscInt r = 0; r < distinctGeometries(); ++r)
-    bound = std::max(bound, spectralElementEigenBound((int)dim_, (int)degree_, &wdet_[(size_t)r * nq_], &jinv_[(size_t)r * nq_ * dim_ * dim_], record_material_[r].lame,
+    if (record_material_[r].deforms)
+      bound = std::max(bound, spectralElementEigenBound((int)dim_, (int)degree_, &wdet_[(size_t)r * nq_], &jinv_[(size_t)r * nq_ * dim_ * dim_], record_material_[r].lame,
                                                       record_material_[r].rho, kind));
   return bound;
 }

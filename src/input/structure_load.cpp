@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "slipwave/physics/rigid_body.hpp"
+
 namespace slipwave::input {
 namespace {
 
@@ -73,18 +75,6 @@ PetscErrorCode regionNodes(DM dm, const fem::BulkOperator &bulk, PetscInt region
   PetscFunctionReturn(0);
 }
 
-// Solves the symmetric 3 x 3 system A x = b by Cramer's rule.
-void solve3(const double A[9], const double b[3], double x[3]) {
-  auto det = [](const double M[9]) { return M[0] * (M[4] * M[8] - M[5] * M[7]) - M[1] * (M[3] * M[8] - M[5] * M[6]) + M[2] * (M[3] * M[7] - M[4] * M[6]); };
-  const double d = det(A);
-  for (int k = 0; k < 3; ++k) {
-    double Ak[9];
-    std::copy(A, A + 9, Ak);
-    for (int i = 0; i < 3; ++i) Ak[i * 3 + k] = b[i];
-    x[k] = det(Ak) / d;
-  }
-}
-
 // pattern_i = F/N + theta x r_i on the marked nodes (see the header).
 PetscErrorCode rigidBodyForces(MPI_Comm comm, PetscInt dim, const StructureLoadOptions &o, Vec marks, Vec coords, Vec pattern, double centroid[3], double *count) {
   PetscInt           n;
@@ -108,21 +98,21 @@ PetscErrorCode rigidBodyForces(MPI_Comm comm, PetscInt dim, const StructureLoadO
     if (PetscRealPart(m[i]) > 0) {
       double r[3] = {0, 0, 0};
       for (PetscInt d = 0; d < dim; ++d) r[d] = x[i + d] - centroid[d];
-      const double r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) I[a * 3 + b] += (a == b ? r2 : 0.0) - r[a] * r[b];
+      physics::rigidInertiaAdd(1.0, r, I);
     }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, I, 9, MPI_DOUBLE, MPI_SUM, comm));
-  double theta[3] = {0, 0, 0};
-  if (dim == 2) theta[2] = I[8] > 0 ? o.moment[0] / I[8] : 0;
-  else solve3(I, o.moment, theta);
+  // The nodal forces are the "accelerations" of unit masses under (F, M): F/N + theta x r.
+  double Iinv[9];
+  const bool every_rotation[3] = {true, true, true};
+  physics::rigidInertiaInverse((int)dim, I, every_rotation, Iinv);
+  const double moment[3] = {dim == 2 ? 0.0 : o.moment[0], dim == 2 ? 0.0 : o.moment[1], dim == 2 ? o.moment[0] : o.moment[2]};
   PetscCall(VecGetArray(pattern, &f));
   for (PetscInt i = 0; i < n; i += dim) {
     if (!(PetscRealPart(m[i]) > 0)) continue;
-    double r[3] = {0, 0, 0};
+    double r[3] = {0, 0, 0}, fi[3];
     for (PetscInt d = 0; d < dim; ++d) r[d] = x[i + d] - centroid[d];
-    const double rot[3] = {theta[1] * r[2] - theta[2] * r[1], theta[2] * r[0] - theta[0] * r[2], theta[0] * r[1] - theta[1] * r[0]};
-    for (PetscInt d = 0; d < dim; ++d) f[i + d] = o.force[d] / s[0] + rot[d];
+    physics::rigidPointAcceleration(s[0], Iinv, o.force, moment, r, fi);
+    for (PetscInt d = 0; d < dim; ++d) f[i + d] = fi[d];
   }
   PetscCall(VecRestoreArray(pattern, &f));
   PetscCall(VecRestoreArrayRead(coords, &x));

@@ -103,7 +103,7 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
     RegionMaterialInfo info;
     info.region  = region;
     info.elastic = m;
-    info.fe      = fem::RegionMaterial{m.rho, physics::lame(m)};
+    info.fe      = fem::RegionMaterial{m.rho, physics::lame(m), model != (PetscInt)MaterialModel::Rigid};
     info.damping_ratio = damping_ratio;
     info.reference_frequency = reference_frequency;
     info.model               = (MaterialModel)model;

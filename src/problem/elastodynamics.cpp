@@ -17,6 +17,7 @@
 #include "slipwave/numerics/gll_basis.hpp"
 #include "slipwave/porous/pore_pressure.hpp"
 #include "slipwave/problem/nodal_acceleration.hpp"
+#include "slipwave/problem/rigid_bodies.hpp"
 #include "slipwave/time/central_difference.hpp"
 
 namespace slipwave::problem {
@@ -161,6 +162,10 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   // spectral elements do not have.
   PetscCheck(!any_saturated || m->mesh.degree == 1, comm, PETSC_ERR_USER_INPUT,
              "-material_<r>_saturated with -element_degree = %" PetscInt_FMT "; allowed: -element_degree 1 for saturated regions", m->mesh.degree);
+  for (const auto &info : m->materials)
+    PetscCheck(info.model != medium::MaterialModel::Rigid || info.vp_undrained == 0, comm, PETSC_ERR_USER_INPUT,
+               "-material_%s_saturated with -material_%s_model rigid; allowed: a dry rigid region (the pore fluid needs a deforming skeleton)", info.region.c_str(),
+               info.region.c_str());
   PetscCall(readDamping(m));
   PetscCall(medium::AttenuationCreate(comm, &m->materials, &m->attenuation));
   auto setupBulk = [m]() {
@@ -184,6 +189,7 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   }
   if (m->attenuation) PetscCall(medium::AttenuationSetupCells(m->attenuation, m->dm, m->bulk));
   PetscCall(assembleDampingBlocks(m));
+  PetscCall(RigidBodiesCreate(m->dm, m->bulk, m->materials, m->bc, m->mass, &m->rigid));
   PetscCall(input::LateralTieCreate(m->dm, m->bc, m->mass, &m->tie));
   if (m->bc.has_free_field) PetscCall(input::FreeFieldCreate(m->dm, m->bc, m->materials, m->rayleigh, m->attenuation, m->bulk.minCellSize(), &m->free_field));
   PetscCall(input::DrmCreate(drmSetting(*m), &m->drm));
@@ -230,6 +236,7 @@ PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
   PetscCall(input::LateralTieDestroy(&m->tie));
   PetscCall(medium::AttenuationDestroy(&m->attenuation));
   PetscCall(porous::PorePressureDestroy(&m->pore));
+  PetscCall(RigidBodiesDestroy(&m->rigid));
   PetscCall(VecDestroy(&m->f_pore));
   for (auto &iface : m->interfaces) PetscCall(iface.Destroy());
   PetscCall(VecDestroy(&m->f_interface));
@@ -314,6 +321,7 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   if (m->input_enabled)
     for (const input::PrescribedVelocity &p : m->bc.prescribed) PetscCall(VecAXPY(a, p.history.acceleration(t), p.dofs));
   PetscCall(input::LateralTieApply(m->tie, a));
+  if (m->rigid) PetscCall(RigidBodiesProject(m->rigid, m->mass, a));
   PetscCall(PetscLogEventEnd(core::event_boundary, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }

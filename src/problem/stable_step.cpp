@@ -6,6 +6,7 @@
 #include "slipwave/input/free_field.hpp"
 #include "slipwave/physics/stable_time_step.hpp"
 #include "slipwave/porous/pore_pressure.hpp"
+#include "slipwave/problem/rigid_bodies.hpp"
 
 namespace slipwave::problem {
 namespace {
@@ -34,8 +35,9 @@ PetscErrorCode omegaMax(const Elastodynamics *m, Vec rows, PetscReal *omega) {
 
 // Contact dashpots are not proportional to K: the bound is taken row by row, with the Rayleigh
 // beta K rows added to the dashpot rows (every pair counted as closed). *dt: 1e300 without
-// dashpots.
-PetscErrorCode dashpotRowsStep(Elastodynamics *m, Vec stiffness_rows, double *dt, bool *dashpots) {
+// dashpots. Rigid bodies (their stiffness rows already taken out, omega2_rigid their bound)
+// are bounded as wholes: their dashpot rows are summed like their springs.
+PetscErrorCode dashpotRowsStep(Elastodynamics *m, Vec stiffness_rows, double omega2_rigid, double *dt, bool *dashpots) {
   Vec       dashpot_rows;
   PetscReal dashpot_max;
   PetscFunctionBeginUser;
@@ -45,6 +47,11 @@ PetscErrorCode dashpotRowsStep(Elastodynamics *m, Vec stiffness_rows, double *dt
   for (auto &iface : m->interfaces) PetscCall(iface.AddDampingRowAbsSums(dashpot_rows));
   PetscCall(VecMax(dashpot_rows, nullptr, &dashpot_max));
   *dashpots = dashpot_max > 0;
+  if (*dashpots && m->rigid) {
+    double c_rigid;
+    PetscCall(RigidBodiesRowBound(m->rigid, dashpot_rows, &c_rigid));
+    if (omega2_rigid + c_rigid > 0) *dt = physics::centralDifferenceStableStepOfRow(omega2_rigid, m->rayleigh.beta * omega2_rigid + c_rigid);
+  }
   if (*dashpots) {
     PetscInt           n;
     const PetscScalar *k, *c, *im, *mask;
@@ -85,7 +92,12 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   PetscReal omega_bulk = 0, omega_all = 0;
   PetscCall(omegaMax(m, rowabs, &omega_bulk));
   for (auto &iface : m->interfaces) PetscCall(iface.AddStiffnessRowAbsSums(rowabs));
+  // Rigid bodies vibrate only as wholes, on the springs their rows hold.
+  double omega2_rigid = 0;
+  if (m->rigid) PetscCall(RigidBodiesRowBound(m->rigid, rowabs, &omega2_rigid));
   PetscCall(omegaMax(m, rowabs, &omega_all));
+  const bool rigid_governs = std::sqrt(omega2_rigid) > omega_all;
+  omega_all                = std::max(omega_all, (PetscReal)std::sqrt(omega2_rigid));
   auto dtOf = [&](double omega) { return omega > 0 ? physics::centralDifferenceStableStep(omega, m->rayleigh.beta) : 1e300; };
   step->omega_max_bulk        = omega_all;
   step->dt_bulk               = dtOf(omega_all);
@@ -93,12 +105,13 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   step->dt_without_stiffness_damping = omega_all > 0 ? physics::centralDifferenceStableStep(omega_all, 0.0) : 1e300;
   double dt_rows;
   bool   dashpots = false;
-  PetscCall(dashpotRowsStep(m, rowabs, &dt_rows, &dashpots));
+  PetscCall(dashpotRowsStep(m, rowabs, omega2_rigid, &dt_rows, &dashpots));
   if (dashpots) step->dt_bulk = std::min(step->dt_bulk, dt_rows);
   PetscCall(VecDestroy(&rowabs));
   double vp_max = 0;
-  for (const auto &info : m->materials) vp_max = std::max({vp_max, info.elastic.vp, info.vp_undrained});
-  step->dt_cfl   = m->bulk.minCellSize() / vp_max;
+  for (const auto &info : m->materials)
+    if (info.model != medium::MaterialModel::Rigid) vp_max = std::max({vp_max, info.elastic.vp, info.vp_undrained});
+  step->dt_cfl   = vp_max > 0 ? m->bulk.minCellSize() / vp_max : 1e300;
   step->dt_limit = step->dt_bulk;
   // The free-field columns are the 1D version of the side's elements, so their bound
   // (Gershgorin at degree 1, the element eigenvalue at p > 1) is normally below the mesh's;
@@ -110,6 +123,7 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   step->governing = std::string(interfaces_matter ? "bulk stiffness and interface penalty springs" : "bulk stiffness") +
                     (m->rayleigh.beta > 0 ? " with stiffness-proportional damping" : "") + (dashpots ? " and contact dashpots" : "") +
                     (m->bulk.degree() > 1 ? " (certified element bound, degree " + std::to_string(m->bulk.degree()) + ")" : " (Gershgorin bound)");
+  if (rigid_governs) step->governing = std::string("rigid bodies on their supports (trace bound)") + (dashpots ? " and contact dashpots" : "");
   if (free_field_governs) step->governing = m->bulk.degree() > 1 ? "free-field column (element bound)" : "free-field column (Gershgorin bound)";
   // Saturated regions: the pore-pressure diffusion limits the step unless it is sub-stepped.
   if (m->pore) {

@@ -45,6 +45,8 @@ public:
   // Degree 1: the Gershgorin row sums sum_j |K_ij| (diagonally dominant remainder). Degree > 1:
   // r_i = omega2 m_i with omega2 the certified element bound (fem/spectral_kernels.hpp), over
   // all ranks: K <= omega2 M, and about twice the step of the row sums at p >= 4.
+  // Regions that do not deform (RegionMaterial::deforms) add nothing at degree 1 and are left
+  // out of omega2 at degree > 1: their nodes move as rigid bodies, bounded on their own.
   void addStiffnessRowBounds(PetscScalar *rows_local) const;
   // The elements the operators integrate over (degree 1: the cells), with their nodes and
   // stiffness in node-major order (row a*dim+i), the matrix addStiffnessTimes applies (for
@@ -94,6 +96,7 @@ private:
   PetscInt              dim_ = 0, nen_ = 0, ncell_ = 0, local_size_ = 0;
   CellShape             shape_ = CellShape::Quad4;
   std::vector<PetscInt> cell_dofs_, cell_vertices_, cell_region_, cell_matrix_;
+  std::vector<char>     region_deforms_; // per region: RegionMaterial::deforms
   std::vector<double>   cell_coords_, stiffness_, stress_op_, lumped_;
   size_t                matrix_count_ = 0;
   double                h_min_ = 0, h_elem_min_ = 0;

@@ -41,13 +41,15 @@ public:
   };
   Subset subset(const std::vector<PetscInt> &elements) const;
   void   addStiffnessTimes(const Subset &elements, const PetscScalar *u_local, PetscScalar *f_local) const;
-  // Adds the GLL lumped mass rho w_q |det J_q| to every component of every node.
-  void addLumpedMass(PetscScalar *mass_local) const;
+  // Adds the GLL lumped mass rho w_q |det J_q| to every component of every node (of the
+  // elements of deforming regions only, with deforming_only: RegionMaterial::deforms).
+  void addLumpedMass(PetscScalar *mass_local, bool deforming_only = false) const;
   // Adds sum_j |K_e,ij| per dof (element Gershgorin row sums; their assembly bounds the row
   // sums of K, so max_i rowabs_i / m_i >= omega_max^2 as for the Q1 operator).
   void addStiffnessRowAbsSums(PetscScalar *rowabs_local) const;
   // max over this rank's geometry records of spectralElementEigenBound(kind): a rigorous
-  // bound on omega_max^2 of the assembled bulk (reduce with MPI_MAX across ranks).
+  // bound on omega_max^2 of the assembled bulk (reduce with MPI_MAX across ranks). Records of
+  // regions that do not deform (RegionMaterial::deforms) are left out.
   double maxElementEigenBound(EigenBoundKind kind) const;
   // Element matrix of element e: (dim (p+1)^dim)^2 values row-major, row a*dim+i (node-major),
   // the operator addStiffnessTimes applies (for assembling K where a static solve needs it).

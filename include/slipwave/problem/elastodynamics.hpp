@@ -31,6 +31,9 @@ struct Attenuation; // medium/attenuation.hpp
 namespace slipwave::porous {
 struct PorePressure; // porous/pore_pressure.hpp
 } // namespace slipwave::porous
+namespace slipwave::problem {
+struct RigidBodies; // problem/rigid_bodies.hpp
+} // namespace slipwave::problem
 
 namespace slipwave::problem {
 
@@ -64,6 +67,7 @@ struct Elastodynamics {
   porous::PorePressure *pore = nullptr; // pore pressure of saturated regions, or null (dry scenes)
   Vec       f_pore = nullptr;   // + alpha Q^T p, the pore pressure's force on the skeleton (saturated scenes only)
   NodalAcceleration nodal;      // a* from the force parts, and where f_ext can be nonzero
+  RigidBodies *rigid = nullptr; // regions of -material_<r>_model rigid, or null
 };
 
 PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);
