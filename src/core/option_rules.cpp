@@ -301,7 +301,7 @@ bool endsWith(const std::string &s, const char *tail) {
 }
 
 // An interface's penalty options that its rule does not read: -interface_<n>_penalty_length
-// belongs to the rule physical, _penalty_factor to mesh (the default). Checked here, with the
+// belongs to the rule physical (the default), _penalty_factor to mesh. Checked here, with the
 // values, so the mistake stops before the mesh is built. given: option (with "-") -> value.
 PetscErrorCode checkPenaltyRules(MPI_Comm comm, const std::map<std::string, std::string> &given) {
   PetscFunctionBeginUser;
@@ -310,13 +310,14 @@ PetscErrorCode checkPenaltyRules(MPI_Comm comm, const std::map<std::string, std:
     if (option.rfind("-interface_", 0) != 0 || !(length || factor)) continue;
     const std::string pre  = option.substr(1, option.size() - 1 - std::string("penalty_length").size()); // "interface_<n>_" (both tails 14 long)
     const auto        rule = given.find("-" + pre + "penalty_rule");
-    const bool        physical = rule != given.end() && rule->second == "physical";
-    PetscCheck(!(length && !physical), comm, PETSC_ERR_USER_INPUT,
+    PetscBool         mesh = PETSC_FALSE; // matched as the choice itself is (case-insensitive)
+    if (rule != given.end()) PetscCall(PetscStrcasecmp(rule->second.c_str(), "mesh", &mesh));
+    PetscCheck(!(length && mesh), comm, PETSC_ERR_USER_INPUT,
                "-%spenalty_length = %s with -%spenalty_rule mesh; allowed: penalty_length with penalty_rule physical only (mesh uses penalty_factor)", pre.c_str(),
                value.c_str(), pre.c_str());
-    PetscCheck(!(factor && physical), comm, PETSC_ERR_USER_INPUT,
-               "-%spenalty_factor = %s with -%spenalty_rule physical; allowed: penalty_factor with penalty_rule mesh only (physical uses penalty_length [m])",
-               pre.c_str(), value.c_str(), pre.c_str());
+    PetscCheck(!(factor && !mesh), comm, PETSC_ERR_USER_INPUT,
+               "-%spenalty_factor = %s with -%spenalty_rule physical%s; allowed: penalty_factor with penalty_rule mesh only (physical uses penalty_length [m])",
+               pre.c_str(), value.c_str(), pre.c_str(), rule == given.end() ? " (the default)" : "");
   }
   PetscFunctionReturn(0);
 }

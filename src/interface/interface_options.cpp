@@ -67,8 +67,8 @@ PetscErrorCode InterfaceOptionsRead(MPI_Comm comm, const char *prefix, Interface
     static const char *const kRules[] = {"physical", "mesh"};
     PetscInt                 rule     = (PetscInt)o.penalty_rule;
     PetscCall(core::OptionsChoice(PetscOptionsObject, "-penalty_rule",
-                                  "how E, G given as auto are set: physical (E = (lambda+2mu)/L, G = mu/L of the softer side, L = penalty_length: "
-                                  "the same on any mesh) or mesh (default; penalty_factor x (lambda+2mu)/h and x mu/h, h the cell size: changes with the mesh)",
+                                  "how E, G given as auto are set: physical (default; E = (lambda+2mu)/L, G = mu/L of the softer side, L = penalty_length: "
+                                  "the same on any mesh) or mesh (penalty_factor x (lambda+2mu)/h and x mu/h, h the cell size: changes with the mesh)",
                                   kRules, 2, &rule, nullptr));
     o.penalty_rule = (PenaltyRule)rule;
     PetscCall(PetscOptionsReal("-penalty_length",

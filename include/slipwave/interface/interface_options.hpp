@@ -16,16 +16,17 @@
 namespace slipwave::interface {
 
 // How E, G given as `auto` are chosen (docs/convergence-study.md):
-//  Physical: E = (lambda+2mu)/L, G = mu/L of the softer side, L = -<prefix>penalty_length [m]:
-//            the interface is as compliant as a layer of the softer material L thick, whatever
-//            the mesh. Default L: the interface's width (2D: its length; 3D: the square root of
-//            its area) x kDefaultPenaltyLengthFraction.
+//  Physical (the default): E = (lambda+2mu)/L, G = mu/L of the softer side,
+//            L = -<prefix>penalty_length [m]: the interface is as compliant as a layer of the
+//            softer material L thick, whatever the mesh. Default L: the interface's width
+//            (2D: its length; 3D: the square root of its area) x kDefaultPenaltyLengthFraction.
+//            Its stiff contact makes each landing of an elastic block ring the block's own
+//            modes far above what the soil mesh resolves: model such a structure rigid
+//            (-material_<r>_model rigid), as the default scene does.
 //  Mesh:     factor x (lambda+2mu)/h and factor x mu/h (h: the smallest cell size; at
 //            -element_degree p, 3 h_e/(p^2+p+1)): as stiff as one layer of cells, so it
-//            changes with the mesh. Still the default: the physical rule's stiff contact
-//            makes each landing ring the elastic block's modes (66 % of the default scene's
-//            block-top acceleration power above the resolved 25 Hz), which a structure model
-//            without those modes has to answer before it can be the default.
+//            changes with the mesh; for interfaces that are no footing (a bar end, a layer
+//            boundary) where a width means nothing.
 enum class PenaltyRule { Physical = 0, Mesh = 1 };
 // Default penalty length as a fraction of the interface's width. In the default scene
 // (docs/convergence-study.md) halving L from width/100 moves uplift, rocking angle, the block's
@@ -40,7 +41,7 @@ struct InterfaceOptions {
   // InterfaceOptionsCheck; params holds 0 for them until then.
   PetscBool E_auto = PETSC_FALSE;
   PetscBool G_auto = PETSC_FALSE;
-  PenaltyRule penalty_rule = PenaltyRule::Mesh;
+  PenaltyRule penalty_rule = PenaltyRule::Physical;
   double      penalty_length = 0.0;          // [m], physical rule; 0: not given (default from the width)
   double      penalty_factor = 1.0;          // mesh rule: factor x (lambda+2mu)/h and x mu/h of the softer side
   // Fraction of each closed pair's critical normal damping. 0.1 removes the contact stress
