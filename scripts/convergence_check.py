@@ -333,10 +333,15 @@ def report(answers, levels, main, order, ratios):
 
 
 def table(bands, units):
-    lines = [f"{'answer':40s} {'value':>12s} {'band +-':>11s} {'band':>7s} {'order':>12s}  note"]
+    lines = [f"{'answer':40s} {'value':>12s} {'band +-':>11s} {'band':>7s} {'order':>12s}  unit; note (order: observed, or observed>used, or assumed)"]
     for key, b in bands.items():
         rel = "" if b["relative_band"] is None else f"{100 * b['relative_band']:6.1f}%"
-        order = f"{b['order_observed']:.2f} obs" if b["order_observed"] is not None else f"{b['order']:g} assumed"
+        if b["order_observed"] is None:
+            order = f"{b['order']:g} assumed"
+        elif b["order_observed"] > b["order"]:
+            order = f"{b['order_observed']:.2f}>{b['order']:g}"
+        else:
+            order = f"{b['order_observed']:.2f} obs"
         lines.append(f"{key:40s} {b['value']:12.5g} {b['band']:11.3g} {rel:>7s} {order:>12s}  {units(key)}{'; ' + b['note'] if b['note'] else ''}")
     return "\n".join(lines)
 
