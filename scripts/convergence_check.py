@@ -253,7 +253,8 @@ def levels_of(options, args):
                     steps = ladder(companion, third, args.levels)
                     return levels, steps.index(0)
                 tried.append(misfit)
-        fail(tried[0])
+        fail(tried[0] + ("" if tried[0].startswith("-mesh_box_faces") else ", so the region would change shape with the level; allowed: region box edges on the "
+                         "cell edges of every level (another --companion or --third, or another -mesh_box_faces)"))
     degree = int(options.get("element_degree", "1"))
     given = [int(x) for x in (args.degrees or "").split(",") if x.strip()]
     if len(given) != args.levels - 1 or any(d < 1 for d in given):
@@ -282,8 +283,7 @@ def region_boxes_misfit(options, level_faces):
                     inside = lower[a] - 1e-9 * h < edge < upper[a] + 1e-9 * h
                     if inside and abs(cells - round(cells)) > 1e-6:
                         return (f"-{name} {value}: {'xyz'[a]} = {edge:g} lies inside a cell of the {level} level ({h:g} m cells, -mesh_box_faces "
-                                f"{','.join(str(int(n)) for n in faces)}), so the region would change shape; allowed: box edges on the cell edges of every level "
-                                f"(another --companion or --third, or the scene's mesh)")
+                                f"{','.join(str(int(n)) for n in faces)})")
     return None
 
 
