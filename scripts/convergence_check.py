@@ -380,7 +380,7 @@ def main():
     options = read_options_file(args.scene)
     options.update(command_line_options(extra))
     levels, main_index = levels_of(options, args)
-    extra = without_options(extra, ("mesh_box_faces", "element_degree", "output_dir", "output_overwrite"))
+    extra = without_options(extra, ("mesh_box_faces" if args.refine == "h" else "element_degree", "output_dir", "output_overwrite"))
     ratios = [levels[i + 1][2] / levels[i][2] for i in range(len(levels) - 1)]
     os.makedirs(args.out, exist_ok=True)
     print(f"convergence_check: {args.scene}, {len(levels)} levels ({', '.join(n for n, _, _ in levels)}), {args.np} rank(s) each", flush=True)
