@@ -23,7 +23,7 @@ BENCH_SRC:= $(wildcard bench/bench_*.cpp)
 BENCHES  := $(BENCH_SRC:%.cpp=$(BUILD)/%)
 LIB      := $(BUILD)/libslipwave.a
 
-.PHONY: all deps run test bench clean build-only test-only run-only bench-only
+.PHONY: all deps run test bench clean build-only test-only run-only bench-only convergence-check
 # Keep the objects of the programs (make would delete them as intermediates and relink).
 .SECONDARY:
 all: deps
@@ -41,6 +41,12 @@ run-only: build-only
 	mpiexec $(MPIEXEC_FLAGS) -n $(NP) $(BUILD)/slipwave -options_file config/scenes/default.yaml -output_dir $(BUILD)/run/default -output_overwrite
 	/usr/bin/python3 scripts/plot_results.py $(BUILD)/run/default
 	@echo "Open $(BUILD)/run/default/volume.xmf and interface_base.xmf in ParaView (default reader); plots in $(BUILD)/run/default/plots/"
+
+# The scene's main answers with a grid-convergence band: the scene and a companion resolution
+# (scripts/convergence_check.py; CHECK_ARGS: its options, e.g. "--levels 3 -- -ts_max_time 5").
+SCENE ?= config/scenes/default.yaml
+convergence-check: build-only
+	MPIEXEC_FLAGS="$(MPIEXEC_FLAGS)" /usr/bin/python3 scripts/convergence_check.py $(SCENE) --np $(NP) --out $(BUILD)/run/convergence/$(basename $(notdir $(SCENE))) $(CHECK_ARGS)
 
 test: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) build-only && $(MAKE) --no-print-directory test-only
