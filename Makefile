@@ -37,10 +37,12 @@ build-only: $(BINS) $(UNITS) $(BENCHES)
 run: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) build-only && $(MAKE) --no-print-directory run-only
 
+# The default scene (main/) and its 2 m companion (coarse/), then its answers with their
+# grid-convergence bands (scripts/convergence_check.py), then the plots of the main run.
 run-only: build-only
-	mpiexec $(MPIEXEC_FLAGS) -n $(NP) $(BUILD)/slipwave -options_file config/scenes/default.yaml -output_dir $(BUILD)/run/default -output_overwrite
-	/usr/bin/python3 scripts/plot_results.py $(BUILD)/run/default
-	@echo "Open $(BUILD)/run/default/volume.xmf and interface_base.xmf in ParaView (default reader); plots in $(BUILD)/run/default/plots/"
+	MPIEXEC_FLAGS="$(MPIEXEC_FLAGS)" /usr/bin/python3 scripts/convergence_check.py config/scenes/default.yaml --np $(NP) --out $(BUILD)/run/default --companion coarser --echo-main
+	/usr/bin/python3 scripts/plot_results.py $(BUILD)/run/default/main
+	@echo "Open $(BUILD)/run/default/main/volume.xmf and interface_base.xmf in ParaView (default reader); plots in $(BUILD)/run/default/main/plots/"
 
 # The scene's main answers with a grid-convergence band: the scene and a companion resolution
 # (scripts/convergence_check.py; CHECK_ARGS: its options, e.g. "--levels 3 -- -ts_max_time 5").

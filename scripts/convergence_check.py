@@ -3,7 +3,7 @@
 
 usage: /usr/bin/python3 scripts/convergence_check.py SCENE --out DIR [--np N] [--levels 2|3]
            [--refine h|p] [--companion coarser|finer] [--third coarser|finer]
-           [--degrees P2[,P3]] [--axes x,y] [--order Q] [--interface base] [--reuse]
+           [--degrees P2[,P3]] [--axes x,y] [--order Q] [--interface base] [--reuse] [--echo-main]
            [-- SLIPWAVE OPTIONS...]
 
 Runs slipwave on the scene (options file SCENE, then the options after `--`) at its own
@@ -310,7 +310,16 @@ def run_level(args, name, level_options, extra):
         os.remove(stamp)
     print(f"  {name}: {text}", flush=True)
     with open(log, "w") as out:
-        rc = subprocess.call(command, stdout=out, stderr=subprocess.STDOUT)
+        if args.echo_main and name == "main":
+            # The run's own report and progress as it runs (make run), and the log as usual.
+            with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True) as run:
+                for line in run.stdout:
+                    out.write(line)
+                    sys.stdout.write(line)
+                    sys.stdout.flush()
+            rc = run.returncode
+        else:
+            rc = subprocess.call(command, stdout=out, stderr=subprocess.STDOUT)
     if rc != 0:
         tail = open(log).read().strip().splitlines()[-1:] or [""]
         fail(f"the {name} run exited {rc} ({log}: {tail[0]})")
@@ -360,6 +369,7 @@ def main():
     parser.add_argument("--axes", help="with --refine h: the axes to refine, e.g. y (default all)")
     parser.add_argument("--order", type=float, default=1.0, help="formal order where none is observed (default 1)")
     parser.add_argument("--interface", default="base")
+    parser.add_argument("--echo-main", action="store_true", help="print the main run's output as it runs (it also goes to its log)")
     parser.add_argument("--reuse", action="store_true", help="keep a level whose folder holds a run of the same command")
     argv = sys.argv[1:]
     extra = []

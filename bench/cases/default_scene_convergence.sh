@@ -1,6 +1,6 @@
 # Mesh convergence of what an engineer reads from the default scene (config/scenes/default.yaml,
 # El Centro 1940 N-S at 0.3 g, 15 s): the scene at h = 1 m (its own mesh), h/2 and h/4, by
-# overriding -mesh_box_faces (120,60 times 1, 2, 4: every region boundary stays on cell edges).
+# overriding -mesh_box_faces (122,60 times 1, 2, 4: every region boundary stays on cell edges).
 # Each level reports, from scripts/scene_metrics.py:
 #   net slip (net tangential offset at the end), slip path (accumulated slip), peak uplift,
 #   peak rocking angle, peak structure acceleration (block top), free-field PGA and the
@@ -42,7 +42,7 @@ for r in $LEVELS; do
   fi
   out="$WORK/h$r"
   t0=$(date +%s)
-  $MPIEXEC -n "$NP" "$SW" -options_file config/scenes/default.yaml -mesh_box_faces $((120 * r)),$((60 * r)) -progress_interval 60 \
+  $MPIEXEC -n "$NP" "$SW" -options_file config/scenes/default.yaml -mesh_box_faces $((122 * r)),$((60 * r)) -progress_interval 60 \
     $EXTRA -output_dir "$out" > "$out.log"
   last_wall=$(( $(date +%s) - t0 ))
   $PY scripts/scene_metrics.py "$out" --json "$out/metrics.json" > /dev/null
