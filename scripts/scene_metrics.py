@@ -49,6 +49,9 @@ Accelerations (horizontal, a_x):
                       resolved frequency: motion the mesh cannot carry faithfully [-]
   high_frequency_share_<station>_y  the same for the vertical acceleration a_y (0 when a_y
                       is zero throughout, as in a column held vertically) [-]
+  high_frequency_share_<station>_total  the same for the acceleration vector (the power of
+                      a_x and a_y summed): where one component is small (the vertical at a
+                      free-field station under SV), its share says little, the vector's does [-]
 """
 import argparse
 import json
@@ -77,14 +80,18 @@ def station(run, name):
     return run.station(name)
 
 
-def high_frequency_share(t, a, f_cut):
+def high_frequency_share(t, a, f_cut, *more):
     """Share of sum |A(f)|^2 above f_cut, A the discrete Fourier transform of a on its own
-    uniform samples (Parseval: the share of the signal's power); 0 for a record of zeros."""
-    dt, acc = resample_uniform(t, a)
-    power = np.abs(np.fft.rfft(acc)) ** 2
-    f = np.fft.rfftfreq(len(acc), dt)
-    total = power.sum()
-    return float(power[f > f_cut].sum() / total) if total > 0 else 0.0
+    uniform samples (Parseval: the share of the signal's power); with more components (a_y,
+    ...), of their summed power, the share of the vector's; 0 for records of zeros."""
+    high = total = 0.0
+    for component in (a,) + more:
+        dt, acc = resample_uniform(t, component)
+        power = np.abs(np.fft.rfft(acc)) ** 2
+        f = np.fft.rfftfreq(len(acc), dt)
+        high += power[f > f_cut].sum()
+        total += power.sum()
+    return float(high / total) if total > 0 else 0.0
 
 
 def low_passed(t, a, f_cut):
@@ -181,6 +188,7 @@ def station_measures(records, f_resolved, f_lowpass=None):
     for name, r in records.items():
         m[f"high_frequency_share_{name}"] = high_frequency_share(r["t"], r["a_x"], f_resolved)
         m[f"high_frequency_share_{name}_y"] = high_frequency_share(r["t"], r["a_y"], f_resolved)
+        m[f"high_frequency_share_{name}_total"] = high_frequency_share(r["t"], r["a_x"], f_resolved, r["a_y"])
     return m
 
 

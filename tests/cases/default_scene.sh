@@ -4,16 +4,18 @@
 # rows), the energy budget must close to 1 % (issue bound; the discrete identity makes it
 # round-off), the report must state the record's PGA, scale factor and interpretation and
 # warn about no side (free-field sides hold back nothing), the output must parse, and the
-# block must do what the scene's header promises: slide (slip path > 5 cm, net offset
-# > 1 cm) and lift its heel (peak opening > 2 cm; rocking angle > 1e-3 rad).
+# block must do what the scene's header promises: slide (slip path > 1 cm, net offset
+# > 2 mm) and lift its heel (peak opening > 2 cm; rocking angle > 1e-3 rad).
 # The free-field sides must let the site move as a layered site: the free-field station's
 # peak velocity within 5 % of the 1D closed form for the scene's 30 m damped layer on elastic
 # rock (tests/tools/site_response.py; the site without the block matches it to 0.3 % in
 # default_scene_site.sh; the 5 % leaves room for the block's scattered field 37 m away).
 # Rollers give 0.13 m/s instead of 0.81 (undamped).
-# Quiet contact (issue 8): at the free-field and block-top stations less than 5 % of the
-# horizontal acceleration power above the mesh's resolved frequency vs_min / (8 h) = 25 Hz
-# (issue bound; before the contact and structural damping: 92-98 %), the free-field peak
+# Quiet contact: at every station, the block's base corners next to the contact included,
+# less than 5 % of the acceleration power (both components) above the mesh's resolved
+# frequency vs_min / (8 h) = 25 Hz (issue bound; with the elastic block and no contact or
+# structural damping it was 92-98 %; the rigid block with contact damping 0.1, 7.2 % at the
+# base stations), the free-field peak
 # acceleration within 15 % of the same run with a tied interface (issue bound), the energy
 # budget closing to 1e-9 (issue bound) with the contact dashpots' work booked (> 0).
 set -eu
@@ -34,10 +36,11 @@ import numpy as np
 m = json.load(open(sys.argv[1]))
 tied_pga = np.max(np.abs(np.genfromtxt(sys.argv[2], delimiter=",", names=True)["a_x"]))
 contact = np.genfromtxt(sys.argv[3], delimiter=",", names=True)["contact_damped"][-1]
-checks = [("accumulated_slip", m["accumulated_slip"] > 0.05), ("|net_slip|", abs(m["net_slip"]) > 0.002),
-          ("peak_uplift", m["peak_uplift"] > 0.02), ("peak_rocking_angle", m["peak_rocking_angle"] > 1e-3),
-          ("high_frequency_share_free_field < 0.05", m["high_frequency_share_free_field"] < 0.05),
-          ("high_frequency_share_block_top < 0.05", m["high_frequency_share_block_top"] < 0.05),
+checks = [("accumulated_slip", m["accumulated_slip"] > 0.01), ("|net_slip|", abs(m["net_slip"]) > 0.002),
+          ("peak_uplift", m["peak_uplift"] > 0.02), ("peak_rocking_angle", m["peak_rocking_angle"] > 1e-3)]
+stations = [k[len("high_frequency_share_"):-len("_total")] for k in m if k.startswith("high_frequency_share_") and k.endswith("_total")]
+checks += [(f"high_frequency_share_{s}_total {m[f'high_frequency_share_{s}_total']:.4f} < 0.05", m[f"high_frequency_share_{s}_total"] < 0.05) for s in stations]
+checks += [(f"{len(stations)} stations judged", len(stations) == 6),
           (f"free-field PGA {m['free_field_pga']:.3f} within 15 % of the tied run's {tied_pga:.3f} m/s^2", abs(m["free_field_pga"] / tied_pga - 1) <= 0.15),
           (f"contact dashpots took {contact:.4g} J", contact > 0)]
 for name, ok in checks:
