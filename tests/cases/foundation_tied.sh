@@ -10,7 +10,7 @@ set -eu
 . tests/tools/lib.sh
 . tests/tools/together.sh
 grep -v "^interface" config/scenes/default.yaml > "$WORK/unsplit.yaml"
-O="-mesh_box_faces 60,30 -ts_max_time 3 -output_fields 0 -progress_interval 100 -ts_dt 1e-4"
+O="-mesh_box_faces 61,30 -ts_max_time 3 -output_fields 0 -progress_interval 100 -ts_dt 1e-4"
 together $SW -options_file "$WORK/unsplit.yaml" $O -output_dir "$WORK/unsplit" > "$WORK/unsplit.log"
 tie="-interface_base_phi 0 -interface_base_c 1e12 -interface_base_tensile_strength 1e12 -interface_base_e_ini 1"
 for f in 30 300; do
