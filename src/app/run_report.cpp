@@ -7,6 +7,7 @@
 
 #include "slipwave/input/drm.hpp"
 #include "slipwave/medium/attenuation.hpp"
+#include "slipwave/medium/hysteresis.hpp"
 #include "slipwave/porous/pore_pressure.hpp"
 
 namespace slipwave::app {
@@ -169,6 +170,7 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
     PetscCall(PetscPrintf(comm, "    its stiffness-proportional part lowers the stable step from %.4e s (undamped) to %.4e s (-%.1f %%)\n", limit.dt_without_stiffness_damping,
                           limit.dt_bulk, 100 * (1 - limit.dt_bulk / limit.dt_without_stiffness_damping)));
   for (const std::string &line : medium::AttenuationReport(model.attenuation, model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+  for (const std::string &line : medium::HysteresisReport(model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   PetscCall(reportInterfaces(model));
   if (model.pore)
     for (const std::string &line : porous::PorePressureReport(model.pore, model.materials, limit.dt_drained, limit.dt_bulk, limit.dt_limit, dt)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));

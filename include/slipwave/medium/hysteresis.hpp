@@ -1,0 +1,67 @@
+// The bulk force of hysteretic regions (-material_<r>_model hysteretic): the soil's stress is
+// the parallel Iwan model of physics/hysteretic_soil.hpp at every Gauss point of the region's
+// cells, while the bulk operator keeps applying the linear small-strain stiffness K (Gmax)
+// everywhere. The difference is a correction force
+//   f_relax = sum_q B_q^T (C:eps_q - sigma_q) w_q |det J_q|,     f_internal = K u - f_relax,
+// with C the region's element moduli, eps_q = B_q u the strain and sigma_q the Iwan stress at
+// the point. K is integrated by the same Gauss rule (fem/element_kernels.hpp), so K u -
+// f_relax is exactly the force of the Iwan stress, and a cell of another region costs nothing.
+// f_relax is zero (to round-off) while every surface is elastic, and it enters the
+// acceleration like the constant-Q memory forces (problem/nodal_acceleration.hpp).
+//
+// State: per Gauss point the kernel's plastic strains (hystereticStateSize doubles), committed
+// and trial: the force at (t, u) is computed from the committed state into the trial one, so
+// the RHS asked twice at one time gives the same force; HysteresisCommit, once the step is
+// accepted, makes the trial the committed state. Off during the geostatic stage (the soil
+// starts virgin with the dynamic stage, whose displacement starts from zero).
+//
+// Element degree 1 only (cells of any shape, the Gauss rules of numerics/reference_cell.hpp);
+// the caller rejects p > 1. The stable step stays that of the linear soil: the Iwan model's
+// tangent shear modulus is sum of the elastic elements' G_i <= Gmax, its bulk modulus K.
+#pragma once
+#include <petscdm.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "slipwave/fem/bulk_operator.hpp"
+#include "slipwave/medium/materials.hpp"
+
+namespace slipwave::medium {
+
+struct HystereticRegion {
+  PetscInt                                            region = -1;
+  std::shared_ptr<const physics::HystereticSoilModel> model;
+  double                                              lambda = 0, mu = 0; // element moduli: C of the linear operator
+  std::vector<PetscInt>                               dofs;               // per cell of the region on this rank: its nodes' local dof offsets
+  // Per cell and Gauss point: dN_a/dx_j (nodes x dim) and the weight w |det J|.
+  std::vector<double>                                 gradient, volume;
+  std::vector<double>                                 committed, trial;   // the kernel states, point-major
+};
+
+struct Hysteresis {
+  PetscInt                      dim = 0, nodes = 0, points = 0;
+  std::vector<HystereticRegion> regions;
+  bool                          has_trial = false;
+  // Sum over this rank's points of the kernel's dissipation w |det J| D (energy per unit
+  // thickness in 2D): committed, and that of the last trial.
+  double                        dissipated = 0, dissipated_trial = 0;
+};
+
+// *out is null when no region is hysteretic. Degree 1 only (bulk.degree() == 1).
+PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector<RegionMaterialInfo> &materials, Hysteresis **out);
+PetscErrorCode HysteresisDestroy(Hysteresis **h);
+// f_local += f_relax from the ghosted displacement u_local (this rank's cells; the caller
+// assembles), the states going into the trial.
+void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local);
+// The trial of the last HysteresisForce becomes the committed state (no-op without one).
+void HysteresisCommit(Hysteresis *h);
+// Sum over this rank's points of (1/2 eps:C:eps - Iwan stored energy) w |det J| at the
+// committed state and the ghosted displacement u_local: what the linear strain energy
+// 1/2 u.K u holds beyond the soil's stored energy (energy ledger).
+double HysteresisRelaxationEnergy(const Hysteresis *h, const PetscScalar *u_local);
+// Run report lines: per hysteretic region its backbone, parameters, surfaces and their fit.
+std::vector<std::string> HysteresisReport(const std::vector<RegionMaterialInfo> &materials);
+
+} // namespace slipwave::medium

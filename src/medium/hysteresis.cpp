@@ -1,0 +1,224 @@
+#include "slipwave/medium/hysteresis.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "slipwave/numerics/reference_cell.hpp"
+
+namespace slipwave::medium {
+namespace {
+
+// The kernel's strain (tensor components; 2D: xx, yy, xy; 3D: xx, yy, zz, xy, yz, xz) from the
+// displacement gradient G[i][j] = du_i/dx_j.
+template <int Dim>
+void strainOf(const double (*G)[3], double *eps) {
+  if constexpr (Dim == 2) {
+    eps[0] = G[0][0];
+    eps[1] = G[1][1];
+    eps[2] = 0.5 * (G[0][1] + G[1][0]);
+  } else {
+    eps[0] = G[0][0];
+    eps[1] = G[1][1];
+    eps[2] = G[2][2];
+    eps[3] = 0.5 * (G[0][1] + G[1][0]);
+    eps[4] = 0.5 * (G[1][2] + G[2][1]);
+    eps[5] = 0.5 * (G[0][2] + G[2][0]);
+  }
+}
+
+// Runs fn(point index, dN/dx, w |det J|, strain) over the region's points on this rank.
+template <int Dim, class Fn>
+void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn) {
+  constexpr int  kStrain = physics::HystereticLayout<Dim>::kStrain;
+  const PetscInt nen = h.nodes, nq = h.points;
+  for (size_t k = 0; k < reg.dofs.size() / nen; ++k) {
+    double u[numerics::kMaxCellNodes][Dim];
+    for (PetscInt a = 0; a < nen; ++a)
+      for (int i = 0; i < Dim; ++i) u[a][i] = PetscRealPart(u_local[reg.dofs[k * nen + a] + i]);
+    for (PetscInt q = 0; q < nq; ++q) {
+      const size_t  p  = k * nq + q;
+      const double *dN = &reg.gradient[p * nen * Dim];
+      double        G[3][3] = {};
+      for (PetscInt a = 0; a < nen; ++a)
+        for (int i = 0; i < Dim; ++i)
+          for (int j = 0; j < Dim; ++j) G[i][j] += u[a][i] * dN[a * Dim + j];
+      double eps[kStrain];
+      strainOf<Dim>(G, eps);
+      fn(p, k, dN, reg.volume[p], eps);
+    }
+  }
+}
+
+// C:eps - sigma as a symmetric tensor (xx, yy, zz, xy, yz, xz) from the kernel's stress.
+template <int Dim>
+void relaxationStress(const HystereticRegion &reg, const double *eps, const double *sigma, double r[6]) {
+  if constexpr (Dim == 2) {
+    const double tr = eps[0] + eps[1];
+    r[0] = reg.lambda * tr + 2 * reg.mu * eps[0] - sigma[0];
+    r[1] = reg.lambda * tr + 2 * reg.mu * eps[1] - sigma[1];
+    r[2] = reg.lambda * tr - sigma[3];
+    r[3] = 2 * reg.mu * eps[2] - sigma[2];
+    r[4] = r[5] = 0;
+  } else {
+    const double tr = eps[0] + eps[1] + eps[2];
+    for (int c = 0; c < 3; ++c) r[c] = reg.lambda * tr + 2 * reg.mu * eps[c] - sigma[c];
+    for (int c = 3; c < 6; ++c) r[c] = 2 * reg.mu * eps[c] - sigma[c];
+  }
+}
+
+template <int Dim>
+void force(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local) {
+  constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
+  double        dissipated = 0;
+  for (HystereticRegion &reg : h->regions) {
+    const int size = physics::hystereticStateSize<Dim>(*reg.model);
+    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t k, const double *dN, double vol, const double *eps) {
+      double sigma[kStress], r[6];
+      dissipated += vol * physics::hystereticUpdate<Dim>(*reg.model, &reg.committed[p * size], eps, sigma, &reg.trial[p * size]);
+      relaxationStress<Dim>(reg, eps, sigma, r);
+      // Tensor rows (xx, xy, xz), (xy, yy, yz), (xz, yz, zz) of r.
+      const double T[3][3] = {{r[0], r[3], r[5]}, {r[3], r[1], r[4]}, {r[5], r[4], r[2]}};
+      for (PetscInt a = 0; a < h->nodes; ++a) {
+        PetscScalar *fa = f_local + reg.dofs[k * h->nodes + a];
+        for (int i = 0; i < Dim; ++i) {
+          double s = 0;
+          for (int j = 0; j < Dim; ++j) s += T[i][j] * dN[a * Dim + j];
+          fa[i] += vol * s;
+        }
+      }
+    });
+  }
+  h->dissipated_trial = h->dissipated + dissipated;
+}
+
+template <int Dim>
+double relaxationEnergy(const Hysteresis *h, const PetscScalar *u_local) {
+  double sum = 0;
+  for (const HystereticRegion &reg : h->regions) {
+    const int size = physics::hystereticStateSize<Dim>(*reg.model);
+    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t, const double *, double vol, const double *eps) {
+      double tr = 0, ee = 0;
+      for (int c = 0; c < Dim; ++c) tr += eps[c];
+      for (int c = 0; c < physics::HystereticLayout<Dim>::kStrain; ++c) ee += (c < 3 && c < Dim ? 1.0 : 2.0) * eps[c] * eps[c];
+      const double linear = 0.5 * reg.lambda * tr * tr + reg.mu * ee;
+      sum += vol * (linear - physics::hystereticStoredEnergy<Dim>(*reg.model, &reg.committed[p * size], eps));
+    });
+  }
+  return sum;
+}
+
+} // namespace
+
+PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector<RegionMaterialInfo> &materials, Hysteresis **out) {
+  PetscFunctionBeginUser;
+  *out = nullptr;
+  bool any = false;
+  for (const auto &m : materials) any = any || m.model == MaterialModel::Hysteretic;
+  if (!any) PetscFunctionReturn(0);
+  PetscCheck(bulk.degree() == 1, PETSC_COMM_SELF, PETSC_ERR_PLIB, "hysteretic regions at element degree %" PetscInt_FMT ": the caller rejects p > 1", bulk.degree());
+  auto                       *h   = new Hysteresis();
+  const numerics::ReferenceRule &rule = numerics::referenceRule(bulk.shape());
+  const PetscInt              dim = bulk.dimension(), nen = bulk.nodesPerCell();
+  h->dim    = dim;
+  h->nodes  = nen;
+  h->points = rule.points;
+  for (size_t r = 0; r < materials.size(); ++r) {
+    if (materials[r].model != MaterialModel::Hysteretic) continue;
+    HystereticRegion reg;
+    reg.region = (PetscInt)r;
+    reg.model  = materials[r].hysteretic.model;
+    reg.lambda = materials[r].fe.lame.lambda;
+    reg.mu     = materials[r].fe.lame.mu;
+    for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
+      if (bulk.cellRegion(c) != reg.region) continue;
+      for (PetscInt a = 0; a < nen; ++a) reg.dofs.push_back(bulk.cellNodeOffset(c, a));
+      for (int q = 0; q < rule.points; ++q) {
+        double J[numerics::kMaxCellDim][numerics::kMaxCellDim], Jinv[numerics::kMaxCellDim][numerics::kMaxCellDim];
+        numerics::jacobian((int)nen, (int)dim, bulk.cellCoordinates(c), rule.dN[q], J);
+        const double det = numerics::invertJacobian((int)dim, J, Jinv);
+        // dN/dx_j = sum_k dN/dxi_k dxi_k/dx_j.
+        for (PetscInt a = 0; a < nen; ++a)
+          for (PetscInt j = 0; j < dim; ++j) {
+            double g = 0;
+            for (PetscInt k = 0; k < dim; ++k) g += rule.dN[q][a][k] * Jinv[k][j];
+            reg.gradient.push_back(g);
+          }
+        reg.volume.push_back(rule.weight[q] * std::fabs(det));
+      }
+    }
+    const int size = dim == 2 ? physics::hystereticStateSize<2>(*reg.model) : physics::hystereticStateSize<3>(*reg.model);
+    reg.committed.assign(reg.volume.size() * size, 0.0);
+    reg.trial = reg.committed;
+    h->regions.push_back(std::move(reg));
+  }
+  *out = h;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HysteresisDestroy(Hysteresis **h) {
+  PetscFunctionBeginUser;
+  delete *h;
+  *h = nullptr;
+  PetscFunctionReturn(0);
+}
+
+void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local) {
+  if (h->dim == 2) force<2>(h, u_local, f_local);
+  else force<3>(h, u_local, f_local);
+  h->has_trial = true;
+}
+
+void HysteresisCommit(Hysteresis *h) {
+  if (!h || !h->has_trial) return;
+  for (HystereticRegion &reg : h->regions) reg.committed.swap(reg.trial);
+  h->dissipated = h->dissipated_trial;
+  h->has_trial  = false;
+}
+
+double HysteresisRelaxationEnergy(const Hysteresis *h, const PetscScalar *u_local) { return h->dim == 2 ? relaxationEnergy<2>(h, u_local) : relaxationEnergy<3>(h, u_local); }
+
+std::vector<std::string> HysteresisReport(const std::vector<RegionMaterialInfo> &materials) {
+  std::vector<std::string> lines;
+  char                     buf[512];
+  for (const RegionMaterialInfo &m : materials) {
+    if (m.model != MaterialModel::Hysteretic) continue;
+    const HystereticSpec &s = m.hysteretic;
+    std::string           curve;
+    switch (s.choice) {
+    case BackboneChoice::Mkz:
+      std::snprintf(buf, sizeof buf, "mkz, gamma_r %.4g, s %.4g, beta %.4g", s.backbone.reference_strain, s.backbone.curvature, s.backbone.beta);
+      break;
+    case BackboneChoice::Darendeli:
+      std::snprintf(buf, sizeof buf, "darendeli, PI %.4g %%, OCR %.4g, sigma'_0 %.4g Pa: gamma_r %.4g, a %.4g", s.darendeli.plasticity_index, s.darendeli.ocr,
+                    s.darendeli.mean_effective_stress, s.backbone.reference_strain, s.backbone.curvature);
+      break;
+    case BackboneChoice::Gqh:
+      std::snprintf(buf, sizeof buf, "gqh, theta %.4g,%.4g,%.4g,%.4g,%.4g", s.backbone.theta[0], s.backbone.theta[1], s.backbone.theta[2], s.backbone.theta[3],
+                    s.backbone.theta[4]);
+      break;
+    }
+    curve = buf;
+    const physics::HystereticSoilModel &model = *s.model;
+    if (s.strength > 0 && s.choice != BackboneChoice::Gqh) {
+      std::snprintf(buf, sizeof buf, ", capped at tau_max %.4g Pa", s.strength);
+      curve += buf;
+    } else if (s.choice == BackboneChoice::Gqh) {
+      std::snprintf(buf, sizeof buf, ", tau_max %.4g Pa", s.strength);
+      curve += buf;
+    }
+    // A backbone a parallel Iwan model cannot hold was replaced by its concave majorant.
+    if (model.knotDeviation() > 1e-9) {
+      std::snprintf(buf, sizeof buf, " (made concave: knots moved up to %.3g %%)", 100 * model.knotDeviation());
+      curve += buf;
+    }
+    std::snprintf(buf, sizeof buf,
+                  "  region %s: hysteretic soil (Masing, parallel Iwan), backbone %s; Gmax %.4g Pa, %d surfaces; G/Gmax %.3f at 1e-4, %.3f at 1e-3; "
+                  "strength %.4g Pa (the model's, at the last knot %.3g)",
+                  m.region.c_str(), curve.c_str(), model.shearModulus(), model.surfaces(), model.secantModulusRatio(1e-4), model.secantModulusRatio(1e-3),
+                  model.strength(), model.knotStrains().back());
+    lines.push_back(buf);
+  }
+  return lines;
+}
+
+} // namespace slipwave::medium
