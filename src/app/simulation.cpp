@@ -209,9 +209,6 @@ PetscErrorCode setUp(MPI_Comm comm, Run *r) {
   if (r->opt.restart[0]) PetscCall(CheckpointVerify(comm, r->opt.restart));
   PetscCall(problem::TimeStepOptionsRead(comm, &r->time_step));
   PetscCall(problem::ElastodynamicsCreate(comm, &r->model));
-  // Not yet: the checkpoint does not hold the soil's hysteretic state (medium/hysteresis.hpp).
-  PetscCheck(!r->model.hysteresis || (r->opt.checkpoint_interval == 0 && !r->opt.restart[0]), comm, PETSC_ERR_USER_INPUT,
-             "-checkpoint_interval or -restart with a hysteretic region (-material_<r>_model hysteretic): not supported yet; allowed: -checkpoint_interval 0, no -restart");
   PetscCall(problem::StableStepCompute(&r->model, &r->step));
   PetscCall(r->stations.Setup(r->model.dm, r->model.bulk, r->model.mesh));
   PetscCall(RegionVelocitiesRead(comm, r->model.dim, r->model.materials, &r->region_velocity));

@@ -1,5 +1,6 @@
 #include "slipwave/medium/hysteresis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -69,12 +70,13 @@ void relaxationStress(const HystereticRegion &reg, const double *eps, const doub
 template <int Dim>
 void force(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local) {
   constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
-  double        dissipated = 0;
   for (HystereticRegion &reg : h->regions) {
     const int size = physics::hystereticStateSize<Dim>(*reg.model);
     forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t k, const double *dN, double vol, const double *eps) {
       double sigma[kStress], r[6];
-      dissipated += vol * physics::hystereticUpdate<Dim>(*reg.model, &reg.committed[p * size], eps, sigma, &reg.trial[p * size]);
+      // (Its return, the plastic work of the update, is not booked: the ledger's dissipation is
+      // the work against the relaxation force plus E_r, closed to round-off; energy_ledger.hpp.)
+      physics::hystereticUpdate<Dim>(*reg.model, &reg.committed[p * size], eps, sigma, &reg.trial[p * size]);
       relaxationStress<Dim>(reg, eps, sigma, r);
       // Tensor rows (xx, xy, xz), (xy, yy, yz), (xz, yz, zz) of r.
       const double T[3][3] = {{r[0], r[3], r[5]}, {r[3], r[1], r[4]}, {r[5], r[4], r[2]}};
@@ -88,7 +90,6 @@ void force(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local) {
       }
     });
   }
-  h->dissipated_trial = h->dissipated + dissipated;
 }
 
 template <int Dim>
@@ -171,8 +172,28 @@ void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_l
 void HysteresisCommit(Hysteresis *h) {
   if (!h || !h->has_trial) return;
   for (HystereticRegion &reg : h->regions) reg.committed.swap(reg.trial);
-  h->dissipated = h->dissipated_trial;
-  h->has_trial  = false;
+  h->has_trial = false;
+}
+
+std::vector<double> HysteresisState(const Hysteresis *h) {
+  std::vector<double> s;
+  for (const HystereticRegion &reg : h->regions) s.insert(s.end(), reg.committed.begin(), reg.committed.end());
+  return s;
+}
+
+PetscInt HysteresisStateSize(const Hysteresis *h) {
+  size_t n = 0;
+  for (const HystereticRegion &reg : h->regions) n += reg.committed.size();
+  return (PetscInt)n;
+}
+
+void HysteresisSetState(Hysteresis *h, const std::vector<double> &s) {
+  size_t o = 0;
+  for (HystereticRegion &reg : h->regions) {
+    std::copy(s.begin() + o, s.begin() + o + reg.committed.size(), reg.committed.begin());
+    o += reg.committed.size();
+  }
+  h->has_trial = false;
 }
 
 double HysteresisRelaxationEnergy(const Hysteresis *h, const PetscScalar *u_local) { return h->dim == 2 ? relaxationEnergy<2>(h, u_local) : relaxationEnergy<3>(h, u_local); }

@@ -44,9 +44,6 @@ struct Hysteresis {
   PetscInt                      dim = 0, nodes = 0, points = 0;
   std::vector<HystereticRegion> regions;
   bool                          has_trial = false;
-  // Sum over this rank's points of the kernel's dissipation w |det J| D (energy per unit
-  // thickness in 2D): committed, and that of the last trial.
-  double                        dissipated = 0, dissipated_trial = 0;
 };
 
 // *out is null when no region is hysteretic. Degree 1 only (bulk.degree() == 1).
@@ -57,6 +54,11 @@ PetscErrorCode HysteresisDestroy(Hysteresis **h);
 void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local);
 // The trial of the last HysteresisForce becomes the committed state (no-op without one).
 void HysteresisCommit(Hysteresis *h);
+// Committed state for checkpoints: this rank's points' states, region by region. The size is fixed by the mesh and the models (a checkpoint of another
+// scene is refused before, by the displacement's size).
+std::vector<double> HysteresisState(const Hysteresis *h);
+PetscInt            HysteresisStateSize(const Hysteresis *h);
+void                HysteresisSetState(Hysteresis *h, const std::vector<double> &state);
 // Sum over this rank's points of (1/2 eps:C:eps - Iwan stored energy) w |det J| at the
 // committed state and the ghosted displacement u_local: what the linear strain energy
 // 1/2 u.K u holds beyond the soil's stored energy (energy ledger).
