@@ -31,7 +31,7 @@ void strainOf(const double (*G)[3], double *eps) {
 template <int Dim, class Fn>
 void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn) {
   constexpr int  kStrain = physics::HystereticLayout<Dim>::kStrain;
-  const PetscInt nen = h.nodes, nq = h.points;
+  const PetscInt nen = h.nodes, nq = reg.points;
   for (size_t k = 0; k < reg.dofs.size() / nen; ++k) {
     double u[numerics::kMaxCellNodes][Dim];
     for (PetscInt a = 0; a < nen; ++a)
@@ -120,9 +120,8 @@ PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector
   auto                       *h   = new Hysteresis();
   const numerics::ReferenceRule &rule = numerics::referenceRule(bulk.shape());
   const PetscInt              dim = bulk.dimension(), nen = bulk.nodesPerCell();
-  h->dim    = dim;
-  h->nodes  = nen;
-  h->points = rule.points;
+  h->dim   = dim;
+  h->nodes = nen;
   for (size_t r = 0; r < materials.size(); ++r) {
     if (materials[r].model != MaterialModel::Hysteretic) continue;
     HystereticRegion reg;
@@ -130,21 +129,39 @@ PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector
     reg.model  = materials[r].hysteretic.model;
     reg.lambda = materials[r].fe.lame.lambda;
     reg.mu     = materials[r].fe.lame.mu;
+    // Mean: one point per cell, with the cell's mean strain (the volume average of the Gauss
+    // points' gradients) and its volume.
+    const bool mean = materials[r].hysteretic.points == StressPoints::Mean;
+    reg.points      = mean ? 1 : rule.points;
     for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
       if (bulk.cellRegion(c) != reg.region) continue;
       for (PetscInt a = 0; a < nen; ++a) reg.dofs.push_back(bulk.cellNodeOffset(c, a));
+      double gradient[numerics::kMaxRulePoints][numerics::kMaxCellNodes][numerics::kMaxCellDim] = {}, volume[numerics::kMaxRulePoints];
       for (int q = 0; q < rule.points; ++q) {
         double J[numerics::kMaxCellDim][numerics::kMaxCellDim], Jinv[numerics::kMaxCellDim][numerics::kMaxCellDim];
         numerics::jacobian((int)nen, (int)dim, bulk.cellCoordinates(c), rule.dN[q], J);
-        const double det = numerics::invertJacobian((int)dim, J, Jinv);
+        volume[q] = rule.weight[q] * std::fabs(numerics::invertJacobian((int)dim, J, Jinv));
         // dN/dx_j = sum_k dN/dxi_k dxi_k/dx_j.
+        for (PetscInt a = 0; a < nen; ++a)
+          for (PetscInt j = 0; j < dim; ++j)
+            for (PetscInt k = 0; k < dim; ++k) gradient[q][a][j] += rule.dN[q][a][k] * Jinv[k][j];
+      }
+      if (mean) {
+        double v = 0;
+        for (int q = 0; q < rule.points; ++q) v += volume[q];
         for (PetscInt a = 0; a < nen; ++a)
           for (PetscInt j = 0; j < dim; ++j) {
             double g = 0;
-            for (PetscInt k = 0; k < dim; ++k) g += rule.dN[q][a][k] * Jinv[k][j];
-            reg.gradient.push_back(g);
+            for (int q = 0; q < rule.points; ++q) g += volume[q] * gradient[q][a][j];
+            reg.gradient.push_back(g / v);
           }
-        reg.volume.push_back(rule.weight[q] * std::fabs(det));
+        reg.volume.push_back(v);
+      } else {
+        for (int q = 0; q < rule.points; ++q) {
+          for (PetscInt a = 0; a < nen; ++a)
+            for (PetscInt j = 0; j < dim; ++j) reg.gradient.push_back(gradient[q][a][j]);
+          reg.volume.push_back(volume[q]);
+        }
       }
     }
     const int size = dim == 2 ? physics::hystereticStateSize<2>(*reg.model) : physics::hystereticStateSize<3>(*reg.model);
@@ -232,6 +249,7 @@ std::vector<std::string> HysteresisReport(const std::vector<RegionMaterialInfo> 
       std::snprintf(buf, sizeof buf, " (made concave: knots moved up to %.3g %%)", 100 * model.knotDeviation());
       curve += buf;
     }
+    if (s.points == StressPoints::Mean) curve += "; stress from each cell's mean strain";
     std::snprintf(buf, sizeof buf,
                   "  region %s: hysteretic soil (Masing, parallel Iwan), backbone %s; Gmax %.4g Pa, %d surfaces; G/Gmax %.3f at 1e-4, %.3f at 1e-3; "
                   "strength %.4g Pa (the model's, at the last knot %.3g)",

@@ -15,6 +15,12 @@
 // accepted, makes the trial the committed state. Off during the geostatic stage (the soil
 // starts virgin with the dynamic stage, whose displacement starts from zero).
 //
+// -material_<r>_stress_points mean evaluates the correction once per cell, from the cell's mean
+// strain B_m u (B_m the volume average of the Gauss points' B) with its volume V: the linear
+// part stays fully integrated in K, so no hourglass mode appears (only the correction is
+// under-integrated), and the tangent stays between K - V B_m^T C B_m = sum_q (B_q - B_m)^T C
+// (B_q - B_m) w_q |det J_q| >= 0 and K. Exact for a uniform strain; 4x (8x) fewer updates.
+//
 // Element degree 1 only (cells of any shape, the Gauss rules of numerics/reference_cell.hpp);
 // the caller rejects p > 1. The stable step stays that of the linear soil: the Iwan model's
 // tangent shear modulus is sum of the elastic elements' G_i <= Gmax, its bulk modulus K.
@@ -34,6 +40,7 @@ struct HystereticRegion {
   PetscInt                                            region = -1;
   std::shared_ptr<const physics::HystereticSoilModel> model;
   double                                              lambda = 0, mu = 0; // element moduli: C of the linear operator
+  int                                                 points = 0;         // per cell: the Gauss rule's, or 1 (mean)
   std::vector<PetscInt>                               dofs;               // per cell of the region on this rank: its nodes' local dof offsets
   // Per cell and Gauss point: dN_a/dx_j (nodes x dim) and the weight w |det J|.
   std::vector<double>                                 gradient, volume;
@@ -41,7 +48,7 @@ struct HystereticRegion {
 };
 
 struct Hysteresis {
-  PetscInt                      dim = 0, nodes = 0, points = 0;
+  PetscInt                      dim = 0, nodes = 0;
   std::vector<HystereticRegion> regions;
   bool                          has_trial = false;
 };

@@ -28,6 +28,11 @@ inline constexpr const char *kMaterialModelNames[] = {"elastic", "rigid", "hyste
 enum class BackboneChoice { Mkz, Darendeli, Gqh };
 inline constexpr const char *kBackboneNames[] = {"mkz", "darendeli", "gqh"};
 
+// Where a hysteretic region's stress is evaluated (-material_<region>_stress_points;
+// medium/hysteresis.hpp): the Gauss points of the linear K, or once per cell from its mean strain.
+enum class StressPoints { Gauss, Mean };
+inline constexpr const char *kStressPointNames[] = {"gauss", "mean"};
+
 // What a hysteretic region was given, for the report, and the model built from it (once, when
 // the options are read, so that a backbone the model cannot hold stops the run before the mesh
 // work; shared because every copy of the material list describes the same region).
@@ -36,6 +41,7 @@ struct HystereticSpec {
   physics::SoilBackbone                              backbone;
   physics::DarendeliSoil                             darendeli; // choice Darendeli
   double                                             strength = 0; // tau_max [Pa]; 0: no cap (MKZ, Darendeli)
+  StressPoints                                       points = StressPoints::Gauss;
   std::shared_ptr<const physics::HystereticSoilModel> model;
 };
 
