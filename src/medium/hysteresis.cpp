@@ -108,6 +108,28 @@ double relaxationEnergy(const Hysteresis *h, const PetscScalar *u_local) {
   return sum;
 }
 
+template <int Dim>
+void cellFields(const Hysteresis *h, const PetscScalar *u_local, double *relaxation, double *max_strain, double *modulus_ratio) {
+  constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
+  for (const HystereticRegion &reg : h->regions) {
+    const int size = physics::hystereticStateSize<Dim>(*reg.model);
+    for (PetscInt c : reg.cells) {
+      for (int k = 0; k < 6; ++k) relaxation[6 * c + k] = 0;
+      max_strain[c] = 0;
+    }
+    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t k, const double *, double, const double *eps) {
+      double         sigma[kStress], r[6];
+      const PetscInt c = reg.cells[k];
+      // Evaluate only (no state out): the committed state stays as it is.
+      physics::hystereticUpdate<Dim>(*reg.model, &reg.committed[p * size], eps, sigma, nullptr);
+      relaxationStress<Dim>(reg, eps, sigma, r);
+      for (int j = 0; j < 6; ++j) relaxation[6 * c + j] += r[j] / reg.points;
+      max_strain[c] = std::max(max_strain[c], physics::maxShearStrain<Dim>(*reg.model, &reg.committed[p * size]));
+    });
+    for (PetscInt c : reg.cells) modulus_ratio[c] = reg.model->secantModulusRatio(max_strain[c]);
+  }
+}
+
 } // namespace
 
 PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector<RegionMaterialInfo> &materials, Hysteresis **out) {
@@ -135,6 +157,7 @@ PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector
     reg.points      = mean ? 1 : rule.points;
     for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
       if (bulk.cellRegion(c) != reg.region) continue;
+      reg.cells.push_back(c);
       for (PetscInt a = 0; a < nen; ++a) reg.dofs.push_back(bulk.cellNodeOffset(c, a));
       double gradient[numerics::kMaxRulePoints][numerics::kMaxCellNodes][numerics::kMaxCellDim] = {}, volume[numerics::kMaxRulePoints];
       for (int q = 0; q < rule.points; ++q) {
@@ -214,6 +237,11 @@ void HysteresisSetState(Hysteresis *h, const std::vector<double> &s) {
 }
 
 double HysteresisRelaxationEnergy(const Hysteresis *h, const PetscScalar *u_local) { return h->dim == 2 ? relaxationEnergy<2>(h, u_local) : relaxationEnergy<3>(h, u_local); }
+
+void HysteresisCellFields(const Hysteresis *h, const PetscScalar *u_local, double *relaxation, double *max_strain, double *modulus_ratio) {
+  if (h->dim == 2) cellFields<2>(h, u_local, relaxation, max_strain, modulus_ratio);
+  else cellFields<3>(h, u_local, relaxation, max_strain, modulus_ratio);
+}
 
 std::vector<std::string> HysteresisReport(const std::vector<RegionMaterialInfo> &materials) {
   std::vector<std::string> lines;

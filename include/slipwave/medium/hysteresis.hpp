@@ -41,7 +41,8 @@ struct HystereticRegion {
   std::shared_ptr<const physics::HystereticSoilModel> model;
   double                                              lambda = 0, mu = 0; // element moduli: C of the linear operator
   int                                                 points = 0;         // per cell: the Gauss rule's, or 1 (mean)
-  std::vector<PetscInt>                               dofs;               // per cell of the region on this rank: its nodes' local dof offsets
+  std::vector<PetscInt>                               cells;              // this rank's cells of the region (bulk cell numbers)
+  std::vector<PetscInt>                               dofs;               // per cell of `cells`: its nodes' local dof offsets
   // Per cell and Gauss point: dN_a/dx_j (nodes x dim) and the weight w |det J|.
   std::vector<double>                                 gradient, volume;
   std::vector<double>                                 committed, trial;   // the kernel states, point-major
@@ -70,6 +71,12 @@ void                HysteresisSetState(Hysteresis *h, const std::vector<double> 
 // committed state and the ghosted displacement u_local: what the linear strain energy
 // 1/2 u.K u holds beyond the soil's stored energy (energy ledger).
 double HysteresisRelaxationEnergy(const Hysteresis *h, const PetscScalar *u_local);
+// Output, per local cell of a hysteretic region (other cells untouched), at the committed
+// state and the ghosted displacement u_local: relaxation (6 per cell: xx, yy, zz, xy, yz, xz)
+// the mean over the cell's points of C:eps - sigma, what the linear cell stress holds beyond
+// the soil's; max_strain the largest equivalent shear strain any of its points reached;
+// modulus_ratio the model's secant G/Gmax at that strain.
+void HysteresisCellFields(const Hysteresis *h, const PetscScalar *u_local, double *relaxation, double *max_strain, double *modulus_ratio);
 // Run report lines: per hysteretic region its backbone, parameters, surfaces and their fit.
 std::vector<std::string> HysteresisReport(const std::vector<RegionMaterialInfo> &materials);
 
