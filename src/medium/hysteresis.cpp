@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "slipwave/numerics/gll_basis.hpp"
 #include "slipwave/numerics/reference_cell.hpp"
 
 namespace slipwave::medium {
@@ -27,25 +28,83 @@ void strainOf(const double (*G)[3], double *eps) {
   }
 }
 
-// Runs fn(point index, dN/dx, w |det J|, strain) over the region's points on this rank.
+// Node a of an element with node q's index k replaced by m (lexicographic, x fastest).
+inline int along(int q, int k, int m, int n1) {
+  const int stride = k == 0 ? 1 : (k == 1 ? n1 : n1 * n1);
+  return q + (m - (q / stride) % n1) * stride;
+}
+
+// Runs fn(point index, element index k, point in the element, w |det J|, strain) over the
+// region's points on this rank.
 template <int Dim, class Fn>
 void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn) {
   constexpr int  kStrain = physics::HystereticLayout<Dim>::kStrain;
   const PetscInt nen = h.nodes, nq = reg.points;
+  const int      n1  = (int)h.degree + 1;
+  std::vector<double> u((size_t)nen * Dim);
   for (size_t k = 0; k < reg.dofs.size() / nen; ++k) {
-    double u[numerics::kMaxCellNodes][Dim];
     for (PetscInt a = 0; a < nen; ++a)
-      for (int i = 0; i < Dim; ++i) u[a][i] = PetscRealPart(u_local[reg.dofs[k * nen + a] + i]);
+      for (int i = 0; i < Dim; ++i) u[a * Dim + i] = PetscRealPart(u_local[reg.dofs[k * nen + a] + i]);
     for (PetscInt q = 0; q < nq; ++q) {
-      const size_t  p  = k * nq + q;
-      const double *dN = &reg.gradient[p * nen * Dim];
-      double        G[3][3] = {};
-      for (PetscInt a = 0; a < nen; ++a)
-        for (int i = 0; i < Dim; ++i)
-          for (int j = 0; j < Dim; ++j) G[i][j] += u[a][i] * dN[a * Dim + j];
+      const size_t p = k * nq + q;
+      double       G[3][3] = {};
+      if (h.degree == 1) {
+        const double *dN = &reg.gradient[p * nen * Dim];
+        for (PetscInt a = 0; a < nen; ++a)
+          for (int i = 0; i < Dim; ++i)
+            for (int j = 0; j < Dim; ++j) G[i][j] += u[a * Dim + i] * dN[a * Dim + j];
+      } else {
+        // du_i/dxi_k by the GLL derivative matrix along line k through q, then dxi/dx.
+        const double *Jinv = &reg.jinv[p * Dim * Dim];
+        for (int k2 = 0; k2 < Dim; ++k2) {
+          const int    qk  = k2 == 0 ? (int)q % n1 : (k2 == 1 ? ((int)q / n1) % n1 : (int)q / (n1 * n1));
+          const double *Dq = &h.derivative[qk * n1];
+          double       du[Dim] = {};
+          for (int m = 0; m < n1; ++m) {
+            const int a = along((int)q, k2, m, n1);
+            for (int i = 0; i < Dim; ++i) du[i] += Dq[m] * u[a * Dim + i];
+          }
+          for (int i = 0; i < Dim; ++i)
+            for (int j = 0; j < Dim; ++j) G[i][j] += du[i] * Jinv[k2 * Dim + j];
+        }
+      }
       double eps[kStrain];
       strainOf<Dim>(G, eps);
-      fn(p, k, dN, reg.volume[p], eps);
+      fn(p, k, (int)q, reg.volume[p], eps);
+    }
+  }
+}
+
+// f_local += vol B^T T at point q of element k (T the symmetric stress tensor, row-major 3x3).
+template <int Dim>
+void scatter(const Hysteresis &h, const HystereticRegion &reg, size_t k, int q, size_t p, const double (*T)[3], double vol, PetscScalar *f_local) {
+  const PetscInt nen = h.nodes;
+  const PetscInt *dofs = &reg.dofs[k * nen];
+  if (h.degree == 1) {
+    const double *dN = &reg.gradient[p * nen * Dim];
+    for (PetscInt a = 0; a < nen; ++a)
+      for (int i = 0; i < Dim; ++i) {
+        double s = 0;
+        for (int j = 0; j < Dim; ++j) s += T[i][j] * dN[a * Dim + j];
+        f_local[dofs[a] + i] += vol * s;
+      }
+    return;
+  }
+  // dN_a/dxi_k(q) is nonzero only for the nodes a on line k through q: D[q_k][a_k].
+  const int     n1   = (int)h.degree + 1;
+  const double *Jinv = &reg.jinv[p * Dim * Dim];
+  for (int k2 = 0; k2 < Dim; ++k2) {
+    double S[Dim];
+    for (int i = 0; i < Dim; ++i) {
+      S[i] = 0;
+      for (int j = 0; j < Dim; ++j) S[i] += T[i][j] * Jinv[k2 * Dim + j];
+      S[i] *= vol;
+    }
+    const int     qk = k2 == 0 ? q % n1 : (k2 == 1 ? (q / n1) % n1 : q / (n1 * n1));
+    const double *Dq = &h.derivative[qk * n1];
+    for (int m = 0; m < n1; ++m) {
+      const PetscInt a = dofs[along(q, k2, m, n1)];
+      for (int i = 0; i < Dim; ++i) f_local[a + i] += Dq[m] * S[i];
     }
   }
 }
@@ -72,7 +131,7 @@ void force(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local) {
   constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
   for (HystereticRegion &reg : h->regions) {
     const int size = physics::hystereticStateSize<Dim>(*reg.model);
-    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t k, const double *dN, double vol, const double *eps) {
+    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t k, int q, double vol, const double *eps) {
       double sigma[kStress], r[6];
       // (Its return, the plastic work of the update, is not booked: the ledger's dissipation is
       // the work against the relaxation force plus E_r, closed to round-off; energy_ledger.hpp.)
@@ -80,14 +139,7 @@ void force(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local) {
       relaxationStress<Dim>(reg, eps, sigma, r);
       // Tensor rows (xx, xy, xz), (xy, yy, yz), (xz, yz, zz) of r.
       const double T[3][3] = {{r[0], r[3], r[5]}, {r[3], r[1], r[4]}, {r[5], r[4], r[2]}};
-      for (PetscInt a = 0; a < h->nodes; ++a) {
-        PetscScalar *fa = f_local + reg.dofs[k * h->nodes + a];
-        for (int i = 0; i < Dim; ++i) {
-          double s = 0;
-          for (int j = 0; j < Dim; ++j) s += T[i][j] * dN[a * Dim + j];
-          fa[i] += vol * s;
-        }
-      }
+      scatter<Dim>(*h, reg, k, q, p, T, vol, f_local);
     });
   }
 }
@@ -97,7 +149,7 @@ double relaxationEnergy(const Hysteresis *h, const PetscScalar *u_local) {
   double sum = 0;
   for (const HystereticRegion &reg : h->regions) {
     const int size = physics::hystereticStateSize<Dim>(*reg.model);
-    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t, const double *, double vol, const double *eps) {
+    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t, int, double vol, const double *eps) {
       double tr = 0, ee = 0;
       for (int c = 0; c < Dim; ++c) tr += eps[c];
       for (int c = 0; c < physics::HystereticLayout<Dim>::kStrain; ++c) ee += (c < 3 && c < Dim ? 1.0 : 2.0) * eps[c] * eps[c];
@@ -111,22 +163,28 @@ double relaxationEnergy(const Hysteresis *h, const PetscScalar *u_local) {
 template <int Dim>
 void cellFields(const Hysteresis *h, const PetscScalar *u_local, double *relaxation, double *max_strain, double *modulus_ratio) {
   constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
-  for (const HystereticRegion &reg : h->regions) {
-    const int size = physics::hystereticStateSize<Dim>(*reg.model);
-    for (PetscInt c : reg.cells) {
-      for (int k = 0; k < 6; ++k) relaxation[6 * c + k] = 0;
-      max_strain[c] = 0;
-    }
-    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t k, const double *, double, const double *eps) {
-      double         sigma[kStress], r[6];
-      const PetscInt c = reg.cells[k];
+  for (size_t g = 0; g < h->regions.size(); ++g) {
+    const HystereticRegion &reg = h->regions[g];
+    const int               size = physics::hystereticStateSize<Dim>(*reg.model);
+    const size_t            nel = reg.elements.size();
+    // Per element of the region: the mean relaxation stress and the largest strain.
+    std::vector<double> mean(6 * nel, 0.0), largest(nel, 0.0);
+    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t k, int, double, const double *eps) {
+      double sigma[kStress], r[6];
       // Evaluate only (no state out): the committed state stays as it is.
       physics::hystereticUpdate<Dim>(*reg.model, &reg.committed[p * size], eps, sigma, nullptr);
       relaxationStress<Dim>(reg, eps, sigma, r);
-      for (int j = 0; j < 6; ++j) relaxation[6 * c + j] += r[j] / reg.points;
-      max_strain[c] = std::max(max_strain[c], physics::maxShearStrain<Dim>(*reg.model, &reg.committed[p * size]));
+      for (int j = 0; j < 6; ++j) mean[6 * k + j] += r[j] / reg.points;
+      largest[k] = std::max(largest[k], physics::maxShearStrain<Dim>(*reg.model, &reg.committed[p * size]));
     });
-    for (PetscInt c : reg.cells) modulus_ratio[c] = reg.model->secantModulusRatio(max_strain[c]);
+    // To the cells: at degree p > 1 every sub-cell of an element shows the element's values.
+    for (size_t c = 0; c < h->cell_element.size(); ++c) {
+      const auto [region, k] = h->element_place[h->cell_element[c]];
+      if (region != (PetscInt)g) continue;
+      for (int j = 0; j < 6; ++j) relaxation[6 * c + j] = mean[6 * k + j];
+      max_strain[c]    = largest[k];
+      modulus_ratio[c] = reg.model->secantModulusRatio(largest[k]);
+    }
   }
 }
 
@@ -138,12 +196,22 @@ PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector
   bool any = false;
   for (const auto &m : materials) any = any || m.model == MaterialModel::Hysteretic;
   if (!any) PetscFunctionReturn(0);
-  PetscCheck(bulk.degree() == 1, PETSC_COMM_SELF, PETSC_ERR_PLIB, "hysteretic regions at element degree %" PetscInt_FMT ": the caller rejects p > 1", bulk.degree());
-  auto                       *h   = new Hysteresis();
+  auto          *h   = new Hysteresis();
+  const PetscInt dim = bulk.dimension(), nen = bulk.nodesPerElement(), degree = bulk.degree();
+  h->dim    = dim;
+  h->nodes  = nen;
+  h->degree = degree;
+  h->element_place.assign(bulk.elementCount(), {-1, -1});
+  for (PetscInt c = 0; c < bulk.cellCount(); ++c) h->cell_element.push_back(bulk.cellElement(c));
+  // Degree p > 1: the GLL nodes are the points, as for the spectral K (collocated quadrature).
+  double x[numerics::kMaxSpectralDegree + 1], w[numerics::kMaxSpectralDegree + 1];
+  const int n1 = (int)degree + 1;
+  if (degree > 1) {
+    numerics::gllPointsWeights((int)degree, x, w);
+    h->derivative.resize((size_t)n1 * n1);
+    numerics::lagrangeDerivativeMatrix((int)degree, x, h->derivative.data());
+  }
   const numerics::ReferenceRule &rule = numerics::referenceRule(bulk.shape());
-  const PetscInt              dim = bulk.dimension(), nen = bulk.nodesPerCell();
-  h->dim   = dim;
-  h->nodes = nen;
   for (size_t r = 0; r < materials.size(); ++r) {
     if (materials[r].model != MaterialModel::Hysteretic) continue;
     HystereticRegion reg;
@@ -154,15 +222,35 @@ PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector
     // Mean: one point per cell, with the cell's mean strain (the volume average of the Gauss
     // points' gradients) and its volume.
     const bool mean = materials[r].hysteretic.points == StressPoints::Mean;
-    reg.points      = mean ? 1 : rule.points;
-    for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
-      if (bulk.cellRegion(c) != reg.region) continue;
-      reg.cells.push_back(c);
-      for (PetscInt a = 0; a < nen; ++a) reg.dofs.push_back(bulk.cellNodeOffset(c, a));
+    reg.points      = degree > 1 ? nen : (mean ? 1 : rule.points);
+    for (PetscInt e = 0; e < bulk.elementCount(); ++e) {
+      if (bulk.elementRegion(e) != reg.region) continue;
+      h->element_place[e] = {(PetscInt)h->regions.size(), (PetscInt)reg.elements.size()};
+      reg.elements.push_back(e);
+      for (PetscInt a = 0; a < nen; ++a) reg.dofs.push_back(bulk.elementNodeOffset(e, a));
+      const double *xe = bulk.elementCoordinates(e);
+      if (degree > 1) {
+        for (int q = 0; q < nen; ++q) {
+          double J[numerics::kMaxCellDim][numerics::kMaxCellDim] = {}, Jinv[numerics::kMaxCellDim][numerics::kMaxCellDim];
+          double weight = 1;
+          for (int k = 0; k < dim; ++k) {
+            const int     qk = k == 0 ? q % n1 : (k == 1 ? (q / n1) % n1 : q / (n1 * n1));
+            const double *Dq = &h->derivative[qk * n1];
+            weight *= w[qk];
+            for (int m = 0; m < n1; ++m)
+              for (int i = 0; i < dim; ++i) J[i][k] += Dq[m] * xe[along(q, k, m, n1) * dim + i];
+          }
+          const double det = numerics::invertJacobian((int)dim, J, Jinv);
+          for (int k = 0; k < dim; ++k)
+            for (int j = 0; j < dim; ++j) reg.jinv.push_back(Jinv[k][j]);
+          reg.volume.push_back(weight * std::fabs(det));
+        }
+        continue;
+      }
       double gradient[numerics::kMaxRulePoints][numerics::kMaxCellNodes][numerics::kMaxCellDim] = {}, volume[numerics::kMaxRulePoints];
       for (int q = 0; q < rule.points; ++q) {
         double J[numerics::kMaxCellDim][numerics::kMaxCellDim], Jinv[numerics::kMaxCellDim][numerics::kMaxCellDim];
-        numerics::jacobian((int)nen, (int)dim, bulk.cellCoordinates(c), rule.dN[q], J);
+        numerics::jacobian((int)nen, (int)dim, xe, rule.dN[q], J);
         volume[q] = rule.weight[q] * std::fabs(numerics::invertJacobian((int)dim, J, Jinv));
         // dN/dx_j = sum_k dN/dxi_k dxi_k/dx_j.
         for (PetscInt a = 0; a < nen; ++a)

@@ -168,11 +168,14 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
     for (size_t r = 0; r < m->materials.size(); ++r)
       if (m->materials[r].model == medium::MaterialModel::Hysteretic) {
         hysteretic = m->materials[r].region;
+        // One point per element from its mean strain is a Q1 device: a spectral element's
+        // strain is far from uniform.
+        PetscCheck(m->materials[r].hysteretic.points == medium::StressPoints::Gauss || m->mesh.degree == 1, comm, PETSC_ERR_USER_INPUT,
+                   "-material_%s_stress_points mean with -element_degree = %" PetscInt_FMT ": not supported; allowed: -material_%s_stress_points gauss (the GLL nodes)",
+                   hysteretic.c_str(), m->mesh.degree, hysteretic.c_str());
         PetscCheck(r >= saturated.size() || !saturated[r].saturated, comm, PETSC_ERR_USER_INPUT,
                    "-material_%s_model hysteretic with -material_%s_saturated: not supported yet; allowed: a dry hysteretic region", hysteretic.c_str(), hysteretic.c_str());
       }
-    PetscCheck(hysteretic.empty() || m->mesh.degree == 1, comm, PETSC_ERR_USER_INPUT,
-               "-material_%s_model hysteretic with -element_degree = %" PetscInt_FMT ": not supported yet; allowed: -element_degree 1", hysteretic.c_str(), m->mesh.degree);
   }
   PetscCall(readDamping(m));
   PetscCall(medium::AttenuationCreate(comm, &m->materials, &m->attenuation));

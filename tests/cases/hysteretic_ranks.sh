@@ -17,3 +17,15 @@ $SW $opts -output_dir "$WORK/np1" > /dev/null
 $MPIEXEC -n 2 $SW $opts -output_dir "$WORK/np2" > /dev/null
 $CHECK stations-equal "$WORK/np1" "$WORK/np2" --names a,b,c --tol 1e-10 --tol-a 1e-9
 $CHECK energy-equal "$WORK/np1/energy.csv" "$WORK/np2/energy.csv" --tol 1e-10
+# The same at element degree 3 (6 x 4 elements, the stress at the GLL nodes), a GQ/H soil
+# (tau_max 50 kPa; theta as published forms go, here -7,-1,1,1,0.8: G/Gmax 0.49 at 1e-4):
+# rank independence with the same bounds, and the ledger closed (1e-9, as above).
+opts3="-mesh_box_faces 6,4 -element_degree 3 -mesh_box_upper 30,20 -regions soil -material_soil_rho 1800 -material_soil_vp 600 -material_soil_vs 250
+  -material_soil_model hysteretic -material_soil_backbone gqh -material_soil_strength 5e4 -material_soil_gqh_theta -7,-1,1,1,0.8 -initial_velocity 0.1,0.05
+  -bc_bottom_type fixed -ts_max_steps 2000 -ts_max_time 1e9 -output_fields 0 -progress_interval 1000 -energy_interval 1
+  -station_coordinates 5,20,15,20,25,10 -station_names a,b,c"
+$SW $opts3 -output_dir "$WORK/p3_np1" > /dev/null
+$MPIEXEC -n 2 $SW $opts3 -output_dir "$WORK/p3_np2" > /dev/null
+$CHECK energy "$WORK/p3_np1/energy.csv" --max-error 1e-9 --min-rows 2001
+$CHECK stations-equal "$WORK/p3_np1" "$WORK/p3_np2" --names a,b,c --tol 1e-10 --tol-a 1e-9
+$CHECK energy-equal "$WORK/p3_np1/energy.csv" "$WORK/p3_np2/energy.csv" --tol 1e-10

@@ -15,19 +15,22 @@
 // accepted, makes the trial the committed state. Off during the geostatic stage (the soil
 // starts virgin with the dynamic stage, whose displacement starts from zero).
 //
+// Degree p > 1: the points are the elements' GLL nodes with the GLL weights, the quadrature
+// of the spectral K (collocated), so K u - f_relax is again exactly the Iwan stress's force.
+//
 // -material_<r>_stress_points mean evaluates the correction once per cell, from the cell's mean
 // strain B_m u (B_m the volume average of the Gauss points' B) with its volume V: the linear
 // part stays fully integrated in K, so no hourglass mode appears (only the correction is
 // under-integrated), and the tangent stays between K - V B_m^T C B_m = sum_q (B_q - B_m)^T C
 // (B_q - B_m) w_q |det J_q| >= 0 and K. Exact for a uniform strain; 4x (8x) fewer updates.
 //
-// Element degree 1 only (cells of any shape, the Gauss rules of numerics/reference_cell.hpp);
-// the caller rejects p > 1. The stable step stays that of the linear soil: the Iwan model's
+// The stable step stays that of the linear soil: the Iwan model's
 // tangent shear modulus is sum of the elastic elements' G_i <= Gmax, its bulk modulus K.
 #pragma once
 #include <petscdm.h>
 
 #include <memory>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -40,21 +43,26 @@ struct HystereticRegion {
   PetscInt                                            region = -1;
   std::shared_ptr<const physics::HystereticSoilModel> model;
   double                                              lambda = 0, mu = 0; // element moduli: C of the linear operator
-  int                                                 points = 0;         // per cell: the Gauss rule's, or 1 (mean)
-  std::vector<PetscInt>                               cells;              // this rank's cells of the region (bulk cell numbers)
-  std::vector<PetscInt>                               dofs;               // per cell of `cells`: its nodes' local dof offsets
-  // Per cell and Gauss point: dN_a/dx_j (nodes x dim) and the weight w |det J|.
-  std::vector<double>                                 gradient, volume;
+  std::vector<PetscInt>                               elements;           // this rank's elements of the region (degree 1: cells)
+  std::vector<PetscInt>                               dofs;               // per element: its nodes' local dof offsets
+  int                                                 points = 0;         // per element: the Gauss rule's, 1 (mean), or its GLL nodes
+  // Per element and point: the weight w |det J|, and at degree 1 dN_a/dx_j (nodes x dim), at
+  // degree p > 1 dxi_k/dx_j (dim x dim; the basis gradients come from the GLL derivative
+  // matrix along the lines through the node).
+  std::vector<double>                                 volume, gradient, jinv;
   std::vector<double>                                 committed, trial;   // the kernel states, point-major
 };
 
 struct Hysteresis {
-  PetscInt                      dim = 0, nodes = 0;
+  PetscInt                      dim = 0, nodes = 0, degree = 1; // nodes per element
+  std::vector<double>           derivative;      // degree p > 1: the GLL derivative matrix, (p+1)^2
+  std::vector<PetscInt>         cell_element;    // per local cell: its element (output)
+  std::vector<std::pair<PetscInt, PetscInt>> element_place; // per element: (index in regions, index in its elements), or -1s
   std::vector<HystereticRegion> regions;
   bool                          has_trial = false;
 };
 
-// *out is null when no region is hysteretic. Degree 1 only (bulk.degree() == 1).
+// *out is null when no region is hysteretic.
 PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector<RegionMaterialInfo> &materials, Hysteresis **out);
 PetscErrorCode HysteresisDestroy(Hysteresis **h);
 // f_local += f_relax from the ghosted displacement u_local (this rank's cells; the caller
