@@ -65,8 +65,8 @@ PetscErrorCode hystereticRead(PetscOptionItems *PetscOptionsObject, MPI_Comm com
   PetscCall(PetscOptionsInt("-surfaces", "number N of Iwan surfaces of a hysteretic region, 2 to 1000 (docs/hysteretic-soil.md: error and cost against N)", "MaterialsRead",
                             surfaces, &surfaces, &has_surfaces));
   PetscCall(core::OptionsChoice(PetscOptionsObject, "-stress_points",
-                                "where a hysteretic region's stress is evaluated: gauss (the Gauss points of the linear stiffness, 4 per quadrilateral, 8 per "
-                                "hexahedron) or mean (once per cell from its mean strain, the linear part still fully integrated: 4x or 8x fewer updates, exact for a "
+                                "where a hysteretic region's stress is evaluated: gauss (the quadrature points of the linear stiffness: 4 per quadrilateral, 8 "
+                                "per hexahedron, the GLL nodes at degree p > 1) or mean (once per cell from its mean strain, the linear part still fully integrated: 4x or 8x fewer updates, exact for a "
                                 "uniform strain)",
                                 kStressPointNames, 2, &points, &has_points));
   const struct {

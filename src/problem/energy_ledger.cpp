@@ -204,7 +204,6 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool ev
   e->h_prev = h;
   e->evaluated = evaluate;
   if (evaluate) {
-    e->hysteretic            = m->hysteresis != nullptr;
     e->hysteretic_dissipated = e->hysteretic_work + relaxation;
     e->kinetic = s[0];
     e->strain  = s[1];

@@ -1,6 +1,6 @@
 // The bulk force of hysteretic regions (-material_<r>_model hysteretic): the soil's stress is
-// the parallel Iwan model of physics/hysteretic_soil.hpp at every Gauss point of the region's
-// cells, while the bulk operator keeps applying the linear small-strain stiffness K (Gmax)
+// the parallel Iwan model of physics/hysteretic_soil.hpp at every quadrature point of the
+// region's elements (degree 1: the Gauss points of its cells), while the bulk operator keeps applying the linear small-strain stiffness K (Gmax)
 // everywhere. The difference is a correction force
 //   f_relax = sum_q B_q^T (C:eps_q - sigma_q) w_q |det J_q|,     f_internal = K u - f_relax,
 // with C the region's element moduli, eps_q = B_q u the strain and sigma_q the Iwan stress at
@@ -9,7 +9,7 @@
 // f_relax is zero (to round-off) while every surface is elastic, and it enters the
 // acceleration like the constant-Q memory forces (problem/nodal_acceleration.hpp).
 //
-// State: per Gauss point the kernel's plastic strains (hystereticStateSize doubles), committed
+// State: per point the kernel's plastic strains (hystereticStateSize doubles), committed
 // and trial: the force at (t, u) is computed from the committed state into the trial one, so
 // the RHS asked twice at one time gives the same force; HysteresisCommit, once the step is
 // accepted, makes the trial the committed state. Off during the geostatic stage (the soil

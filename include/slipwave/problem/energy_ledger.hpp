@@ -38,7 +38,6 @@ struct EnergyLedger {
   // the work done against f_hy is D - E_r, with E_r = 1/2 u.K u - the soil's stored energy
   // (the relaxation energy). At an evaluation E_r leaves the stored energies (strain and
   // shadow are then the soil's own) and D = hysteretic_work + E_r is booked.
-  bool   hysteretic = false;
   double hysteretic_work = 0;        // cumulative work done against f_hy
   double hysteretic_dissipated = 0;  // D = hysteretic_work + E_r, at the last evaluation
   // Saturated scenes (porous/pore_pressure.hpp): the pore pressure's work on the skeleton is
