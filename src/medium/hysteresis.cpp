@@ -126,22 +126,22 @@ void relaxationStress(const HystereticRegion &reg, const double *eps, const doub
   }
 }
 
+// f_local += scale f_relax of the region, its states read from state_in and, unless null,
+// updated into state_out.
 template <int Dim>
-void force(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local) {
+void regionForce(const Hysteresis &h, const HystereticRegion &reg, const double *state_in, double *state_out, const PetscScalar *u_local, double scale, PetscScalar *f_local) {
   constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
-  for (HystereticRegion &reg : h->regions) {
-    const int size = physics::hystereticStateSize<Dim>(*reg.model);
-    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t k, int q, double vol, const double *eps) {
-      double sigma[kStress], r[6];
-      // (Its return, the plastic work of the update, is not booked: the ledger's dissipation is
-      // the work against the relaxation force plus E_r, closed to round-off; energy_ledger.hpp.)
-      physics::hystereticUpdate<Dim>(*reg.model, &reg.committed[p * size], eps, sigma, &reg.trial[p * size]);
-      relaxationStress<Dim>(reg, eps, sigma, r);
-      // Tensor rows (xx, xy, xz), (xy, yy, yz), (xz, yz, zz) of r.
-      const double T[3][3] = {{r[0], r[3], r[5]}, {r[3], r[1], r[4]}, {r[5], r[4], r[2]}};
-      scatter<Dim>(*h, reg, k, q, p, T, vol, f_local);
-    });
-  }
+  const int     size    = physics::hystereticStateSize<Dim>(*reg.model);
+  forEachPoint<Dim>(h, reg, u_local, [&](size_t p, size_t k, int q, double vol, const double *eps) {
+    double sigma[kStress], r[6];
+    // (Its return, the plastic work of the update, is not booked: the ledger's dissipation is
+    // the work against the relaxation force plus E_r, closed to round-off; energy_ledger.hpp.)
+    physics::hystereticUpdate<Dim>(*reg.model, &state_in[p * size], eps, sigma, state_out ? &state_out[p * size] : nullptr);
+    relaxationStress<Dim>(reg, eps, sigma, r);
+    // Tensor rows (xx, xy, xz), (xy, yy, yz), (xz, yz, zz) of r.
+    const double T[3][3] = {{r[0], r[3], r[5]}, {r[3], r[1], r[4]}, {r[5], r[4], r[2]}};
+    scatter<Dim>(h, reg, k, q, p, T, scale * vol, f_local);
+  });
 }
 
 template <int Dim>
@@ -219,6 +219,14 @@ PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector
     reg.model  = materials[r].hysteretic.model;
     reg.lambda = materials[r].fe.lame.lambda;
     reg.mu     = materials[r].fe.lame.mu;
+    // A damped region's element moduli are the unrelaxed ones (medium/attenuation.hpp): the
+    // model takes them as its small-strain moduli, the same G/Gmax curve, so that it is the
+    // linear element below the elastic limit and the constant-Q body acts on its stress.
+    if (reg.mu != reg.model->shearModulus()) {
+      physics::HystereticSurfaces surfaces;
+      surfaces.count = reg.model->surfaces();
+      reg.model      = std::make_shared<const physics::HystereticSoilModel>(reg.mu, reg.lambda + 2.0 / 3.0 * reg.mu, materials[r].hysteretic.backbone, surfaces);
+    }
     // Mean: one point per cell, with the cell's mean strain (the volume average of the Gauss
     // points' gradients) and its volume.
     const bool mean = materials[r].hysteretic.points == StressPoints::Mean;
@@ -292,9 +300,19 @@ PetscErrorCode HysteresisDestroy(Hysteresis **h) {
 }
 
 void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local) {
-  if (h->dim == 2) force<2>(h, u_local, f_local);
-  else force<3>(h, u_local, f_local);
+  for (HystereticRegion &reg : h->regions) {
+    if (h->dim == 2) regionForce<2>(*h, reg, reg.committed.data(), reg.trial.data(), u_local, 1.0, f_local);
+    else regionForce<3>(*h, reg, reg.committed.data(), reg.trial.data(), u_local, 1.0, f_local);
+  }
   h->has_trial = true;
+}
+
+void HysteresisAddRegionForce(const Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local) {
+  for (const HystereticRegion &reg : h->regions) {
+    if (reg.region != region) continue;
+    if (h->dim == 2) regionForce<2>(*h, reg, reg.committed.data(), nullptr, u_local, scale, f_local);
+    else regionForce<3>(*h, reg, reg.committed.data(), nullptr, u_local, scale, f_local);
+  }
 }
 
 void HysteresisCommit(Hysteresis *h) {

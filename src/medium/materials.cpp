@@ -222,11 +222,6 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
     // A rigid region has no strain: nothing for a damping law to act on.
     PetscCheck(model != (PetscInt)MaterialModel::Rigid || damping_ratio == 0, comm, PETSC_ERR_USER_INPUT,
                "-material_%s_damping_ratio = %g with -material_%s_model rigid; allowed: 0 (a rigid region does not deform)", r, (double)damping_ratio, r);
-    // The constant-Q memory is driven by the region's linear force K u (medium/attenuation.hpp),
-    // which in a hysteretic region is not the stress the soil carries.
-    PetscCheck(model != (PetscInt)MaterialModel::Hysteretic || damping_ratio == 0, comm, PETSC_ERR_USER_INPUT,
-               "-material_%s_damping_ratio = %g with -material_%s_model hysteretic: not supported yet; allowed: 0 (no constant-Q damping in a hysteretic region)", r,
-               (double)damping_ratio, r);
     RegionMaterialInfo info;
     info.region  = region;
     info.elastic = m;

@@ -273,11 +273,9 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(core::event_bulk_force, 0, 0, 0, 0));
   PetscCall(ElastodynamicsStiffnessTimes(m, u, m->f_internal));
-  // The memory forces need K_U u and the ghosted u that K u has just gathered into u_local.
-  // Off in the geostatic stage (input_enabled false): the memory starts with the dynamic stage.
-  if (m->attenuation && m->input_enabled) PetscCall(medium::AttenuationForce(m->attenuation, m->dm, m->bulk, m->u_local, m->f_internal, t, m->f_anelastic));
-  // The same ghosted u gives the hysteretic regions' strains. Off in the geostatic stage: its
-  // static state is the linear one, and the soil starts virgin with the dynamic stage.
+  // The ghosted u that K u has just gathered into u_local gives the hysteretic regions'
+  // strains. Off in the geostatic stage: its static state is the linear one, and the soil
+  // starts virgin with the dynamic stage.
   if (m->hysteresis && m->input_enabled) {
     const PetscScalar *ul;
     PetscScalar       *fl;
@@ -290,6 +288,11 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
     PetscCall(VecZeroEntries(m->f_hysteretic));
     PetscCall(DMLocalToGlobal(m->dm, m->f_local, ADD_VALUES, m->f_hysteretic));
   }
+  // The memory forces need K_U u and the ghosted u that K u has just gathered into u_local,
+  // and in hysteretic regions the relaxation force of the same u (their drive is the soil's
+  // stress). Off in the geostatic stage: the memory starts with the dynamic stage.
+  if (m->attenuation && m->input_enabled)
+    PetscCall(medium::AttenuationForce(m->attenuation, m->dm, m->bulk, m->u_local, m->f_internal, m->hysteresis, m->f_hysteretic, t, m->f_anelastic));
   // Off in the geostatic stage (input_enabled false): its equilibrium is the drained one, the
   // excess pore pressure stays zero.
   if (m->pore && m->input_enabled) {

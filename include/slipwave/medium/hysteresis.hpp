@@ -68,6 +68,11 @@ PetscErrorCode HysteresisDestroy(Hysteresis **h);
 // f_local += f_relax from the ghosted displacement u_local (this rank's cells; the caller
 // assembles), the states going into the trial.
 void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local);
+// f_local += scale f_relax of region `region` alone (a no-op for a region that is not
+// hysteretic), from the committed states (evaluated, not updated): at the u of the last
+// HysteresisForce, its contribution of that region. For the constant-Q drive of a damped
+// hysteretic region that does not cover the mesh (medium/attenuation.hpp).
+void HysteresisAddRegionForce(const Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local);
 // The trial of the last HysteresisForce becomes the committed state (no-op without one).
 void HysteresisCommit(Hysteresis *h);
 // Committed state for checkpoints: this rank's points' states, region by region. The size is fixed by the mesh and the models (a checkpoint of another
