@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "slipwave/numerics/gll_basis.hpp"
 #include "slipwave/numerics/reference_cell.hpp"
@@ -225,7 +226,12 @@ PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector
     if (reg.mu != reg.model->shearModulus()) {
       physics::HystereticSurfaces surfaces;
       surfaces.count = reg.model->surfaces();
-      reg.model      = std::make_shared<const physics::HystereticSoilModel>(reg.mu, reg.lambda + 2.0 / 3.0 * reg.mu, materials[r].hysteretic.backbone, surfaces);
+      // The same curve the options' check built a model from: it cannot fail here.
+      try {
+        reg.model = std::make_shared<const physics::HystereticSoilModel>(reg.mu, reg.lambda + 2.0 / 3.0 * reg.mu, materials[r].hysteretic.backbone, surfaces);
+      } catch (const std::invalid_argument &e) {
+        SETERRQ(PETSC_COMM_SELF, PETSC_ERR_PLIB, "region %s: the hysteretic model on the unrelaxed moduli: %s", materials[r].region.c_str(), e.what());
+      }
     }
     // Mean: one point per cell, with the cell's mean strain (the volume average of the Gauss
     // points' gradients) and its volume.

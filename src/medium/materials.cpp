@@ -104,42 +104,43 @@ PetscErrorCode hystereticRead(PetscOptionItems *PetscOptionsObject, MPI_Comm com
   spec->points      = (StressPoints)points;
   const double cap  = strength / gmax;
   // The constructors state the rule a value breaks (std::invalid_argument); the option names
-  // are ours, so each parameter is checked against its range here first.
-  switch (spec->choice) {
-  case BackboneChoice::Mkz:
-    PetscCheck(has_gamma, comm, PETSC_ERR_USER_INPUT, "-material_%s_reference_strain is missing (-material_%s_backbone mkz); allowed: gamma_r > 0 [-]", r, r);
-    PetscCheck(gamma_r > 0 && gamma_r < 1, comm, PETSC_ERR_USER_INPUT, "-material_%s_reference_strain = %g; allowed: 0 < gamma_r < 1 [-] (a ratio, not percent)", r,
-               (double)gamma_r);
-    PetscCheck(curvature > 0 && curvature <= 1, comm, PETSC_ERR_USER_INPUT,
-               "-material_%s_curvature = %g; allowed: 0 < s <= 1 (a larger s is not concave: no parallel Iwan model holds it)", r, (double)curvature);
-    PetscCheck(beta > 0 && std::isfinite(beta), comm, PETSC_ERR_USER_INPUT, "-material_%s_beta = %g; allowed: beta > 0", r, (double)beta);
-    spec->backbone = physics::mkzBackbone(gamma_r, curvature, beta, cap);
-    break;
-  case BackboneChoice::Darendeli:
-    PetscCheck(has_mean, comm, PETSC_ERR_USER_INPUT, "-material_%s_mean_effective_stress is missing (-material_%s_backbone darendeli); allowed: sigma'_0 > 0 [Pa]", r, r);
-    PetscCheck(mean_stress > 0 && std::isfinite(mean_stress), comm, PETSC_ERR_USER_INPUT, "-material_%s_mean_effective_stress = %g; allowed: sigma'_0 > 0 [Pa]", r,
-               (double)mean_stress);
-    PetscCheck(pi >= 0 && pi <= 200, comm, PETSC_ERR_USER_INPUT, "-material_%s_plasticity_index = %g; allowed: 0 to 200 [%%]", r, (double)pi);
-    PetscCheck(ocr >= 1 && ocr <= 100, comm, PETSC_ERR_USER_INPUT, "-material_%s_ocr = %g; allowed: 1 to 100", r, (double)ocr);
-    spec->darendeli.plasticity_index      = pi;
-    spec->darendeli.ocr                   = ocr;
-    spec->darendeli.mean_effective_stress = mean_stress;
-    spec->backbone                        = physics::darendeliBackbone(spec->darendeli, cap);
-    break;
-  case BackboneChoice::Gqh:
-    PetscCheck(has_strength, comm, PETSC_ERR_USER_INPUT, "-material_%s_strength is missing (-material_%s_backbone gqh); allowed: tau_max > 0 [Pa]", r, r);
-    PetscCheck(theta[2] > 0 && theta[3] >= 0 && theta[4] > 0, comm, PETSC_ERR_USER_INPUT,
-               "-material_%s_gqh_theta = %g,%g,%g,%g,%g; allowed: theta3 > 0, theta4 >= 0, theta5 > 0", r, (double)theta[0], (double)theta[1], (double)theta[2],
-               (double)theta[3], (double)theta[4]);
-    {
-      const double t[5] = {theta[0], theta[1], theta[2], theta[3], theta[4]};
-      spec->backbone    = physics::gqhBackbone(gmax, strength, t);
-    }
-    break;
-  }
-  physics::HystereticSurfaces s;
-  s.count = (int)surfaces;
+  // are ours, so each parameter is checked against its range here first, and what is left
+  // (a combination the model cannot hold) is caught below.
   try {
+    switch (spec->choice) {
+    case BackboneChoice::Mkz:
+      PetscCheck(has_gamma, comm, PETSC_ERR_USER_INPUT, "-material_%s_reference_strain is missing (-material_%s_backbone mkz); allowed: gamma_r > 0 [-]", r, r);
+      PetscCheck(gamma_r > 0 && gamma_r < 1, comm, PETSC_ERR_USER_INPUT, "-material_%s_reference_strain = %g; allowed: 0 < gamma_r < 1 [-] (a ratio, not percent)", r,
+                 (double)gamma_r);
+      PetscCheck(curvature > 0 && curvature <= 1, comm, PETSC_ERR_USER_INPUT,
+                 "-material_%s_curvature = %g; allowed: 0 < s <= 1 (a larger s is not concave: no parallel Iwan model holds it)", r, (double)curvature);
+      PetscCheck(beta > 0 && std::isfinite(beta), comm, PETSC_ERR_USER_INPUT, "-material_%s_beta = %g; allowed: beta > 0", r, (double)beta);
+      spec->backbone = physics::mkzBackbone(gamma_r, curvature, beta, cap);
+      break;
+    case BackboneChoice::Darendeli:
+      PetscCheck(has_mean, comm, PETSC_ERR_USER_INPUT, "-material_%s_mean_effective_stress is missing (-material_%s_backbone darendeli); allowed: sigma'_0 > 0 [Pa]", r, r);
+      PetscCheck(mean_stress > 0 && std::isfinite(mean_stress), comm, PETSC_ERR_USER_INPUT, "-material_%s_mean_effective_stress = %g; allowed: sigma'_0 > 0 [Pa]", r,
+                 (double)mean_stress);
+      PetscCheck(pi >= 0 && pi <= 200, comm, PETSC_ERR_USER_INPUT, "-material_%s_plasticity_index = %g; allowed: 0 to 200 [%%]", r, (double)pi);
+      PetscCheck(ocr >= 1 && ocr <= 100, comm, PETSC_ERR_USER_INPUT, "-material_%s_ocr = %g; allowed: 1 to 100", r, (double)ocr);
+      spec->darendeli.plasticity_index      = pi;
+      spec->darendeli.ocr                   = ocr;
+      spec->darendeli.mean_effective_stress = mean_stress;
+      spec->backbone                        = physics::darendeliBackbone(spec->darendeli, cap);
+      break;
+    case BackboneChoice::Gqh:
+      PetscCheck(has_strength, comm, PETSC_ERR_USER_INPUT, "-material_%s_strength is missing (-material_%s_backbone gqh); allowed: tau_max > 0 [Pa]", r, r);
+      PetscCheck(theta[2] > 0 && theta[3] >= 0 && theta[4] > 0, comm, PETSC_ERR_USER_INPUT,
+                 "-material_%s_gqh_theta = %g,%g,%g,%g,%g; allowed: theta3 > 0, theta4 >= 0, theta5 > 0", r, (double)theta[0], (double)theta[1], (double)theta[2],
+                 (double)theta[3], (double)theta[4]);
+      {
+        const double t[5] = {theta[0], theta[1], theta[2], theta[3], theta[4]};
+        spec->backbone    = physics::gqhBackbone(gmax, strength, t);
+      }
+      break;
+    }
+    physics::HystereticSurfaces s;
+    s.count     = (int)surfaces;
     spec->model = std::make_shared<const physics::HystereticSoilModel>(gmax, bulk, spec->backbone, s);
   } catch (const std::invalid_argument &e) {
     SETERRQ(comm, PETSC_ERR_USER_INPUT, "-material_%s_backbone %s with these parameters: %s", r, kBackboneNames[choice], e.what());
