@@ -31,7 +31,7 @@ ENERGY_UNIT = "J (per m in 2D)"
 # Units of the frames' fields (volume and interface), by field name.
 FIELD_UNITS = {
     "displacement": "m", "velocity": "m/s", "acceleration": "m/s^2", "stress": "Pa", "region": "-",
-    "pore_pressure": "Pa", "excess_pore_pressure": "Pa",
+    "pore_pressure": "Pa", "excess_pore_pressure": "Pa", "max_shear_strain": "-", "secant_modulus_ratio": "-",
     "opening": "m", "slip": "m", "sigma_N": "Pa", "sigma_T": "Pa", "plastic_opening": "m", "accumulated_slip": "m",
     "status": "-", "dissipation": "J/m^2", "sigma_N_effective": "Pa",
 }
@@ -103,7 +103,10 @@ class Frames:
       xx, xy, xz, yx, yy, yz, zx, zy, zz). Units: FIELD_UNITS.
     Volume fields: displacement, velocity, acceleration (nodes), stress (cells, at the centre;
     includes the initial stress), region (cells, index of the region), pore_pressure and
-    excess_pore_pressure (nodes, saturated scenes). Interface fields (one row per pair):
+    excess_pore_pressure (nodes, saturated scenes), max_shear_strain (the largest equivalent
+    shear strain sqrt(2 e:e) a cell's points reached) and secant_modulus_ratio (the soil
+    model's G/Gmax there; 0 and 1 outside hysteretic regions: scenes with hysteretic soil).
+    Interface fields (one row per pair):
     opening, slip (tangential jump, structure minus soil, vector), sigma_N (tension positive),
     sigma_T (vector), plastic_opening, accumulated_slip (slip path), status (INTERFACE_STATUS
     codes), dissipation [J/m^2]; saturated: pore_pressure, sigma_N_effective.

@@ -11,6 +11,7 @@
 #include "slipwave/input/drm.hpp"
 #include "slipwave/input/free_field.hpp"
 #include "slipwave/medium/attenuation.hpp"
+#include "slipwave/medium/hysteresis.hpp"
 #include "slipwave/porous/pore_pressure.hpp"
 #include "slipwave/time/central_difference.hpp"
 
@@ -18,19 +19,20 @@ namespace slipwave::app {
 namespace {
 
 constexpr PetscInt kMagic   = 0x53574350; // "SWCP"
-constexpr PetscInt kVersion = 7; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
+constexpr PetscInt kVersion = 8; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
                                  // 4: state only (no RHS force parts, no attenuation trial);
                                  // 5: the scene options after the header, a seal at the end;
                                  // 6: the pore pressure state and the ledger's fluid terms;
                                  // 7: free-field columns keep constant-Q memory at every GLL
                                  //    point of a segment (both ends at p = 1)
+                                 // 8: the hysteretic soil's state and the ledger's hysteretic work
 constexpr PetscInt kHeader  = 10;
 
 // The ledger as a flat array, in a fixed order.
 std::vector<double> ledgerArray(const problem::EnergyLedger &e) {
   return {e.kinetic, e.strain,        e.input,        e.external,      e.reactions, e.absorbed,          e.damped, e.interface_work,
           e.shadow,  e.shadow_start,  e.balance_error, e.scale,        e.h_prev,    e.started ? 1.0 : 0.0, e.anelastic, e.contact_damped,
-          e.fluid_stored, e.darcy, e.fluid_inflow};
+          e.fluid_stored, e.darcy, e.fluid_inflow, e.hysteretic_work, e.hysteretic_dissipated};
 }
 
 void ledgerFromArray(const double *a, problem::EnergyLedger *e) {
@@ -38,9 +40,10 @@ void ledgerFromArray(const double *a, problem::EnergyLedger *e) {
   e->interface_work = a[7], e->shadow = a[8], e->shadow_start = a[9], e->balance_error = a[10], e->scale = a[11], e->h_prev = a[12];
   e->started = a[13] != 0, e->anelastic = a[14], e->contact_damped = a[15];
   e->fluid_stored = a[16], e->darcy = a[17], e->fluid_inflow = a[18];
+  e->hysteretic_work = a[19], e->hysteretic_dissipated = a[20];
   e->external_gross = std::fabs(e->external); // not stored: the net work bounds it from below
 }
-constexpr PetscInt kLedgerSize = 19;
+constexpr PetscInt kLedgerSize = 21;
 
 std::vector<Vec> stateVectors(const CheckpointState &s) {
   Vec u, v, a;
@@ -129,6 +132,7 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
   }
   PetscCall(viewLocalArray(comm, samples, viewer));
   if (s.model->attenuation) PetscCall(viewLocalArray(comm, medium::AttenuationState(s.model->attenuation), viewer));
+  if (s.model->hysteresis) PetscCall(viewLocalArray(comm, medium::HysteresisState(s.model->hysteresis), viewer));
   if (s.model->drm) PetscCall(viewLocalArray(comm, input::DrmState(s.model->drm), viewer));
   // The free-field columns are replicated on every rank: rank 0's copy is the state.
   for (PetscInt k = 0; k < header[8]; ++k) {
@@ -226,6 +230,11 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
     PetscCall(loadLocalArray(comm, medium::AttenuationStateSize(s.model->attenuation), viewer, &memory));
     PetscCheck(medium::AttenuationSetState(s.model->attenuation, memory), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                "-restart = %s: the attenuation memory does not fit this mesh; allowed: the scene options of the run that wrote it", path.c_str());
+  }
+  if (s.model->hysteresis) {
+    std::vector<double> state;
+    PetscCall(loadLocalArray(comm, medium::HysteresisStateSize(s.model->hysteresis), viewer, &state));
+    medium::HysteresisSetState(s.model->hysteresis, state);
   }
   if (s.model->drm) {
     std::vector<double> drm;

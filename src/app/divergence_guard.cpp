@@ -136,7 +136,8 @@ PetscErrorCode DivergenceGuard(const problem::Elastodynamics &model, const probl
                              {"interface force", model.f_interface},
                              {"stiffness-damping force", model.f_stiffness_damping},
                              {"anelastic force", model.f_anelastic},
-                             {"contact-damping force", model.f_contact_damping}};
+                             {"contact-damping force", model.f_contact_damping},
+                             {"hysteretic relaxation force", model.f_hysteretic}};
   std::string where = "no field holds a non-finite value (the ledger's sums overflowed)";
   for (const Searched &f : fields) {
     PetscInt first = PETSC_MAX_INT;

@@ -16,11 +16,12 @@ constexpr std::array<const char *, 15> kValueColumns = {"time",           "kinet
 
 constexpr std::array<const char *, 3> kFluidColumns = {"fluid_stored", "darcy_dissipated", "fluid_inflow_work"};
 
-std::string header(bool fluid) {
+std::string header(bool fluid, bool hysteretic) {
   std::string line = "step";
   for (const char *name : kValueColumns) line += std::string(",") + name;
   if (fluid)
     for (const char *name : kFluidColumns) line += std::string(",") + name;
+  if (hysteretic) line += ",hysteretic_dissipated";
   return line + "\n";
 }
 
@@ -29,7 +30,7 @@ std::string header(bool fluid) {
 PetscErrorCode EnergyCsv::Open(const std::string &dir, const std::string &previous, PetscInt restart_step) {
   const std::string path = dir + "/energy.csv";
   PetscFunctionBeginUser;
-  std::string kept = header(fluid_);
+  std::string kept = header(fluid_, hysteretic_);
   if (!previous.empty()) {
     if (FILE *in = std::fopen(previous.c_str(), "r")) {
       char line[4096];
@@ -82,6 +83,10 @@ void EnergyCsv::Append(PetscInt step, PetscReal t, const problem::EnergyLedger &
       std::snprintf(cell, sizeof cell, ",%.10g", x);
       pending_ += cell;
     }
+  }
+  if (hysteretic_) {
+    std::snprintf(cell, sizeof cell, ",%.10g", e.hysteretic_dissipated);
+    pending_ += cell;
   }
   pending_ += '\n';
 }

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "slipwave/medium/hysteresis.hpp"
 #include "slipwave/porous/pore_pressure.hpp"
 
 namespace slipwave::app {
@@ -18,7 +19,7 @@ PetscErrorCode OutputFrames::Open(const problem::Elastodynamics &model, const st
     // over from the checkpoint's folder when DIR is another one.
     if (restarted) PetscCall(io::FieldWriter::CopySeries(model.comm, checkpoint_dir, dir, "volume", (PetscInt)times_.size(), &kept));
     volume_ = std::make_unique<io::VolumeOutput>();
-    PetscCall(volume_->Open(model.dm, model.bulk, dir, kept ? &previous : nullptr, model.pore ? model.pore->p : nullptr));
+    PetscCall(volume_->Open(model.dm, model.bulk, dir, kept ? &previous : nullptr, model.pore ? model.pore->p : nullptr, model.hysteresis != nullptr));
   }
   for (const auto &iface : model.interfaces) {
     if (restarted) PetscCall(io::FieldWriter::CopySeries(model.comm, checkpoint_dir, dir, "interface_" + iface.spec().name, (PetscInt)times_.size(), &kept));
@@ -35,7 +36,26 @@ PetscErrorCode OutputFrames::WriteIfDue(const problem::Elastodynamics &model, Pe
   const PetscInt frame = (PetscInt)times_.size();
   if (volume_) {
     if (model.pore) PetscCall(porous::PorePressureTotal(model.pore));
-    PetscCall(volume_->Write(model.dm, model.bulk, frame, t, u, v, a, model.initial_stress, model.pore ? model.pore->p_total : nullptr, model.pore ? model.pore->p : nullptr));
+    io::SoilCellOutput soil{};
+    const PetscInt     ncell = model.bulk.cellCount();
+    // Hysteretic soil: the elastic cells keep the linear stress, G/Gmax 1 and no strain record.
+    std::vector<double> relaxation, max_strain, ratio;
+    if (model.hysteresis) {
+      relaxation.assign(6 * ncell, 0.0);
+      max_strain.assign(ncell, 0.0);
+      ratio.assign(ncell, 1.0);
+      Vec                u_local;
+      const PetscScalar *ul;
+      PetscCall(DMGetLocalVector(model.dm, &u_local));
+      PetscCall(DMGlobalToLocal(model.dm, u, INSERT_VALUES, u_local));
+      PetscCall(VecGetArrayRead(u_local, &ul));
+      medium::HysteresisCellFields(model.hysteresis, ul, relaxation.data(), max_strain.data(), ratio.data());
+      PetscCall(VecRestoreArrayRead(u_local, &ul));
+      PetscCall(DMRestoreLocalVector(model.dm, &u_local));
+      soil = {relaxation.data(), max_strain.data(), ratio.data()};
+    }
+    PetscCall(volume_->Write(model.dm, model.bulk, frame, t, u, v, a, model.initial_stress, model.pore ? model.pore->p_total : nullptr, model.pore ? model.pore->p : nullptr,
+                             model.hysteresis ? &soil : nullptr));
   }
   for (size_t k = 0; k < interfaces_.size(); ++k) PetscCall(interfaces_[k]->Write(model.interfaces[k], frame, t));
   times_.push_back(t);

@@ -7,6 +7,7 @@
 
 #include "slipwave/input/drm.hpp"
 #include "slipwave/medium/attenuation.hpp"
+#include "slipwave/medium/hysteresis.hpp"
 #include "slipwave/porous/pore_pressure.hpp"
 #include "slipwave/problem/rigid_bodies.hpp"
 
@@ -175,6 +176,7 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
                           limit.dt_bulk, 100 * (1 - limit.dt_bulk / limit.dt_without_stiffness_damping)));
   for (const std::string &line : medium::AttenuationReport(model.attenuation, model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   PetscCall(PetscPrintf(comm, "%s", problem::RigidBodiesDescribe(model.rigid).c_str()));
+  for (const std::string &line : medium::HysteresisReport(model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   PetscCall(reportInterfaces(model));
   if (model.pore)
     for (const std::string &line : porous::PorePressureReport(model.pore, model.materials, limit.dt_drained, limit.dt_bulk, limit.dt_limit, dt)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));

@@ -270,6 +270,7 @@ PetscErrorCode openOutputs(Run *r, TS ts) {
     PetscReal dt;
     PetscCall(TSGetTimeStep(ts, &dt));
     r->energy_csv.SetFluid(r->model.pore != nullptr);
+    r->energy_csv.SetHysteretic(r->model.hysteresis != nullptr);
     PetscCall(r->energy_csv.Open(r->opt.output_dir, restarted ? CheckpointFolder(r->opt.restart) + "/energy.csv" : "", r->restart_step));
     WriteRunInfo(r->model, r->opt.output_dir, dt);
   }

@@ -7,7 +7,7 @@
 namespace slipwave::io {
 
 PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir, const std::vector<std::pair<PetscInt, PetscReal>> *previous,
-                                  Vec pore_layout) {
+                                  Vec pore_layout, bool soil) {
   MPI_Comm     comm = PetscObjectComm((PetscObject)dm);
   const PetscInt dim = bulk.dimension(), nen = bulk.nodesPerCell(), ncell = bulk.cellCount();
   PetscSection gsection;
@@ -40,6 +40,10 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
   PetscCall(VecGetArray(region_, &r));
   for (PetscInt c = 0; c < ncell; ++c) r[c] = bulk.cellRegion(c);
   PetscCall(VecRestoreArray(region_, &r));
+  if (soil) {
+    PetscCall(VecCreateMPI(comm, ncell, PETSC_DETERMINE, &max_strain_));
+    PetscCall(VecDuplicate(max_strain_, &modulus_ratio_));
+  }
 
   const char *types[4] = {"Triangle", "Quadrilateral", "Tetrahedron", "Hexahedron"};
   GridLayout  grid;
@@ -55,6 +59,7 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
                                     {"stress", Centering::Cell, stress_},
                                     {"region", Centering::Cell, region_}};
     if (pore_layout) layout.insert(layout.end(), {{"pore_pressure", Centering::Node, pore_layout}, {"excess_pore_pressure", Centering::Node, pore_layout}});
+    if (soil) layout.insert(layout.end(), {{"max_shear_strain", Centering::Cell, region_}, {"secant_modulus_ratio", Centering::Cell, region_}});
     PetscCall(writer_.Resume(comm, dir, grid, geometry_, topology_, *previous, layout));
   } else {
     PetscCall(writer_.Open(comm, dir, grid, geometry_, topology_));
@@ -63,7 +68,7 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
 }
 
 PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a,
-                                   const std::vector<double> &initial_stress, Vec p_total, Vec p_excess) {
+                                   const std::vector<double> &initial_stress, Vec p_total, Vec p_excess, const SoilCellOutput *soil) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(core::event_output, 0, 0, 0, 0));
   PetscCall(DMGlobalToLocal(dm, u, INSERT_VALUES, u_local_));
@@ -73,6 +78,18 @@ PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscIn
   PetscCall(VecGetArray(stress_, &s));
   bulk.cellStress(ul, s);
   for (size_t k = 0; k < initial_stress.size(); ++k) s[k] += initial_stress[k];
+  if (soil) {
+    PetscScalar *g, *ratio;
+    PetscCall(VecGetArray(max_strain_, &g));
+    PetscCall(VecGetArray(modulus_ratio_, &ratio));
+    for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
+      for (int k = 0; k < fem::kStressComponents; ++k) s[c * fem::kStressComponents + k] -= soil->relaxation_stress[c * fem::kStressComponents + k];
+      g[c]     = soil->max_shear_strain[c];
+      ratio[c] = soil->modulus_ratio[c];
+    }
+    PetscCall(VecRestoreArray(modulus_ratio_, &ratio));
+    PetscCall(VecRestoreArray(max_strain_, &g));
+  }
   PetscCall(VecRestoreArray(stress_, &s));
   PetscCall(VecRestoreArrayRead(u_local_, &ul));
   for (Vec x : {u, v, a}) PetscCall(VecSetBlockSize(x, bulk.dimension()));
@@ -83,6 +100,7 @@ PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscIn
                                             {"region", Centering::Cell, region_}};
   if (p_total) fields.push_back({"pore_pressure", Centering::Node, p_total});
   if (p_excess) fields.push_back({"excess_pore_pressure", Centering::Node, p_excess});
+  if (soil) fields.insert(fields.end(), {{"max_shear_strain", Centering::Cell, max_strain_}, {"secant_modulus_ratio", Centering::Cell, modulus_ratio_}});
   PetscCall(writer_.WriteStep(step, t, fields));
   PetscCall(PetscLogEventEnd(core::event_output, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -93,6 +111,8 @@ PetscErrorCode VolumeOutput::Close() {
   PetscCall(writer_.Close());
   PetscCall(VecDestroy(&geometry_));
   PetscCall(VecDestroy(&stress_));
+  PetscCall(VecDestroy(&max_strain_));
+  PetscCall(VecDestroy(&modulus_ratio_));
   PetscCall(VecDestroy(&region_));
   PetscCall(ISDestroy(&topology_));
   if (u_local_) PetscCall(VecDestroy(&u_local_));

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "slipwave/medium/hysteresis.hpp"
+
 
 namespace slipwave::medium {
 namespace {
@@ -171,7 +173,8 @@ PetscErrorCode AttenuationDestroy(Attenuation **att) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator &bulk, Vec u_local, Vec f_internal, PetscReal t, Vec f) {
+PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator &bulk, Vec u_local, Vec f_internal, const Hysteresis *hysteresis, Vec f_hysteretic,
+                                PetscReal t, Vec f) {
   constexpr int kMaxMechanisms = 8;
   PetscFunctionBeginUser;
   // Before the first commit the trial starts the memory at t (a zero interval).
@@ -186,6 +189,11 @@ PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator
   PetscScalar *fa;
   for (DampedRegion &d : att->damped) {
     Vec drive = f_internal;
+    if (d.whole_mesh && hysteresis) {
+      // One region covers the mesh: the relaxation force is all its own.
+      PetscCall(VecWAXPY(att->drive, -1.0, f_hysteretic, f_internal));
+      drive = att->drive;
+    }
     if (!d.whole_mesh) {
       const PetscScalar *ul;
       PetscScalar       *dl;
@@ -193,6 +201,7 @@ PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator
       PetscCall(VecGetArrayRead(u_local, &ul));
       PetscCall(VecGetArray(att->drive_local, &dl));
       bulk.addStiffnessTimes(d.cells, ul, dl);
+      if (hysteresis) HysteresisAddRegionForce(hysteresis, d.region, ul, -1.0, dl);
       PetscCall(VecRestoreArray(att->drive_local, &dl));
       PetscCall(VecRestoreArrayRead(u_local, &ul));
       PetscCall(VecZeroEntries(att->drive));

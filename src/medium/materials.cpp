@@ -1,8 +1,10 @@
 #include "slipwave/medium/materials.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <sstream>
+#include <stdexcept>
 
 #include "slipwave/core/option_choice.hpp"
 
@@ -19,7 +21,10 @@ PetscErrorCode materialNamesGiven(std::vector<std::string> *names) {
   std::string       token;
   // With the pore-fluid properties of saturated regions (porous/pore_pressure.cpp).
   const char       *properties[] = {"_rho", "_vp", "_vs", "_E", "_nu", "_damping_ratio", "_reference_frequency", "_saturated", "_porosity",
-                                    "_hydraulic_conductivity", "_fluid_bulk_modulus", "_grain_bulk_modulus", "_fluid_density", "_model"};
+                                    "_hydraulic_conductivity", "_fluid_bulk_modulus", "_grain_bulk_modulus", "_fluid_density", "_model",
+                                    // A hysteretic region's backbone (hystereticRead below).
+                                    "_backbone", "_reference_strain", "_curvature", "_beta", "_strength", "_gqh_theta", "_plasticity_index", "_ocr",
+                                    "_mean_effective_stress", "_surfaces", "_stress_points"};
   while (ss >> token) {
     if (token.rfind("-material_", 0) != 0) continue;
     std::string rest = token.substr(std::strlen("-material_"));
@@ -29,6 +34,117 @@ PetscErrorCode materialNamesGiven(std::vector<std::string> *names) {
     }
   }
   PetscCall(PetscFree(all));
+  PetscFunctionReturn(0);
+}
+
+// The backbone options of region r, read in its options block (prefix material_<r>_), and the
+// model built from them. Every option is checked here, before the mesh work: one given to a
+// region that is not hysteretic, or to a backbone that does not use it, stops the run.
+// elastic: the region's small-strain material, or null where it is not valid (its own check
+// below stops the run then).
+PetscErrorCode hystereticRead(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, const char *r, bool hysteretic, const physics::ElasticMaterial *elastic,
+                              HystereticSpec *spec) {
+  PetscInt  choice = (PetscInt)BackboneChoice::Mkz, surfaces = physics::HystereticSurfaces{}.count, ntheta = 5, points = (PetscInt)StressPoints::Gauss;
+  PetscReal gamma_r = 0, curvature = 1, beta = 1, strength = 0, pi = 0, ocr = 1, mean_stress = 0, theta[5] = {0, 0, 1, 1, 1};
+  PetscBool has_choice, has_gamma, has_curvature, has_beta, has_strength, has_pi, has_ocr, has_mean, has_theta, has_surfaces, has_points;
+  PetscFunctionBeginUser;
+  PetscCall(core::OptionsChoice(PetscOptionsObject, "-backbone",
+                                "backbone of a hysteretic region: mkz (Matasovic-Vucetic, from -reference_strain), darendeli (Darendeli 2001, from "
+                                "-plasticity_index, -ocr, -mean_effective_stress) or gqh (Groholski et al. 2016, from -strength and -gqh_theta)",
+                                kBackboneNames, 3, &choice, &has_choice));
+  PetscCall(PetscOptionsReal("-reference_strain", "MKZ reference shear strain gamma_r [-] (a ratio, not percent), > 0", "MaterialsRead", gamma_r, &gamma_r, &has_gamma));
+  PetscCall(PetscOptionsReal("-curvature", "MKZ curvature s [-], > 0 (1: hyperbolic)", "MaterialsRead", curvature, &curvature, &has_curvature));
+  PetscCall(PetscOptionsReal("-beta", "MKZ coefficient beta [-], > 0 (1: hyperbolic)", "MaterialsRead", beta, &beta, &has_beta));
+  PetscCall(PetscOptionsReal("-strength", "shear strength tau_max [Pa], > 0: the cap of an mkz or darendeli backbone (optional), the strength of gqh (required)",
+                             "MaterialsRead", strength, &strength, &has_strength));
+  PetscCall(PetscOptionsRealArray("-gqh_theta", "GQ/H curve-fitting parameters theta1,...,theta5 [-] as published (theta3, theta5 > 0, theta4 >= 0; default 0,0,1,1,1: "
+                                  "the hyperbola)", "MaterialsRead", theta, &ntheta, &has_theta));
+  PetscCall(PetscOptionsReal("-plasticity_index", "Darendeli plasticity index PI [%], 0 to 200", "MaterialsRead", pi, &pi, &has_pi));
+  PetscCall(PetscOptionsReal("-ocr", "Darendeli overconsolidation ratio OCR [-], 1 to 100", "MaterialsRead", ocr, &ocr, &has_ocr));
+  PetscCall(PetscOptionsReal("-mean_effective_stress", "Darendeli mean effective stress sigma'_0 [Pa], > 0 (required)", "MaterialsRead", mean_stress, &mean_stress, &has_mean));
+  PetscCall(PetscOptionsInt("-surfaces", "number N of Iwan surfaces of a hysteretic region, 2 to 1000 (docs/hysteretic-soil.md: error and cost against N)", "MaterialsRead",
+                            surfaces, &surfaces, &has_surfaces));
+  PetscCall(core::OptionsChoice(PetscOptionsObject, "-stress_points",
+                                "where a hysteretic region's stress is evaluated: gauss (the quadrature points of the linear stiffness: 4 per quadrilateral, 8 "
+                                "per hexahedron, the GLL nodes at degree p > 1) or mean (once per cell from its mean strain, the linear part still fully integrated: 4x or 8x fewer updates, exact for a "
+                                "uniform strain)",
+                                kStressPointNames, 2, &points, &has_points));
+  const struct {
+    const char *name;
+    PetscBool   set;
+    bool        used; // by the chosen backbone
+  } given[] = {{"backbone", has_choice, true},
+               {"reference_strain", has_gamma, choice == (PetscInt)BackboneChoice::Mkz},
+               {"curvature", has_curvature, choice == (PetscInt)BackboneChoice::Mkz},
+               {"beta", has_beta, choice == (PetscInt)BackboneChoice::Mkz},
+               {"strength", has_strength, true},
+               {"gqh_theta", has_theta, choice == (PetscInt)BackboneChoice::Gqh},
+               {"plasticity_index", has_pi, choice == (PetscInt)BackboneChoice::Darendeli},
+               {"ocr", has_ocr, choice == (PetscInt)BackboneChoice::Darendeli},
+               {"mean_effective_stress", has_mean, choice == (PetscInt)BackboneChoice::Darendeli},
+               {"surfaces", has_surfaces, true},
+               {"stress_points", has_points, true}};
+  for (const auto &g : given) {
+    PetscCheck(!g.set || hysteretic, comm, PETSC_ERR_USER_INPUT, "-material_%s_%s is given but region '%s' is not hysteretic; allowed: with -material_%s_model hysteretic", r,
+               g.name, r, r);
+    PetscCheck(!g.set || g.used, comm, PETSC_ERR_USER_INPUT, "-material_%s_%s does not apply to -material_%s_backbone %s; allowed: %s", r, g.name, r, kBackboneNames[choice],
+               choice == (PetscInt)BackboneChoice::Mkz       ? "-reference_strain, -curvature, -beta, -strength, -surfaces, -stress_points"
+               : choice == (PetscInt)BackboneChoice::Gqh     ? "-strength, -gqh_theta, -surfaces, -stress_points"
+                                                              : "-plasticity_index, -ocr, -mean_effective_stress, -strength, -surfaces, -stress_points");
+  }
+  if (!hysteretic || !elastic) PetscFunctionReturn(0);
+  const physics::ElasticMaterial &m = *elastic;
+  PetscCheck(has_choice, comm, PETSC_ERR_USER_INPUT, "-material_%s_backbone is missing (region '%s' is hysteretic); allowed: mkz, darendeli, gqh", r, r);
+  PetscCheck(!has_theta || ntheta == 5, comm, PETSC_ERR_USER_INPUT, "-material_%s_gqh_theta has %" PetscInt_FMT " values; allowed: five, theta1,...,theta5", r, ntheta);
+  PetscCheck(!has_strength || (strength > 0 && std::isfinite(strength)), comm, PETSC_ERR_USER_INPUT, "-material_%s_strength = %g; allowed: tau_max > 0 [Pa]", r, (double)strength);
+  PetscCheck(surfaces >= 2 && surfaces <= 1000, comm, PETSC_ERR_USER_INPUT, "-material_%s_surfaces = %" PetscInt_FMT "; allowed: 2 to 1000", r, surfaces);
+  const double gmax = m.rho * m.vs * m.vs, bulk = m.rho * (m.vp * m.vp - 4.0 / 3.0 * m.vs * m.vs);
+  spec->choice      = (BackboneChoice)choice;
+  spec->strength    = strength;
+  spec->points      = (StressPoints)points;
+  const double cap  = strength / gmax;
+  // The constructors state the rule a value breaks (std::invalid_argument); the option names
+  // are ours, so each parameter is checked against its range here first, and what is left
+  // (a combination the model cannot hold) is caught below.
+  try {
+    switch (spec->choice) {
+    case BackboneChoice::Mkz:
+      PetscCheck(has_gamma, comm, PETSC_ERR_USER_INPUT, "-material_%s_reference_strain is missing (-material_%s_backbone mkz); allowed: gamma_r > 0 [-]", r, r);
+      PetscCheck(gamma_r > 0 && gamma_r < 1, comm, PETSC_ERR_USER_INPUT, "-material_%s_reference_strain = %g; allowed: 0 < gamma_r < 1 [-] (a ratio, not percent)", r,
+                 (double)gamma_r);
+      PetscCheck(curvature > 0 && curvature <= 1, comm, PETSC_ERR_USER_INPUT,
+                 "-material_%s_curvature = %g; allowed: 0 < s <= 1 (a larger s is not concave: no parallel Iwan model holds it)", r, (double)curvature);
+      PetscCheck(beta > 0 && std::isfinite(beta), comm, PETSC_ERR_USER_INPUT, "-material_%s_beta = %g; allowed: beta > 0", r, (double)beta);
+      spec->backbone = physics::mkzBackbone(gamma_r, curvature, beta, cap);
+      break;
+    case BackboneChoice::Darendeli:
+      PetscCheck(has_mean, comm, PETSC_ERR_USER_INPUT, "-material_%s_mean_effective_stress is missing (-material_%s_backbone darendeli); allowed: sigma'_0 > 0 [Pa]", r, r);
+      PetscCheck(mean_stress > 0 && std::isfinite(mean_stress), comm, PETSC_ERR_USER_INPUT, "-material_%s_mean_effective_stress = %g; allowed: sigma'_0 > 0 [Pa]", r,
+                 (double)mean_stress);
+      PetscCheck(pi >= 0 && pi <= 200, comm, PETSC_ERR_USER_INPUT, "-material_%s_plasticity_index = %g; allowed: 0 to 200 [%%]", r, (double)pi);
+      PetscCheck(ocr >= 1 && ocr <= 100, comm, PETSC_ERR_USER_INPUT, "-material_%s_ocr = %g; allowed: 1 to 100", r, (double)ocr);
+      spec->darendeli.plasticity_index      = pi;
+      spec->darendeli.ocr                   = ocr;
+      spec->darendeli.mean_effective_stress = mean_stress;
+      spec->backbone                        = physics::darendeliBackbone(spec->darendeli, cap);
+      break;
+    case BackboneChoice::Gqh:
+      PetscCheck(has_strength, comm, PETSC_ERR_USER_INPUT, "-material_%s_strength is missing (-material_%s_backbone gqh); allowed: tau_max > 0 [Pa]", r, r);
+      PetscCheck(theta[2] > 0 && theta[3] >= 0 && theta[4] > 0, comm, PETSC_ERR_USER_INPUT,
+                 "-material_%s_gqh_theta = %g,%g,%g,%g,%g; allowed: theta3 > 0, theta4 >= 0, theta5 > 0", r, (double)theta[0], (double)theta[1], (double)theta[2],
+                 (double)theta[3], (double)theta[4]);
+      {
+        const double t[5] = {theta[0], theta[1], theta[2], theta[3], theta[4]};
+        spec->backbone    = physics::gqhBackbone(gmax, strength, t);
+      }
+      break;
+    }
+    physics::HystereticSurfaces s;
+    s.count     = (int)surfaces;
+    spec->model = std::make_shared<const physics::HystereticSoilModel>(gmax, bulk, spec->backbone, s);
+  } catch (const std::invalid_argument &e) {
+    SETERRQ(comm, PETSC_ERR_USER_INPUT, "-material_%s_backbone %s with these parameters: %s", r, kBackboneNames[choice], e.what());
+  }
   PetscFunctionReturn(0);
 }
 
@@ -55,6 +171,7 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
     PetscReal         rho = 0, vp = 0, vs = 0, young = 0, nu = 0, damping_ratio = 0, reference_frequency = 0;
     PetscBool         has_rho, has_vp, has_vs, has_e, has_nu, has_reference;
     PetscInt          model = (PetscInt)MaterialModel::Elastic;
+    HystereticSpec    hysteretic;
     PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
     PetscCall(PetscOptionsReal("-rho", "mass density [kg/m^3], > 0", "MaterialsRead", rho, &rho, &has_rho));
     PetscCall(PetscOptionsReal("-vp", "P-wave speed [m/s], >= sqrt(2) vs (with -vs)", "MaterialsRead", vp, &vp, &has_vp));
@@ -68,9 +185,15 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
                                "frequency [Hz] at which this damped region's vp, vs hold (> 0; default: -attenuation_reference_frequency, or automatic)",
                                "MaterialsRead", reference_frequency, &reference_frequency, &has_reference));
     PetscCall(core::OptionsChoice(PetscOptionsObject, "-model",
-                                  "how the region deforms: elastic, or rigid (one rigid body: no internal waves, no step limit of its own; for a structure "
-                                  "far stiffer than the soil)",
-                                  kMaterialModelNames, 2, &model, nullptr));
+                                  "how the region deforms: elastic, rigid (one rigid body: no internal waves, no step limit of its own; for a structure "
+                                  "far stiffer than the soil) or hysteretic (Masing soil, -backbone; its -vs is the small-strain one)",
+                                  kMaterialModelNames, 3, &model, nullptr));
+    // Read here so that -help lists them with the region's other options; checked below, once
+    // the elastic material (Gmax) is known.
+    physics::ElasticMaterial given_elastic{rho, vp, vs};
+    if (has_e && has_nu && physics::youngPoissonProblem(young, nu, rho).empty()) given_elastic = physics::fromYoungPoisson(young, nu, rho);
+    const bool     usable = physics::elasticMaterialProblem(given_elastic).empty() && has_rho;
+    PetscCall(hystereticRead(PetscOptionsObject, comm, region.c_str(), model == (PetscInt)MaterialModel::Hysteretic, usable ? &given_elastic : nullptr, &hysteretic));
     PetscOptionsEnd();
     const char *r = region.c_str();
     PetscCheck(has_rho || has_vp || has_vs || has_e || has_nu, comm, PETSC_ERR_USER_INPUT,
@@ -107,6 +230,7 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
     info.damping_ratio = damping_ratio;
     info.reference_frequency = reference_frequency;
     info.model               = (MaterialModel)model;
+    info.hysteretic          = hysteretic;
     materials->push_back(info);
   }
   PetscFunctionReturn(0);

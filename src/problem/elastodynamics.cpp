@@ -13,6 +13,7 @@
 #include "slipwave/input/point_force.hpp"
 #include "slipwave/input/structure_load.hpp"
 #include "slipwave/medium/attenuation.hpp"
+#include "slipwave/medium/hysteresis.hpp"
 #include "slipwave/mesh/cell_quality_check.hpp"
 #include "slipwave/numerics/gll_basis.hpp"
 #include "slipwave/porous/pore_pressure.hpp"
@@ -166,6 +167,21 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
     PetscCheck(info.model != medium::MaterialModel::Rigid || info.vp_undrained == 0, comm, PETSC_ERR_USER_INPUT,
                "-material_%s_saturated with -material_%s_model rigid; allowed: a dry rigid region (the pore fluid needs a deforming skeleton)", info.region.c_str(),
                info.region.c_str());
+  {
+    // Hysteretic soil: the Iwan stress at the Gauss points of linear cells (medium/hysteresis.hpp).
+    std::string hysteretic;
+    for (size_t r = 0; r < m->materials.size(); ++r)
+      if (m->materials[r].model == medium::MaterialModel::Hysteretic) {
+        hysteretic = m->materials[r].region;
+        // One point per element from its mean strain is a Q1 device: a spectral element's
+        // strain is far from uniform.
+        PetscCheck(m->materials[r].hysteretic.points == medium::StressPoints::Gauss || m->mesh.degree == 1, comm, PETSC_ERR_USER_INPUT,
+                   "-material_%s_stress_points mean with -element_degree = %" PetscInt_FMT ": not supported; allowed: -material_%s_stress_points gauss (the GLL nodes)",
+                   hysteretic.c_str(), m->mesh.degree, hysteretic.c_str());
+        PetscCheck(r >= saturated.size() || !saturated[r].saturated, comm, PETSC_ERR_USER_INPUT,
+                   "-material_%s_model hysteretic with -material_%s_saturated: not supported yet; allowed: a dry hysteretic region", hysteretic.c_str(), hysteretic.c_str());
+      }
+  }
   PetscCall(readDamping(m));
   PetscCall(medium::AttenuationCreate(comm, &m->materials, &m->attenuation));
   auto setupBulk = [m]() {
@@ -188,6 +204,7 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
     PetscCall(setupBulk());
   }
   if (m->attenuation) PetscCall(medium::AttenuationSetupCells(m->attenuation, m->dm, m->bulk));
+  PetscCall(medium::HysteresisCreate(m->bulk, m->materials, &m->hysteresis));
   PetscCall(assembleDampingBlocks(m));
   PetscCall(RigidBodiesCreate(m->dm, m->bulk, m->materials, m->bc, m->mass, &m->rigid));
   PetscCall(input::LateralTieCreate(m->dm, m->bc, m->mass, &m->tie));
@@ -204,6 +221,16 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(VecZeroEntries(m->f_anelastic));
   PetscCall(VecDuplicate(m->mass, &m->f_contact_damping));
   PetscCall(VecZeroEntries(m->f_contact_damping));
+  if (m->hysteresis) {
+    PetscCall(VecDuplicate(m->mass, &m->f_hysteretic));
+    PetscCall(VecZeroEntries(m->f_hysteretic));
+    // Not yet: the free-field columns and the DRM's free field are linear, and the DRM's layer
+    // forces are K u of its cells.
+    PetscCheck(!m->free_field, comm, PETSC_ERR_USER_INPUT,
+               "-bc_<side>_type freefield with a hysteretic region (-material_<r>_model hysteretic): not supported yet; allowed: absorbing, tied or fixed sides");
+    PetscCheck(!m->drm, comm, PETSC_ERR_USER_INPUT,
+               "-input_method drm with a hysteretic region (-material_<r>_model hysteretic): not supported yet; allowed: -input_method base");
+  }
   PetscCall(createInterfaces(m));
   if (any_saturated) {
     // The free-field columns have no pore pressure: exact for a vertically incident SV wave
@@ -235,13 +262,14 @@ PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
   PetscCall(input::DrmDestroy(&m->drm));
   PetscCall(input::LateralTieDestroy(&m->tie));
   PetscCall(medium::AttenuationDestroy(&m->attenuation));
+  PetscCall(medium::HysteresisDestroy(&m->hysteresis));
   PetscCall(porous::PorePressureDestroy(&m->pore));
   PetscCall(RigidBodiesDestroy(&m->rigid));
   PetscCall(VecDestroy(&m->f_pore));
   for (auto &iface : m->interfaces) PetscCall(iface.Destroy());
   PetscCall(VecDestroy(&m->f_interface));
   PetscCall(VecDestroy(&m->f_contact_damping));
-  for (Vec *v : {&m->mass, &m->inv_mass, &m->damping_blocks, &m->u_local, &m->f_local, &m->f_internal, &m->f_external, &m->f_input, &m->f_stiffness_damping, &m->f_anelastic})
+  for (Vec *v : {&m->mass, &m->inv_mass, &m->damping_blocks, &m->u_local, &m->f_local, &m->f_internal, &m->f_external, &m->f_input, &m->f_stiffness_damping, &m->f_anelastic, &m->f_hysteretic})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&m->dm));
   PetscFunctionReturn(0);
@@ -252,9 +280,26 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(core::event_bulk_force, 0, 0, 0, 0));
   PetscCall(ElastodynamicsStiffnessTimes(m, u, m->f_internal));
-  // The memory forces need K_U u and the ghosted u that K u has just gathered into u_local.
-  // Off in the geostatic stage (input_enabled false): the memory starts with the dynamic stage.
-  if (m->attenuation && m->input_enabled) PetscCall(medium::AttenuationForce(m->attenuation, m->dm, m->bulk, m->u_local, m->f_internal, t, m->f_anelastic));
+  // The ghosted u that K u has just gathered into u_local gives the hysteretic regions'
+  // strains. Off in the geostatic stage: its static state is the linear one, and the soil
+  // starts virgin with the dynamic stage.
+  if (m->hysteresis && m->input_enabled) {
+    const PetscScalar *ul;
+    PetscScalar       *fl;
+    PetscCall(VecZeroEntries(m->f_local));
+    PetscCall(VecGetArrayRead(m->u_local, &ul));
+    PetscCall(VecGetArray(m->f_local, &fl));
+    medium::HysteresisForce(m->hysteresis, ul, fl);
+    PetscCall(VecRestoreArray(m->f_local, &fl));
+    PetscCall(VecRestoreArrayRead(m->u_local, &ul));
+    PetscCall(VecZeroEntries(m->f_hysteretic));
+    PetscCall(DMLocalToGlobal(m->dm, m->f_local, ADD_VALUES, m->f_hysteretic));
+  }
+  // The memory forces need K_U u and the ghosted u that K u has just gathered into u_local,
+  // and in hysteretic regions the relaxation force of the same u (their drive is the soil's
+  // stress). Off in the geostatic stage: the memory starts with the dynamic stage.
+  if (m->attenuation && m->input_enabled)
+    PetscCall(medium::AttenuationForce(m->attenuation, m->dm, m->bulk, m->u_local, m->f_internal, m->hysteresis, m->f_hysteretic, t, m->f_anelastic));
   // Off in the geostatic stage (input_enabled false): its equilibrium is the drained one, the
   // excess pore pressure stays zero.
   if (m->pore && m->input_enabled) {
@@ -301,7 +346,7 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   const bool interfaces = !m->interfaces.empty();
   PetscCall(NodalAccelerationAssemble(m->nodal,
                                       {m->f_external, m->f_internal, m->rayleigh.beta > 0 ? m->f_stiffness_damping : nullptr, interfaces ? m->f_interface : nullptr,
-                                       m->attenuation ? m->f_anelastic : nullptr, interfaces ? m->f_contact_damping : nullptr},
+                                       m->attenuation ? m->f_anelastic : nullptr, interfaces ? m->f_contact_damping : nullptr, m->f_hysteretic},
                                       a));
   if (m->pore) {
     PetscInt           n;
@@ -335,6 +380,7 @@ PetscErrorCode ElastodynamicsCommit(Elastodynamics *m) {
   for (auto &iface : m->interfaces) iface.Commit();
   input::FreeFieldCommit(m->free_field);
   medium::AttenuationCommit(m->attenuation);
+  medium::HysteresisCommit(m->hysteresis);
   porous::PorePressureCommit(m->pore);
   input::DrmCommit(m->drm);
   PetscFunctionReturn(0);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "slipwave/core/log_events.hpp"
+#include "slipwave/medium/hysteresis.hpp"
 #include "slipwave/porous/pore_pressure.hpp"
 #include "slipwave/time/central_difference.hpp"
 
@@ -13,7 +14,7 @@ namespace {
 
 // The nodal arrays the ledger reads (local, global-vector order).
 struct LedgerArrays {
-  const PetscScalar *u, *v, *a, *mass, *fi, *fx, *fin, *fsd, *fif, *fan, *fcd, *mask;
+  const PetscScalar *u, *v, *a, *mass, *fi, *fx, *fin, *fsd, *fif, *fan, *fcd, *fhy, *mask;
 };
 
 PetscErrorCode getArrays(Elastodynamics *m, Vec u, Vec v, Vec a, LedgerArrays *x) {
@@ -29,6 +30,8 @@ PetscErrorCode getArrays(Elastodynamics *m, Vec u, Vec v, Vec a, LedgerArrays *x
   PetscCall(VecGetArrayRead(m->f_interface, &x->fif));
   PetscCall(VecGetArrayRead(m->f_anelastic, &x->fan));
   PetscCall(VecGetArrayRead(m->f_contact_damping, &x->fcd));
+  x->fhy = nullptr; // without hysteretic regions: not read
+  if (m->f_hysteretic) PetscCall(VecGetArrayRead(m->f_hysteretic, &x->fhy));
   PetscCall(VecGetArrayRead(m->bc.free_mask, &x->mask));
   PetscFunctionReturn(0);
 }
@@ -36,6 +39,7 @@ PetscErrorCode getArrays(Elastodynamics *m, Vec u, Vec v, Vec a, LedgerArrays *x
 PetscErrorCode restoreArrays(Elastodynamics *m, Vec u, Vec v, Vec a, LedgerArrays *x) {
   PetscFunctionBeginUser;
   PetscCall(VecRestoreArrayRead(m->bc.free_mask, &x->mask));
+  if (m->f_hysteretic) PetscCall(VecRestoreArrayRead(m->f_hysteretic, &x->fhy));
   PetscCall(VecRestoreArrayRead(m->f_contact_damping, &x->fcd));
   PetscCall(VecRestoreArrayRead(m->f_anelastic, &x->fan));
   PetscCall(VecRestoreArrayRead(m->f_interface, &x->fif));
@@ -52,10 +56,11 @@ PetscErrorCode restoreArrays(Elastodynamics *m, Vec u, Vec v, Vec a, LedgerArray
 
 // Local sums: 0 kinetic, 1 strain, 2 shadow (the stored energies, only when `stored`),
 // 3 input power, 4 external power, 5 reaction power, 6 absorbed power, 7 damping power,
-// 8 interface power, 9 power of the constant-Q memory forces, 10 contact dashpot power.
+// 8 interface power, 9 power of the constant-Q memory forces, 10 contact dashpot power,
+// 11 power of the hysteretic relaxation forces.
 // Written without branches (the mask is 0 or 1) because this pass runs over every dof.
-template <bool stored>
-void sumEveryDof(const LedgerArrays &x, PetscInt n, double h, double alpha, double s[11]) {
+template <bool stored, bool hysteretic>
+void sumEveryDof(const LedgerArrays &x, PetscInt n, double h, double alpha, double s[12]) {
   for (PetscInt k = 0; k < n; ++k) {
     const double vk = x.v[k], mk = x.mass[k], fik = x.fi[k], held = 1.0 - x.mask[k];
     if (stored) {
@@ -68,6 +73,12 @@ void sumEveryDof(const LedgerArrays &x, PetscInt n, double h, double alpha, doub
     s[4] += vk * (x.fx[k] - x.fin[k]);
     // What a support supplies: everything M a + K u asks beyond the applied loads.
     s[5] += held * vk * (mk * x.a[k] + fik - x.fx[k] - x.fif[k] - x.fan[k] - x.fcd[k]);
+    if (hysteretic) {
+      s[5] -= held * vk * x.fhy[k];
+      // On every dof: on a held one the reaction (s[5]) leaves it out, as the support
+      // supplies the rest of what the soil's own stress asks.
+      s[11] += vk * x.fhy[k];
+    }
     s[8] += vk * x.fif[k];
     s[9] += x.mask[k] * vk * x.fan[k];
     s[10] += vk * x.fcd[k];
@@ -78,7 +89,7 @@ void sumEveryDof(const LedgerArrays &x, PetscInt n, double h, double alpha, doub
 // The same work sums where a scene has no force spread over the mesh (no Rayleigh damping,
 // constant Q or interfaces; loads listed by problem/nodal_acceleration): loads act on their
 // listed dofs only and a support's reaction on its held dofs only, so only those are visited.
-void sumListedWork(const LedgerArrays &x, const NodalAcceleration &na, double s[11]) {
+void sumListedWork(const LedgerArrays &x, const NodalAcceleration &na, double s[12]) {
   for (PetscInt k : na.external_dofs) {
     s[3] += x.v[k] * x.fin[k];
     s[4] += x.v[k] * (x.fx[k] - x.fin[k]);
@@ -87,7 +98,7 @@ void sumListedWork(const LedgerArrays &x, const NodalAcceleration &na, double s[
 }
 
 // The stored energies alone.
-void sumStored(const LedgerArrays &x, PetscInt n, double h, double s[11]) {
+void sumStored(const LedgerArrays &x, PetscInt n, double h, double s[12]) {
   for (PetscInt k = 0; k < n; ++k) {
     const double vk = x.v[k], mk = x.mass[k], fik = x.fi[k];
     const double vhalf = vk + 0.5 * h * x.a[k];
@@ -114,16 +125,29 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool ev
   PetscCall(VecGetLocalSize(u, &n));
   PetscCall(getArrays(m, u, v, a, &x));
   PetscCall(VecGetArrayRead(m->bc.absorbing_blocks, &C));
-  double       s[11] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  double       s[12] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
   const double alpha = m->rayleigh.alpha;
-  const bool   listed = m->nodal.listed && alpha == 0 && m->rayleigh.beta == 0 && !m->attenuation && m->interfaces.empty();
+  const bool   listed = m->nodal.listed && alpha == 0 && m->rayleigh.beta == 0 && !m->attenuation && m->interfaces.empty() && !m->hysteresis;
   if (listed) {
     sumListedWork(x, m->nodal, s);
     if (evaluate) sumStored(x, n, h, s);
+  } else if (m->hysteresis) {
+    if (evaluate) sumEveryDof<true, true>(x, n, h, alpha, s);
+    else sumEveryDof<false, true>(x, n, h, alpha, s);
   } else if (evaluate) {
-    sumEveryDof<true>(x, n, h, alpha, s);
+    sumEveryDof<true, false>(x, n, h, alpha, s);
   } else {
-    sumEveryDof<false>(x, n, h, alpha, s);
+    sumEveryDof<false, false>(x, n, h, alpha, s);
+  }
+  // The relaxation energy E_r of the committed soil state at u_n (the state the step's RHS
+  // reached at u_n; TS2 keeps u global, the sum needs its ghosts).
+  double relaxation = 0;
+  if (m->hysteresis && evaluate) {
+    const PetscScalar *ul;
+    PetscCall(DMGlobalToLocal(m->dm, u, INSERT_VALUES, m->u_local));
+    PetscCall(VecGetArrayRead(m->u_local, &ul));
+    relaxation = medium::HysteresisRelaxationEnergy(m->hysteresis, ul);
+    PetscCall(VecRestoreArrayRead(m->u_local, &ul));
   }
   // Built once per run (a restart's ledger comes without it).
   if (e->absorbing_free_blocks.size() != m->absorbing_nodes.size() * bs * bs) {
@@ -142,7 +166,13 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool ev
     Cfree += bs * bs;
   }
   PetscCall(restoreArrays(m, u, v, a, &x));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 11, MPI_DOUBLE, MPI_SUM, m->comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 12, MPI_DOUBLE, MPI_SUM, m->comm));
+  if (m->hysteresis) {
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &relaxation, 1, MPI_DOUBLE, MPI_SUM, m->comm));
+    // The soil's own stored energies: the linear ones less E_r (energy_ledger.hpp).
+    s[1] -= relaxation;
+    s[2] -= relaxation;
+  }
 
   porous::PoreEnergy fluid;
   if (m->pore) {
@@ -167,20 +197,23 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool ev
     e->interface_work += h_mean * s[8];
     e->anelastic -= h_mean * s[9];
     e->contact_damped -= h_mean * s[10];
+    e->hysteretic_work -= h_mean * s[11];
     e->darcy += fluid.darcy;
     e->fluid_inflow += fluid.inflow;
   }
   e->h_prev = h;
   e->evaluated = evaluate;
   if (evaluate) {
+    e->hysteretic_dissipated = e->hysteretic_work + relaxation;
     e->kinetic = s[0];
     e->strain  = s[1];
     if (m->pore) e->fluid_stored = fluid.storage;
     e->shadow        = s[2];
-    e->balance_error = (e->shadow - e->shadow_start) - (e->input + e->external + e->reactions + e->interface_work - e->absorbed - e->damped - e->anelastic - e->contact_damped) -
+    e->balance_error = (e->shadow - e->shadow_start) - (e->input + e->external + e->reactions + e->interface_work - e->absorbed - e->damped - e->anelastic - e->contact_damped -
+                                         e->hysteretic_dissipated) -
                        (e->fluid_inflow - e->darcy);
     e->scale         = std::max({e->scale, std::fabs(e->shadow), std::fabs(e->input), std::fabs(e->external), std::fabs(e->absorbed), std::fabs(e->damped), std::fabs(e->anelastic),
-                                 std::fabs(e->reactions), std::fabs(e->interface_work), std::fabs(e->contact_damped), e->kinetic + std::fabs(e->strain), e->darcy, std::fabs(e->fluid_stored)});
+                                 std::fabs(e->reactions), std::fabs(e->interface_work), std::fabs(e->contact_damped), std::fabs(e->hysteretic_dissipated), e->kinetic + std::fabs(e->strain), e->darcy, std::fabs(e->fluid_stored)});
   }
   PetscCall(PetscLogEventEnd(core::event_energy, 0, 0, 0, 0));
   PetscFunctionReturn(0);

@@ -111,7 +111,7 @@ PetscErrorCode NodalAccelerationExternal(const NodalAcceleration &na, Vec consta
 PetscErrorCode NodalAccelerationAssemble(const NodalAcceleration &na, const NodalForces &f, Vec a) {
   PetscInt           n;
   PetscScalar       *acc;
-  const PetscScalar *mim, *fe = nullptr, *fi = nullptr, *fd = nullptr, *fif = nullptr, *fan = nullptr, *fcd = nullptr;
+  const PetscScalar *mim, *fe = nullptr, *fi = nullptr, *fd = nullptr, *fif = nullptr, *fan = nullptr, *fcd = nullptr, *fhy = nullptr;
   PetscFunctionBeginUser;
   PetscCall(VecGetLocalSize(a, &n));
   PetscCall(VecGetArrayWrite(a, &acc));
@@ -122,12 +122,14 @@ PetscErrorCode NodalAccelerationAssemble(const NodalAcceleration &na, const Noda
   if (f.interface) PetscCall(VecGetArrayRead(f.interface, &fif));
   if (f.anelastic) PetscCall(VecGetArrayRead(f.anelastic, &fan));
   if (f.contact_damping) PetscCall(VecGetArrayRead(f.contact_damping, &fcd));
+  if (f.hysteretic) PetscCall(VecGetArrayRead(f.hysteretic, &fhy));
   // The terms after f_ext - f_int, in the order the sum has always had.
   auto accelerate = [&](PetscInt i, double sum) {
     if (fd) sum -= fd[i];
     if (fif) sum += fif[i];
     if (fan) sum += fan[i];
     if (fcd) sum += fcd[i];
+    if (fhy) sum += fhy[i];
     return mim[i] * sum;
   };
   // Off the listed dofs f_ext is zero, and 0 - f_int needs no read of it.
@@ -137,6 +139,7 @@ PetscErrorCode NodalAccelerationAssemble(const NodalAcceleration &na, const Noda
   } else {
     for (PetscInt i = 0; i < n; ++i) acc[i] = accelerate(i, fe[i] - fi[i]);
   }
+  if (f.hysteretic) PetscCall(VecRestoreArrayRead(f.hysteretic, &fhy));
   if (f.contact_damping) PetscCall(VecRestoreArrayRead(f.contact_damping, &fcd));
   if (f.anelastic) PetscCall(VecRestoreArrayRead(f.anelastic, &fan));
   if (f.interface) PetscCall(VecRestoreArrayRead(f.interface, &fif));

@@ -25,6 +25,9 @@ public:
   // Before Open, in saturated scenes: the fluid columns (fluid_stored, darcy_dissipated,
   // fluid_inflow_work) follow the others.
   void SetFluid(bool fluid) { fluid_ = fluid; }
+  // Before Open, in scenes with hysteretic regions: hysteretic_dissipated follows, the
+  // energy the soil's hysteresis took (problem/energy_ledger.hpp); the balance books it.
+  void SetHysteretic(bool hysteretic) { hysteretic_ = hysteretic; }
   void           Append(PetscInt step, PetscReal t, const problem::EnergyLedger &ledger, const interface::InterfaceTotals &interfaces);
   // Writes the rows kept since the last flush: the file on disk then holds every row so far.
   void Flush();
@@ -33,7 +36,7 @@ public:
 private:
   FILE       *file_ = nullptr;
   std::string pending_; // rows not yet written
-  bool        fluid_ = false;
+  bool        fluid_ = false, hysteretic_ = false;
 };
 
 } // namespace slipwave::app

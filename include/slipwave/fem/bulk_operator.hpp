@@ -55,6 +55,11 @@ public:
   PetscInt nodesPerElement() const { return degree_ == 1 ? nen_ : spectral_.nodesPerElement(); }
   PetscInt elementNodeOffset(PetscInt e, PetscInt a) const { return degree_ == 1 ? cellNodeOffset(e, a) : spectral_.elementNodeOffset(e, a); }
   void     elementStiffness(PetscInt e, double *K) const;
+  // The element's region and node coordinates (nodesPerElement x dim; degree > 1: the GLL
+  // nodes, lexicographic, x fastest), and the element a cell belongs to (degree 1: itself).
+  PetscInt      elementRegion(PetscInt e) const { return degree_ == 1 ? cell_region_[e] : spectral_.elementRegion(e); }
+  const double *elementCoordinates(PetscInt e) const { return degree_ == 1 ? cellCoordinates(e) : spectral_.elementCoordinates(e); }
+  PetscInt      cellElement(PetscInt c) const { return degree_ == 1 ? c : cell_element_[c]; }
   // Degree 1 only: the stiffness of cell c in the cells' node order (cellNodeOffset), kept in
   // place for loops that read it every step (the DRM layer).
   const double *cellStiffness(PetscInt c) const { return &stiffness_[(size_t)cell_matrix_[c] * nen_ * dim_ * nen_ * dim_]; }

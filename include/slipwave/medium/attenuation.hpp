@@ -67,8 +67,12 @@ PetscErrorCode AttenuationChooseReferences(Attenuation *att, DM dm, const fem::B
 PetscErrorCode AttenuationSetupCells(Attenuation *att, DM dm, const fem::BulkOperator &bulk);
 PetscErrorCode AttenuationDestroy(Attenuation **att);
 // f = sum_l zeta_l at time t (global) from the ghosted displacement u_local and the global
-// K_U u of the whole mesh (f_internal, just computed from it).
-PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator &bulk, Vec u_local, Vec f_internal, PetscReal t, Vec f);
+// K_U u of the whole mesh (f_internal, just computed from it). With hysteretic regions
+// (hysteresis not null; medium/hysteresis.hpp) the drive is the force the soil's stress
+// gives, K_U u - f_hysteretic (the global relaxation force of the same u): the mechanisms
+// act on the stress the soil carries.
+PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator &bulk, Vec u_local, Vec f_internal, const struct Hysteresis *hysteresis, Vec f_hysteretic,
+                                PetscReal t, Vec f);
 // Lines for the run report: per damped region the fitted Q over the band, the reference
 // frequency, the speeds at the band ends and the stable-step cost.
 std::vector<std::string> AttenuationReport(const Attenuation *att, const std::vector<RegionMaterialInfo> &materials);

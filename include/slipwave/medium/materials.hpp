@@ -1,24 +1,49 @@
 // Linear elastic isotropic material per region, from -material_<region>_{rho,vp,vs} or
 // -material_<region>_{rho,E,nu}, and a constant-Q damping ratio -material_<region>_damping_ratio.
-// -material_<region>_model says how the region deforms: elastic (the default) or rigid (the
+// -material_<region>_model says how the region deforms: elastic (the default), rigid (the
 // region moves as one rigid body, problem/rigid_bodies.hpp; its elastic constants still serve
-// the geostatic stage's static solve).
+// the geostatic stage's static solve) or hysteretic (Masing soil: the elastic constants are
+// the small-strain ones, Gmax = rho vs^2, and -material_<region>_backbone with its parameters
+// gives the curve; physics/hysteretic_soil.hpp, docs/hysteretic-soil.md).
 // A region without a material, or a -material_<name>_*
 // option naming no region, stops the run.
 #pragma once
 #include <petscsys.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "slipwave/fem/bulk_operator.hpp"
 #include "slipwave/physics/elastic_material.hpp"
+#include "slipwave/physics/hysteretic_soil.hpp"
 
 namespace slipwave::medium {
 
 // How a region's material deforms (-material_<region>_model).
-enum class MaterialModel { Elastic, Rigid };
-inline constexpr const char *kMaterialModelNames[] = {"elastic", "rigid"};
+enum class MaterialModel { Elastic, Rigid, Hysteretic };
+inline constexpr const char *kMaterialModelNames[] = {"elastic", "rigid", "hysteretic"};
+
+// The backbone of a hysteretic region (-material_<region>_backbone; physics/soil_backbone.hpp).
+enum class BackboneChoice { Mkz, Darendeli, Gqh };
+inline constexpr const char *kBackboneNames[] = {"mkz", "darendeli", "gqh"};
+
+// Where a hysteretic region's stress is evaluated (-material_<region>_stress_points;
+// medium/hysteresis.hpp): the Gauss points of the linear K, or once per cell from its mean strain.
+enum class StressPoints { Gauss, Mean };
+inline constexpr const char *kStressPointNames[] = {"gauss", "mean"};
+
+// What a hysteretic region was given, for the report, and the model built from it (once, when
+// the options are read, so that a backbone the model cannot hold stops the run before the mesh
+// work; shared because every copy of the material list describes the same region).
+struct HystereticSpec {
+  BackboneChoice                                     choice = BackboneChoice::Mkz;
+  physics::SoilBackbone                              backbone;
+  physics::DarendeliSoil                             darendeli; // choice Darendeli
+  double                                             strength = 0; // tau_max [Pa]; 0: no cap (MKZ, Darendeli)
+  StressPoints                                       points = StressPoints::Gauss;
+  std::shared_ptr<const physics::HystereticSoilModel> model;
+};
 
 struct RegionMaterialInfo {
   std::string               region;
@@ -28,6 +53,7 @@ struct RegionMaterialInfo {
   double                    reference_frequency = 0; // where vp, vs hold in a damped region [Hz]; 0: the global choice
   double                    vp_undrained = 0; // saturated region: P speed with the pore fluid locked in (porous/pore_pressure.hpp); 0: dry
   MaterialModel             model = MaterialModel::Elastic;
+  HystereticSpec            hysteretic; // model Hysteretic only
 };
 
 // What a boundary of the region sees (absorbing dashpots, free-field columns): a saturated

@@ -1,10 +1,10 @@
 // The semi-discrete elastodynamic system M a + C v + K u = f(t) on the mesh: lumped mass,
 // bulk stiffness (our element loop), boundary conditions and loads, Rayleigh damping.
 // ElastodynamicsRHS is the TS right-hand side for the "cd" type: it returns
-// a* = M^{-1}(f_ext - K u - beta K v_{n+1/2} + f_anelastic) on free dofs and the prescribed acceleration
+// a* = M^{-1}(f_ext - K u - beta K v_{n+1/2} + f_anelastic + f_hysteretic) on free dofs and the prescribed acceleration
 // on held ones; the nodal part of C (dashpots, alpha M) goes to the TS as damping blocks.
 // It is a function of (t, u, v_{n+1/2}) and the committed history (interface pairs, free-field
-// columns, constant-Q memory), which it advances into trial states only; ElastodynamicsCommit,
+// columns, constant-Q memory, hysteretic soil), which it advances into trial states only; ElastodynamicsCommit,
 // the TS's commit hook, accepts them after each step.
 #pragma once
 #include <petscts.h>
@@ -27,6 +27,7 @@ struct Drm;        // input/drm.hpp
 } // namespace slipwave::input
 namespace slipwave::medium {
 struct Attenuation; // medium/attenuation.hpp
+struct Hysteresis;  // medium/hysteresis.hpp
 } // namespace slipwave::medium
 namespace slipwave::porous {
 struct PorePressure; // porous/pore_pressure.hpp
@@ -63,6 +64,8 @@ struct Elastodynamics {
   input::FreeField  *free_field = nullptr; // free-field lateral columns (-bc_<side>_type freefield), or null
   input::LateralTie *tie        = nullptr; // tied lateral sides (-bc_<side>_type tied), or null
   medium::Attenuation *attenuation = nullptr; // constant-Q damping of regions with a damping ratio, or null
+  medium::Hysteresis  *hysteresis  = nullptr; // hysteretic regions (-material_<r>_model hysteretic), or null
+  Vec       f_hysteretic = nullptr; // + their relaxation force: the internal force is f_internal - f_hysteretic (null without them)
   input::Drm *drm        = nullptr; // Domain Reduction Method input (-input_method drm), or null
   porous::PorePressure *pore = nullptr; // pore pressure of saturated regions, or null (dry scenes)
   Vec       f_pore = nullptr;   // + alpha Q^T p, the pore pressure's force on the skeleton (saturated scenes only)

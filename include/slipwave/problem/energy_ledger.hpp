@@ -3,7 +3,8 @@
 //   W_{n+1/2} − W_{n−1/2} = h v_n · f_n,   f_n = M a_n + K u_n (all non-internal forces).
 // The ledger books h v_n·f_n term by term (incident-wave input, gravity and tractions,
 // reactions of held dofs, interface forces, minus dashpot absorption, Rayleigh damping, the
-// work of the constant-Q memory forces and the interfaces' contact dashpots), so
+// work of the constant-Q memory forces and the interfaces' contact dashpots, the hysteretic
+// dissipation), so
 //   balance error = W_{n+1/2} − W_{1/2} − Σ booked work
 // is round-off for a consistent discretisation, and a growth of it flags an instability.
 #pragma once
@@ -30,6 +31,15 @@ struct EnergyLedger {
   double interface_work = 0; // cumulative work of the interface forces on the bulk (minus what
                              // the interfaces store and dissipate)
   double contact_damped = 0; // cumulative energy taken by the interfaces' contact dashpots
+  // Hysteretic regions (medium/hysteresis.hpp): the bulk applies the linear K and the
+  // relaxation force f_hy gives back what the soil does not carry. Its work is booked every
+  // step like the constant-Q forces'. The internal work of the soil's own stress is the change
+  // of its stored energy plus its dissipation D, and that of K u the change of 1/2 u.K u, so
+  // the work done against f_hy is D - E_r, with E_r = 1/2 u.K u - the soil's stored energy
+  // (the relaxation energy). At an evaluation E_r leaves the stored energies (strain and
+  // shadow are then the soil's own) and D = hysteretic_work + E_r is booked.
+  double hysteretic_work = 0;        // cumulative work done against f_hy
+  double hysteretic_dissipated = 0;  // D = hysteretic_work + E_r, at the last evaluation
   // Saturated scenes (porous/pore_pressure.hpp): the pore pressure's work on the skeleton is
   // internal; the fluid's shadow storage energy F_{n+1/2} joins the stored energy.
   bool   fluid = false;

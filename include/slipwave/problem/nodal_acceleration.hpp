@@ -1,5 +1,5 @@
 // The nodal part of the right-hand side, a* = M^{-1}(f_ext - K u - beta K v_{n+1/2} + f_interface
-// + f_anelastic + f_contact_damping) on free dofs, in one pass over the dofs that reads only the
+// + f_anelastic + f_contact_damping + f_hysteretic) on free dofs, in one pass over the dofs that reads only the
 // force vectors a scene has, and the external force f_ext = f_constant + v_in(t) F_in + timed
 // loads written only where it can be nonzero. With absorbing sides and an incident wave that is
 // the boundary: a fraction of a percent of the dofs of a large mesh, which whole-vector
@@ -45,9 +45,9 @@ PetscErrorCode NodalAccelerationExternal(const NodalAcceleration &na, Vec consta
 
 // The force vectors of a*; a null one is zero and not read.
 struct NodalForces {
-  Vec external, internal, stiffness_damping, interface, anelastic, contact_damping;
+  Vec external, internal, stiffness_damping, interface, anelastic, contact_damping, hysteretic;
 };
-// a = (free 1/m) (f_ext - f_int - f_sd + f_if + f_an + f_cd), summed in this order at every dof
+// a = (free 1/m) (f_ext - f_int - f_sd + f_if + f_an + f_cd + f_hy), summed in this order at every dof
 // (a zero term changes no bit), so the result does not depend on which terms a scene has.
 PetscErrorCode NodalAccelerationAssemble(const NodalAcceleration &na, const NodalForces &f, Vec a);
 

@@ -1,0 +1,96 @@
+// The bulk force of hysteretic regions (-material_<r>_model hysteretic): the soil's stress is
+// the parallel Iwan model of physics/hysteretic_soil.hpp at every quadrature point of the
+// region's elements (degree 1: the Gauss points of its cells), while the bulk operator keeps applying the linear small-strain stiffness K (Gmax)
+// everywhere. The difference is a correction force
+//   f_relax = sum_q B_q^T (C:eps_q - sigma_q) w_q |det J_q|,     f_internal = K u - f_relax,
+// with C the region's element moduli, eps_q = B_q u the strain and sigma_q the Iwan stress at
+// the point. K is integrated by the same Gauss rule (fem/element_kernels.hpp), so K u -
+// f_relax is exactly the force of the Iwan stress, and a cell of another region costs nothing.
+// f_relax is zero (to round-off) while every surface is elastic, and it enters the
+// acceleration like the constant-Q memory forces (problem/nodal_acceleration.hpp).
+//
+// State: per point the kernel's plastic strains (hystereticStateSize doubles), committed
+// and trial: the force at (t, u) is computed from the committed state into the trial one, so
+// the RHS asked twice at one time gives the same force; HysteresisCommit, once the step is
+// accepted, makes the trial the committed state. Off during the geostatic stage (the soil
+// starts virgin with the dynamic stage, whose displacement starts from zero).
+//
+// Degree p > 1: the points are the elements' GLL nodes with the GLL weights, the quadrature
+// of the spectral K (collocated), so K u - f_relax is again exactly the Iwan stress's force.
+//
+// -material_<r>_stress_points mean evaluates the correction once per cell, from the cell's mean
+// strain B_m u (B_m the volume average of the Gauss points' B) with its volume V: the linear
+// part stays fully integrated in K, so no hourglass mode appears (only the correction is
+// under-integrated), and the tangent stays between K - V B_m^T C B_m = sum_q (B_q - B_m)^T C
+// (B_q - B_m) w_q |det J_q| >= 0 and K. Exact for a uniform strain; 4x (8x) fewer updates.
+//
+// The stable step stays that of the linear soil: the Iwan model's
+// tangent shear modulus is sum of the elastic elements' G_i <= Gmax, its bulk modulus K.
+#pragma once
+#include <petscdm.h>
+
+#include <memory>
+#include <utility>
+#include <string>
+#include <vector>
+
+#include "slipwave/fem/bulk_operator.hpp"
+#include "slipwave/medium/materials.hpp"
+
+namespace slipwave::medium {
+
+struct HystereticRegion {
+  PetscInt                                            region = -1;
+  std::shared_ptr<const physics::HystereticSoilModel> model;
+  double                                              lambda = 0, mu = 0; // element moduli: C of the linear operator
+  std::vector<PetscInt>                               elements;           // this rank's elements of the region (degree 1: cells)
+  std::vector<PetscInt>                               dofs;               // per element: its nodes' local dof offsets
+  int                                                 points = 0;         // per element: the Gauss rule's, 1 (mean), or its GLL nodes
+  // Per element and point: the weight w |det J|, and at degree 1 dN_a/dx_j (nodes x dim), at
+  // degree p > 1 dxi_k/dx_j (dim x dim; the basis gradients come from the GLL derivative
+  // matrix along the lines through the node).
+  std::vector<double>                                 volume, gradient, jinv;
+  std::vector<double>                                 committed, trial;   // the kernel states, point-major
+};
+
+struct Hysteresis {
+  PetscInt                      dim = 0, nodes = 0, degree = 1; // nodes per element
+  std::vector<double>           derivative;      // degree p > 1: the GLL derivative matrix, (p+1)^2
+  std::vector<PetscInt>         cell_element;    // per local cell: its element (output)
+  std::vector<std::pair<PetscInt, PetscInt>> element_place; // per element: (index in regions, index in its elements), or -1s
+  std::vector<HystereticRegion> regions;
+  bool                          has_trial = false;
+};
+
+// *out is null when no region is hysteretic.
+PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector<RegionMaterialInfo> &materials, Hysteresis **out);
+PetscErrorCode HysteresisDestroy(Hysteresis **h);
+// f_local += f_relax from the ghosted displacement u_local (this rank's cells; the caller
+// assembles), the states going into the trial.
+void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local);
+// f_local += scale f_relax of region `region` alone (a no-op for a region that is not
+// hysteretic), from the committed states (evaluated, not updated): at the u of the last
+// HysteresisForce, its contribution of that region. For the constant-Q drive of a damped
+// hysteretic region that does not cover the mesh (medium/attenuation.hpp).
+void HysteresisAddRegionForce(const Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local);
+// The trial of the last HysteresisForce becomes the committed state (no-op without one).
+void HysteresisCommit(Hysteresis *h);
+// Committed state for checkpoints: this rank's points' states, region by region. The size is fixed by the mesh and the models (a checkpoint of another
+// scene is refused before, by the displacement's size).
+std::vector<double> HysteresisState(const Hysteresis *h);
+PetscInt            HysteresisStateSize(const Hysteresis *h);
+void                HysteresisSetState(Hysteresis *h, const std::vector<double> &state);
+// Sum over this rank's points of (1/2 eps:C:eps - Iwan stored energy) w |det J| at the
+// committed state and the ghosted displacement u_local: what the linear strain energy
+// 1/2 u.K u holds beyond the soil's stored energy (energy ledger).
+double HysteresisRelaxationEnergy(const Hysteresis *h, const PetscScalar *u_local);
+// Output, per local cell of a hysteretic region (other cells untouched), at the committed
+// state and the ghosted displacement u_local: relaxation (6 per cell: xx, yy, zz, xy, yz, xz)
+// the mean over the cell's points of C:eps - sigma, what the linear cell stress holds beyond
+// the soil's; max_strain the largest equivalent shear strain any of its points reached;
+// modulus_ratio the model's secant G/Gmax at that strain.
+void HysteresisCellFields(const Hysteresis *h, const PetscScalar *u_local, double *relaxation, double *max_strain, double *modulus_ratio);
+// Run report lines: per hysteretic region its backbone, parameters, surfaces and their fit.
+std::vector<std::string> HysteresisReport(const std::vector<RegionMaterialInfo> &materials);
+
+} // namespace slipwave::medium

@@ -1,0 +1,403 @@
+#include "slipwave/medium/hysteresis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "slipwave/numerics/gll_basis.hpp"
+#include "slipwave/numerics/reference_cell.hpp"
+
+namespace slipwave::medium {
+namespace {
+
+// The kernel's strain (tensor components; 2D: xx, yy, xy; 3D: xx, yy, zz, xy, yz, xz) from the
+// displacement gradient G[i][j] = du_i/dx_j.
+template <int Dim>
+void strainOf(const double (*G)[3], double *eps) {
+  if constexpr (Dim == 2) {
+    eps[0] = G[0][0];
+    eps[1] = G[1][1];
+    eps[2] = 0.5 * (G[0][1] + G[1][0]);
+  } else {
+    eps[0] = G[0][0];
+    eps[1] = G[1][1];
+    eps[2] = G[2][2];
+    eps[3] = 0.5 * (G[0][1] + G[1][0]);
+    eps[4] = 0.5 * (G[1][2] + G[2][1]);
+    eps[5] = 0.5 * (G[0][2] + G[2][0]);
+  }
+}
+
+// Node a of an element with node q's index k replaced by m (lexicographic, x fastest).
+inline int along(int q, int k, int m, int n1) {
+  const int stride = k == 0 ? 1 : (k == 1 ? n1 : n1 * n1);
+  return q + (m - (q / stride) % n1) * stride;
+}
+
+// Runs fn(point index, element index k, point in the element, w |det J|, strain) over the
+// region's points on this rank.
+template <int Dim, class Fn>
+void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn) {
+  constexpr int  kStrain = physics::HystereticLayout<Dim>::kStrain;
+  const PetscInt nen = h.nodes, nq = reg.points;
+  const int      n1  = (int)h.degree + 1;
+  std::vector<double> u((size_t)nen * Dim);
+  for (size_t k = 0; k < reg.dofs.size() / nen; ++k) {
+    for (PetscInt a = 0; a < nen; ++a)
+      for (int i = 0; i < Dim; ++i) u[a * Dim + i] = PetscRealPart(u_local[reg.dofs[k * nen + a] + i]);
+    for (PetscInt q = 0; q < nq; ++q) {
+      const size_t p = k * nq + q;
+      double       G[3][3] = {};
+      if (h.degree == 1) {
+        const double *dN = &reg.gradient[p * nen * Dim];
+        for (PetscInt a = 0; a < nen; ++a)
+          for (int i = 0; i < Dim; ++i)
+            for (int j = 0; j < Dim; ++j) G[i][j] += u[a * Dim + i] * dN[a * Dim + j];
+      } else {
+        // du_i/dxi_k by the GLL derivative matrix along line k through q, then dxi/dx.
+        const double *Jinv = &reg.jinv[p * Dim * Dim];
+        for (int k2 = 0; k2 < Dim; ++k2) {
+          const int    qk  = k2 == 0 ? (int)q % n1 : (k2 == 1 ? ((int)q / n1) % n1 : (int)q / (n1 * n1));
+          const double *Dq = &h.derivative[qk * n1];
+          double       du[Dim] = {};
+          for (int m = 0; m < n1; ++m) {
+            const int a = along((int)q, k2, m, n1);
+            for (int i = 0; i < Dim; ++i) du[i] += Dq[m] * u[a * Dim + i];
+          }
+          for (int i = 0; i < Dim; ++i)
+            for (int j = 0; j < Dim; ++j) G[i][j] += du[i] * Jinv[k2 * Dim + j];
+        }
+      }
+      double eps[kStrain];
+      strainOf<Dim>(G, eps);
+      fn(p, k, (int)q, reg.volume[p], eps);
+    }
+  }
+}
+
+// f_local += vol B^T T at point q of element k (T the symmetric stress tensor, row-major 3x3).
+template <int Dim>
+void scatter(const Hysteresis &h, const HystereticRegion &reg, size_t k, int q, size_t p, const double (*T)[3], double vol, PetscScalar *f_local) {
+  const PetscInt nen = h.nodes;
+  const PetscInt *dofs = &reg.dofs[k * nen];
+  if (h.degree == 1) {
+    const double *dN = &reg.gradient[p * nen * Dim];
+    for (PetscInt a = 0; a < nen; ++a)
+      for (int i = 0; i < Dim; ++i) {
+        double s = 0;
+        for (int j = 0; j < Dim; ++j) s += T[i][j] * dN[a * Dim + j];
+        f_local[dofs[a] + i] += vol * s;
+      }
+    return;
+  }
+  // dN_a/dxi_k(q) is nonzero only for the nodes a on line k through q: D[q_k][a_k].
+  const int     n1   = (int)h.degree + 1;
+  const double *Jinv = &reg.jinv[p * Dim * Dim];
+  for (int k2 = 0; k2 < Dim; ++k2) {
+    double S[Dim];
+    for (int i = 0; i < Dim; ++i) {
+      S[i] = 0;
+      for (int j = 0; j < Dim; ++j) S[i] += T[i][j] * Jinv[k2 * Dim + j];
+      S[i] *= vol;
+    }
+    const int     qk = k2 == 0 ? q % n1 : (k2 == 1 ? (q / n1) % n1 : q / (n1 * n1));
+    const double *Dq = &h.derivative[qk * n1];
+    for (int m = 0; m < n1; ++m) {
+      const PetscInt a = dofs[along(q, k2, m, n1)];
+      for (int i = 0; i < Dim; ++i) f_local[a + i] += Dq[m] * S[i];
+    }
+  }
+}
+
+// C:eps - sigma as a symmetric tensor (xx, yy, zz, xy, yz, xz) from the kernel's stress.
+template <int Dim>
+void relaxationStress(const HystereticRegion &reg, const double *eps, const double *sigma, double r[6]) {
+  if constexpr (Dim == 2) {
+    const double tr = eps[0] + eps[1];
+    r[0] = reg.lambda * tr + 2 * reg.mu * eps[0] - sigma[0];
+    r[1] = reg.lambda * tr + 2 * reg.mu * eps[1] - sigma[1];
+    r[2] = reg.lambda * tr - sigma[3];
+    r[3] = 2 * reg.mu * eps[2] - sigma[2];
+    r[4] = r[5] = 0;
+  } else {
+    const double tr = eps[0] + eps[1] + eps[2];
+    for (int c = 0; c < 3; ++c) r[c] = reg.lambda * tr + 2 * reg.mu * eps[c] - sigma[c];
+    for (int c = 3; c < 6; ++c) r[c] = 2 * reg.mu * eps[c] - sigma[c];
+  }
+}
+
+// f_local += scale f_relax of the region, its states read from state_in and, unless null,
+// updated into state_out.
+template <int Dim>
+void regionForce(const Hysteresis &h, const HystereticRegion &reg, const double *state_in, double *state_out, const PetscScalar *u_local, double scale, PetscScalar *f_local) {
+  constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
+  const int     size    = physics::hystereticStateSize<Dim>(*reg.model);
+  forEachPoint<Dim>(h, reg, u_local, [&](size_t p, size_t k, int q, double vol, const double *eps) {
+    double sigma[kStress], r[6];
+    // (Its return, the plastic work of the update, is not booked: the ledger's dissipation is
+    // the work against the relaxation force plus E_r, closed to round-off; energy_ledger.hpp.)
+    physics::hystereticUpdate<Dim>(*reg.model, &state_in[p * size], eps, sigma, state_out ? &state_out[p * size] : nullptr);
+    relaxationStress<Dim>(reg, eps, sigma, r);
+    // Tensor rows (xx, xy, xz), (xy, yy, yz), (xz, yz, zz) of r.
+    const double T[3][3] = {{r[0], r[3], r[5]}, {r[3], r[1], r[4]}, {r[5], r[4], r[2]}};
+    scatter<Dim>(h, reg, k, q, p, T, scale * vol, f_local);
+  });
+}
+
+template <int Dim>
+double relaxationEnergy(const Hysteresis *h, const PetscScalar *u_local) {
+  double sum = 0;
+  for (const HystereticRegion &reg : h->regions) {
+    const int size = physics::hystereticStateSize<Dim>(*reg.model);
+    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t, int, double vol, const double *eps) {
+      double tr = 0, ee = 0;
+      for (int c = 0; c < Dim; ++c) tr += eps[c];
+      for (int c = 0; c < physics::HystereticLayout<Dim>::kStrain; ++c) ee += (c < 3 && c < Dim ? 1.0 : 2.0) * eps[c] * eps[c];
+      const double linear = 0.5 * reg.lambda * tr * tr + reg.mu * ee;
+      sum += vol * (linear - physics::hystereticStoredEnergy<Dim>(*reg.model, &reg.committed[p * size], eps));
+    });
+  }
+  return sum;
+}
+
+template <int Dim>
+void cellFields(const Hysteresis *h, const PetscScalar *u_local, double *relaxation, double *max_strain, double *modulus_ratio) {
+  constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
+  for (size_t g = 0; g < h->regions.size(); ++g) {
+    const HystereticRegion &reg = h->regions[g];
+    const int               size = physics::hystereticStateSize<Dim>(*reg.model);
+    const size_t            nel = reg.elements.size();
+    // Per element of the region: the mean relaxation stress and the largest strain.
+    std::vector<double> mean(6 * nel, 0.0), largest(nel, 0.0);
+    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t k, int, double, const double *eps) {
+      double sigma[kStress], r[6];
+      // Evaluate only (no state out): the committed state stays as it is.
+      physics::hystereticUpdate<Dim>(*reg.model, &reg.committed[p * size], eps, sigma, nullptr);
+      relaxationStress<Dim>(reg, eps, sigma, r);
+      for (int j = 0; j < 6; ++j) mean[6 * k + j] += r[j] / reg.points;
+      largest[k] = std::max(largest[k], physics::maxShearStrain<Dim>(*reg.model, &reg.committed[p * size]));
+    });
+    // To the cells: at degree p > 1 every sub-cell of an element shows the element's values.
+    for (size_t c = 0; c < h->cell_element.size(); ++c) {
+      const auto [region, k] = h->element_place[h->cell_element[c]];
+      if (region != (PetscInt)g) continue;
+      for (int j = 0; j < 6; ++j) relaxation[6 * c + j] = mean[6 * k + j];
+      max_strain[c]    = largest[k];
+      modulus_ratio[c] = reg.model->secantModulusRatio(largest[k]);
+    }
+  }
+}
+
+} // namespace
+
+PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector<RegionMaterialInfo> &materials, Hysteresis **out) {
+  PetscFunctionBeginUser;
+  *out = nullptr;
+  bool any = false;
+  for (const auto &m : materials) any = any || m.model == MaterialModel::Hysteretic;
+  if (!any) PetscFunctionReturn(0);
+  auto          *h   = new Hysteresis();
+  const PetscInt dim = bulk.dimension(), nen = bulk.nodesPerElement(), degree = bulk.degree();
+  h->dim    = dim;
+  h->nodes  = nen;
+  h->degree = degree;
+  h->element_place.assign(bulk.elementCount(), {-1, -1});
+  for (PetscInt c = 0; c < bulk.cellCount(); ++c) h->cell_element.push_back(bulk.cellElement(c));
+  // Degree p > 1: the GLL nodes are the points, as for the spectral K (collocated quadrature).
+  double x[numerics::kMaxSpectralDegree + 1], w[numerics::kMaxSpectralDegree + 1];
+  const int n1 = (int)degree + 1;
+  if (degree > 1) {
+    numerics::gllPointsWeights((int)degree, x, w);
+    h->derivative.resize((size_t)n1 * n1);
+    numerics::lagrangeDerivativeMatrix((int)degree, x, h->derivative.data());
+  }
+  const numerics::ReferenceRule &rule = numerics::referenceRule(bulk.shape());
+  for (size_t r = 0; r < materials.size(); ++r) {
+    if (materials[r].model != MaterialModel::Hysteretic) continue;
+    HystereticRegion reg;
+    reg.region = (PetscInt)r;
+    reg.model  = materials[r].hysteretic.model;
+    reg.lambda = materials[r].fe.lame.lambda;
+    reg.mu     = materials[r].fe.lame.mu;
+    // A damped region's element moduli are the unrelaxed ones (medium/attenuation.hpp): the
+    // model takes them as its small-strain moduli, the same G/Gmax curve, so that it is the
+    // linear element below the elastic limit and the constant-Q body acts on its stress.
+    if (reg.mu != reg.model->shearModulus()) {
+      physics::HystereticSurfaces surfaces;
+      surfaces.count = reg.model->surfaces();
+      // The same curve the options' check built a model from: it cannot fail here.
+      try {
+        reg.model = std::make_shared<const physics::HystereticSoilModel>(reg.mu, reg.lambda + 2.0 / 3.0 * reg.mu, materials[r].hysteretic.backbone, surfaces);
+      } catch (const std::invalid_argument &e) {
+        SETERRQ(PETSC_COMM_SELF, PETSC_ERR_PLIB, "region %s: the hysteretic model on the unrelaxed moduli: %s", materials[r].region.c_str(), e.what());
+      }
+    }
+    // Mean: one point per cell, with the cell's mean strain (the volume average of the Gauss
+    // points' gradients) and its volume.
+    const bool mean = materials[r].hysteretic.points == StressPoints::Mean;
+    reg.points      = degree > 1 ? nen : (mean ? 1 : rule.points);
+    for (PetscInt e = 0; e < bulk.elementCount(); ++e) {
+      if (bulk.elementRegion(e) != reg.region) continue;
+      h->element_place[e] = {(PetscInt)h->regions.size(), (PetscInt)reg.elements.size()};
+      reg.elements.push_back(e);
+      for (PetscInt a = 0; a < nen; ++a) reg.dofs.push_back(bulk.elementNodeOffset(e, a));
+      const double *xe = bulk.elementCoordinates(e);
+      if (degree > 1) {
+        for (int q = 0; q < nen; ++q) {
+          double J[numerics::kMaxCellDim][numerics::kMaxCellDim] = {}, Jinv[numerics::kMaxCellDim][numerics::kMaxCellDim];
+          double weight = 1;
+          for (int k = 0; k < dim; ++k) {
+            const int     qk = k == 0 ? q % n1 : (k == 1 ? (q / n1) % n1 : q / (n1 * n1));
+            const double *Dq = &h->derivative[qk * n1];
+            weight *= w[qk];
+            for (int m = 0; m < n1; ++m)
+              for (int i = 0; i < dim; ++i) J[i][k] += Dq[m] * xe[along(q, k, m, n1) * dim + i];
+          }
+          const double det = numerics::invertJacobian((int)dim, J, Jinv);
+          for (int k = 0; k < dim; ++k)
+            for (int j = 0; j < dim; ++j) reg.jinv.push_back(Jinv[k][j]);
+          reg.volume.push_back(weight * std::fabs(det));
+        }
+        continue;
+      }
+      double gradient[numerics::kMaxRulePoints][numerics::kMaxCellNodes][numerics::kMaxCellDim] = {}, volume[numerics::kMaxRulePoints];
+      for (int q = 0; q < rule.points; ++q) {
+        double J[numerics::kMaxCellDim][numerics::kMaxCellDim], Jinv[numerics::kMaxCellDim][numerics::kMaxCellDim];
+        numerics::jacobian((int)nen, (int)dim, xe, rule.dN[q], J);
+        volume[q] = rule.weight[q] * std::fabs(numerics::invertJacobian((int)dim, J, Jinv));
+        // dN/dx_j = sum_k dN/dxi_k dxi_k/dx_j.
+        for (PetscInt a = 0; a < nen; ++a)
+          for (PetscInt j = 0; j < dim; ++j)
+            for (PetscInt k = 0; k < dim; ++k) gradient[q][a][j] += rule.dN[q][a][k] * Jinv[k][j];
+      }
+      if (mean) {
+        double v = 0;
+        for (int q = 0; q < rule.points; ++q) v += volume[q];
+        for (PetscInt a = 0; a < nen; ++a)
+          for (PetscInt j = 0; j < dim; ++j) {
+            double g = 0;
+            for (int q = 0; q < rule.points; ++q) g += volume[q] * gradient[q][a][j];
+            reg.gradient.push_back(g / v);
+          }
+        reg.volume.push_back(v);
+      } else {
+        for (int q = 0; q < rule.points; ++q) {
+          for (PetscInt a = 0; a < nen; ++a)
+            for (PetscInt j = 0; j < dim; ++j) reg.gradient.push_back(gradient[q][a][j]);
+          reg.volume.push_back(volume[q]);
+        }
+      }
+    }
+    const int size = dim == 2 ? physics::hystereticStateSize<2>(*reg.model) : physics::hystereticStateSize<3>(*reg.model);
+    reg.committed.assign(reg.volume.size() * size, 0.0);
+    reg.trial = reg.committed;
+    h->regions.push_back(std::move(reg));
+  }
+  *out = h;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HysteresisDestroy(Hysteresis **h) {
+  PetscFunctionBeginUser;
+  delete *h;
+  *h = nullptr;
+  PetscFunctionReturn(0);
+}
+
+void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local) {
+  for (HystereticRegion &reg : h->regions) {
+    if (h->dim == 2) regionForce<2>(*h, reg, reg.committed.data(), reg.trial.data(), u_local, 1.0, f_local);
+    else regionForce<3>(*h, reg, reg.committed.data(), reg.trial.data(), u_local, 1.0, f_local);
+  }
+  h->has_trial = true;
+}
+
+void HysteresisAddRegionForce(const Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local) {
+  for (const HystereticRegion &reg : h->regions) {
+    if (reg.region != region) continue;
+    if (h->dim == 2) regionForce<2>(*h, reg, reg.committed.data(), nullptr, u_local, scale, f_local);
+    else regionForce<3>(*h, reg, reg.committed.data(), nullptr, u_local, scale, f_local);
+  }
+}
+
+void HysteresisCommit(Hysteresis *h) {
+  if (!h || !h->has_trial) return;
+  for (HystereticRegion &reg : h->regions) reg.committed.swap(reg.trial);
+  h->has_trial = false;
+}
+
+std::vector<double> HysteresisState(const Hysteresis *h) {
+  std::vector<double> s;
+  for (const HystereticRegion &reg : h->regions) s.insert(s.end(), reg.committed.begin(), reg.committed.end());
+  return s;
+}
+
+PetscInt HysteresisStateSize(const Hysteresis *h) {
+  size_t n = 0;
+  for (const HystereticRegion &reg : h->regions) n += reg.committed.size();
+  return (PetscInt)n;
+}
+
+void HysteresisSetState(Hysteresis *h, const std::vector<double> &s) {
+  size_t o = 0;
+  for (HystereticRegion &reg : h->regions) {
+    std::copy(s.begin() + o, s.begin() + o + reg.committed.size(), reg.committed.begin());
+    o += reg.committed.size();
+  }
+  h->has_trial = false;
+}
+
+double HysteresisRelaxationEnergy(const Hysteresis *h, const PetscScalar *u_local) { return h->dim == 2 ? relaxationEnergy<2>(h, u_local) : relaxationEnergy<3>(h, u_local); }
+
+void HysteresisCellFields(const Hysteresis *h, const PetscScalar *u_local, double *relaxation, double *max_strain, double *modulus_ratio) {
+  if (h->dim == 2) cellFields<2>(h, u_local, relaxation, max_strain, modulus_ratio);
+  else cellFields<3>(h, u_local, relaxation, max_strain, modulus_ratio);
+}
+
+std::vector<std::string> HysteresisReport(const std::vector<RegionMaterialInfo> &materials) {
+  std::vector<std::string> lines;
+  char                     buf[512];
+  for (const RegionMaterialInfo &m : materials) {
+    if (m.model != MaterialModel::Hysteretic) continue;
+    const HystereticSpec &s = m.hysteretic;
+    std::string           curve;
+    switch (s.choice) {
+    case BackboneChoice::Mkz:
+      std::snprintf(buf, sizeof buf, "mkz, gamma_r %.4g, s %.4g, beta %.4g", s.backbone.reference_strain, s.backbone.curvature, s.backbone.beta);
+      break;
+    case BackboneChoice::Darendeli:
+      std::snprintf(buf, sizeof buf, "darendeli, PI %.4g %%, OCR %.4g, sigma'_0 %.4g Pa: gamma_r %.4g, a %.4g", s.darendeli.plasticity_index, s.darendeli.ocr,
+                    s.darendeli.mean_effective_stress, s.backbone.reference_strain, s.backbone.curvature);
+      break;
+    case BackboneChoice::Gqh:
+      std::snprintf(buf, sizeof buf, "gqh, theta %.4g,%.4g,%.4g,%.4g,%.4g", s.backbone.theta[0], s.backbone.theta[1], s.backbone.theta[2], s.backbone.theta[3],
+                    s.backbone.theta[4]);
+      break;
+    }
+    curve = buf;
+    const physics::HystereticSoilModel &model = *s.model;
+    if (s.strength > 0 && s.choice != BackboneChoice::Gqh) {
+      std::snprintf(buf, sizeof buf, ", capped at tau_max %.4g Pa", s.strength);
+      curve += buf;
+    } else if (s.choice == BackboneChoice::Gqh) {
+      std::snprintf(buf, sizeof buf, ", tau_max %.4g Pa", s.strength);
+      curve += buf;
+    }
+    // A backbone a parallel Iwan model cannot hold was replaced by its concave majorant.
+    if (model.knotDeviation() > 1e-9) {
+      std::snprintf(buf, sizeof buf, " (made concave: knots moved up to %.3g %%)", 100 * model.knotDeviation());
+      curve += buf;
+    }
+    if (s.points == StressPoints::Mean) curve += "; stress from each cell's mean strain";
+    std::snprintf(buf, sizeof buf,
+                  "  region %s: hysteretic soil (Masing, parallel Iwan), backbone %s; Gmax %.4g Pa, %d surfaces; G/Gmax %.3f at 1e-4, %.3f at 1e-3; "
+                  "strength %.4g Pa (the model's, at the last knot %.3g)",
+                  m.region.c_str(), curve.c_str(), model.shearModulus(), model.surfaces(), model.secantModulusRatio(1e-4), model.secantModulusRatio(1e-3),
+                  model.strength(), model.knotStrains().back());
+    lines.push_back(buf);
+  }
+  return lines;
+}
+
+} // namespace slipwave::medium
