@@ -73,7 +73,7 @@ PetscErrorCode InterfaceOptionsRead(MPI_Comm comm, const char *prefix, Interface
     o.penalty_rule = (PenaltyRule)rule;
     PetscCall(PetscOptionsReal("-penalty_length",
                                "penalty_rule physical: the interface is as compliant as a layer of the softer side this thick [m], > 0; "
-                               "default the interface's width / 100 (2D: its length, 3D: sqrt of its area)",
+                               "default the interface's width / 200 (2D: its length, 3D: sqrt of its area)",
                                "InterfaceOptionsRead", o.penalty_length, &o.penalty_length, &length_set));
     PetscCall(PetscOptionsReal("-penalty_factor", "penalty_rule mesh: E, G given as auto are factor x (lambda+2mu)/h and factor x mu/h of the softer side (h: the cell size; at -element_degree p, 3 h_e/(p^2+p+1)) [-], > 0", "InterfaceOptionsRead",
                                o.penalty_factor, &o.penalty_factor, nullptr));

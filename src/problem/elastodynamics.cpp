@@ -114,7 +114,7 @@ PetscErrorCode assembleDampingBlocks(Elastodynamics *m) {
 
 // The penalty `auto` (interface/interface_options.hpp, InterfaceAutoPenalty): physical, from
 // a length L, E = (lambda+2mu)/L, G = mu/L of the softer side (default L: the interface's
-// width / 100), or mesh, factor x the same over h (h: the smallest cell size; degree p: a face
+// width / 200), or mesh, factor x the same over h (h: the smallest cell size; degree p: a face
 // node of an element of size h_e sees M (p^2 + p + 1)/(3 h_e) per unit area,
 // numerics/gll_basis.hpp gllEndNodeStiffness, so h is h_e 3/(p^2 + p + 1)). The width is the
 // interface's total pair area: its length in 2D, the square root of its area in 3D.
