@@ -12,7 +12,11 @@
 #  - The dynamic stage then sums each force in a different order only, so every station's
 #    u and v agree to 1e-9 of their peak and a to 1e-8 (the issue's bounds; accelerations
 #    carry the stiffness times the round-off of u, hence the wider one), and so do the
-#    interface fields per pair id at every frame, the accumulated slip included.
+#    interface fields per pair id at every frame: its kinematic ones (slip, accumulated
+#    slip, opening, status) to 1e-9, its stresses to 1e-8 like the accelerations (they are
+#    the penalty times the round-off of the jumps; and the rigid block's motion comes from
+#    its resultant, the small difference of the interface's and gravity's 1.4 MN/m, whose
+#    round-off is some 1e3 times that of one node's force: 2.6e-9 measured on 2 ranks).
 #  - The station block_base at (0, 30) lies on the interface: it must record the structure
 #    side (the default of -station_side) on every rank count, and the report must say so.
 #    On 2 and 3 ranks pairs must be cut by the partition (else the test proves less).
@@ -33,7 +37,8 @@ for n in 2 3; do
   echo "$n ranks: $cut pairs cut by the partition (need > 0)"
   [ "$cut" -gt 0 ]
   $CHECK stations-equal "$WORK/np1" "$WORK/np$n" --names block_top,block_base,free_field,bedrock --tol 1e-9 --tol-a 1e-8
-  $IC interface-equal "$WORK/np1" "$WORK/np$n" --name base --fields sigma_N,sigma_T,accumulated_slip,opening,slip,status --tol 1e-9
+  $IC interface-equal "$WORK/np1" "$WORK/np$n" --name base --fields accumulated_slip,opening,slip,status --tol 1e-9
+  $IC interface-equal "$WORK/np1" "$WORK/np$n" --name base --fields sigma_N,sigma_T --tol 1e-8
 done
 $PY - "$WORK" <<'PY'
 import sys
