@@ -155,9 +155,11 @@ class RunInfo(unittest.TestCase):
     def test_fields(self):
         info = RunFolder(RUN).run_info()
         # run_report.cpp WriteRunInfo; degree 1 writes no element_degree.
-        self.assertEqual(set(info), {"resolved_frequency_hz", "points_per_wavelength", "slowest_region", "h_min_m", "input_top_frequency_hz", "time_step_s"})
+        self.assertEqual(set(info), {"resolved_frequency_hz", "points_per_wavelength", "slowest_region", "resolving_element_size_m", "h_min_m", "input_top_frequency_hz",
+                                     "time_step_s"})
         self.assertEqual(info["time_step_s"], DT)  # -ts_dt, printed with 10 digits
         self.assertEqual(info["h_min_m"], 1.0)  # 20 m / 20 cells
+        self.assertEqual(info["resolving_element_size_m"], 1.0)  # the soil's largest cell: every cell's
         self.assertEqual(info["points_per_wavelength"], 10)  # degree 1: Kuhlemeyer & Lysmer
         self.assertEqual(info["slowest_region"], "soil")
         self.assertAlmostEqual(info["resolved_frequency_hz"], VS_SOIL / (10 * 1.0), places=4)  # vs / (10 h)

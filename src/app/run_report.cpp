@@ -54,26 +54,30 @@ const char *nodesPerWavelengthSource(PetscInt degree) {
   return degree == 1 ? "Kuhlemeyer & Lysmer 1973" : degree >= 4 ? "Komatitsch & Tromp 1999" : "between Kuhlemeyer & Lysmer 1973 at p = 1 and Komatitsch & Tromp 1999 at p = 4";
 }
 
-// GLL nodes per S wavelength at frequency f in a region of S speed vs, with the mesh's
-// smallest element (its corners' shortest edge or diagonal; p = 1: the smallest cell).
-double nodesPerWavelength(const problem::Elastodynamics &model, double vs, double f) {
-  return (double)model.bulk.degree() * vs / f / model.bulk.minElementSize();
+// GLL nodes per S wavelength at frequency f in region r (S speed vs), with the region's
+// largest element (its corners' shortest edge or diagonal; p = 1: the cell): on a graded
+// mesh the coarse cells, not the fine ones, limit what the region carries.
+double nodesPerWavelength(const problem::Elastodynamics &model, PetscInt region, double vs, double f) {
+  return (double)model.bulk.degree() * vs / f / model.bulk.regionElementSize(region);
 }
 
 // The highest frequency the mesh carries: nodesPerWavelengthNeeded GLL nodes per S
-// wavelength in the slowest region, with the smallest element of the mesh.
+// wavelength in the region that carries the least, with its largest element.
 struct Resolution {
   double      frequency = 0; // Hz
   std::string region;
+  double      size = 0;      // the region's largest element [m]
 };
 
 Resolution resolvedFrequency(const problem::Elastodynamics &model) {
   const PetscInt p = model.bulk.degree();
   Resolution     res;
-  for (const auto &m : model.materials) {
+  for (size_t r = 0; r < model.materials.size(); ++r) {
+    const auto &m = model.materials[r];
     if (m.model == medium::MaterialModel::Rigid) continue; // carries no waves
-    const double f = (double)p * m.elastic.vs / (nodesPerWavelengthNeeded(p) * model.bulk.minElementSize());
-    if (res.region.empty() || f < res.frequency) res = {f, m.region};
+    const double h = model.bulk.regionElementSize((PetscInt)r);
+    const double f = (double)p * m.elastic.vs / (nodesPerWavelengthNeeded(p) * h);
+    if (res.region.empty() || f < res.frequency) res = {f, m.region, h};
   }
   return res;
 }
@@ -103,8 +107,8 @@ void WriteRunInfo(const problem::Elastodynamics &model, const std::string &outpu
   const Resolution  res  = resolvedFrequency(model);
   const std::string path = output_dir + "/run_info.json";
   if (FILE *f = std::fopen(path.c_str(), "w")) {
-    std::fprintf(f, "{\"resolved_frequency_hz\": %.6g, \"points_per_wavelength\": %g, \"slowest_region\": \"%s\", \"h_min_m\": %.6g,\n", res.frequency,
-                 nodesPerWavelengthNeeded(model.bulk.degree()), res.region.c_str(), model.bulk.minCellSize());
+    std::fprintf(f, "{\"resolved_frequency_hz\": %.6g, \"points_per_wavelength\": %g, \"slowest_region\": \"%s\", \"resolving_element_size_m\": %.6g, \"h_min_m\": %.6g,\n",
+                 res.frequency, nodesPerWavelengthNeeded(model.bulk.degree()), res.region.c_str(), res.size, model.bulk.minCellSize());
     if (model.bulk.degree() > 1) std::fprintf(f, " \"element_degree\": %d, \"element_size_m\": %.6g,\n", (int)model.bulk.degree(), model.bulk.minElementSize());
     std::fprintf(f, " \"input_top_frequency_hz\": %.6g, \"time_step_s\": %.10g}\n", model.bc.input.active() ? model.bc.input.topFrequency() : 0.0, dt);
     std::fclose(f);
@@ -135,31 +139,36 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
                           model.mesh.source.c_str(), p, nelem, nelem == 1 ? "" : "s", ncell, n_nodes / model.dim, model.bulk.distinctMatrices()));
   }
   const double fmax = model.bc.input.active() ? model.bc.input.topFrequency() : 0.0;
-  const double h    = model.bulk.minElementSize();
-  for (const auto &m : model.materials) {
+  for (size_t r = 0; r < model.materials.size(); ++r) {
+    const auto    &m = model.materials[r];
+    const PetscInt k = (PetscInt)r;
     PetscCall(PetscPrintf(comm, "  region %-10s rho %8.1f kg/m3  vp %8.1f m/s  vs %8.1f m/s", m.region.c_str(), m.elastic.rho, m.elastic.vp, m.elastic.vs));
     if (m.model == medium::MaterialModel::Rigid) PetscCall(PetscPrintf(comm, "  rigid (its vp, vs serve the geostatic stage only)"));
-    else if (fmax > 0 && p == 1) PetscCall(PetscPrintf(comm, "  %5.1f points per S wavelength at %.2f Hz (h_min %.3g m)", nodesPerWavelength(model, m.elastic.vs, fmax), fmax, h));
+    else if (fmax > 0 && p == 1)
+      PetscCall(PetscPrintf(comm, "  %5.1f points per S wavelength at %.2f Hz (cell size %.3g m)", nodesPerWavelength(model, k, m.elastic.vs, fmax), fmax,
+                            model.bulk.regionElementSize(k)));
     else if (fmax > 0)
-      PetscCall(PetscPrintf(comm, "  %5.1f GLL nodes per S wavelength at %.2f Hz (degree %" PetscInt_FMT ", element size %.3g m)", nodesPerWavelength(model, m.elastic.vs, fmax),
-                            fmax, p, h));
+      PetscCall(PetscPrintf(comm, "  %5.1f GLL nodes per S wavelength at %.2f Hz (degree %" PetscInt_FMT ", element size %.3g m)", nodesPerWavelength(model, k, m.elastic.vs, fmax),
+                            fmax, p, model.bulk.regionElementSize(k)));
     PetscCall(PetscPrintf(comm, "\n"));
   }
-  for (const auto &m : model.materials)
-    if (m.model != medium::MaterialModel::Rigid && fmax > 0 && nodesPerWavelength(model, m.elastic.vs, fmax) < nodesPerWavelengthNeeded(p))
+  for (size_t r = 0; r < model.materials.size(); ++r) {
+    const auto   &m = model.materials[r];
+    const double  n = fmax > 0 ? nodesPerWavelength(model, (PetscInt)r, m.elastic.vs, fmax) : 0.0;
+    if (m.model != medium::MaterialModel::Rigid && fmax > 0 && n < nodesPerWavelengthNeeded(p))
       PetscCall(PetscPrintf(comm,
                             "  warning: region %s is under-resolved for the input's top frequency %.2f Hz: %.1f %s per S wavelength, below the %.3g that elements of degree %" PetscInt_FMT " need (%s); refine the mesh or raise -element_degree\n",
-                            m.region.c_str(), fmax, nodesPerWavelength(model, m.elastic.vs, fmax), p == 1 ? "points" : "GLL nodes", nodesPerWavelengthNeeded(p), p,
-                            nodesPerWavelengthSource(p)));
+                            m.region.c_str(), fmax, n, p == 1 ? "points" : "GLL nodes", nodesPerWavelengthNeeded(p), p, nodesPerWavelengthSource(p)));
+  }
   const Resolution res = resolvedFrequency(model);
   if (res.region.empty()) {
     // Every region is rigid: no waves to resolve.
   } else if (p == 1)
-    PetscCall(PetscPrintf(comm, "  resolution: S waves up to %.3g Hz (%d points per wavelength in region %s, h_min %.3g m)\n", res.frequency, (int)nodesPerWavelengthNeeded(p),
-                          res.region.c_str(), h));
+    PetscCall(PetscPrintf(comm, "  resolution: S waves up to %.3g Hz (%d points per wavelength in region %s, cell size %.3g m)\n", res.frequency,
+                          (int)nodesPerWavelengthNeeded(p), res.region.c_str(), res.size));
   else
     PetscCall(PetscPrintf(comm, "  resolution: S waves up to %.3g Hz (%.3g GLL nodes per wavelength at degree %" PetscInt_FMT " in region %s, element size %.3g m)\n",
-                          res.frequency, nodesPerWavelengthNeeded(p), p, res.region.c_str(), h));
+                          res.frequency, nodesPerWavelengthNeeded(p), p, res.region.c_str(), res.size));
   std::string bcs;
   for (size_t i = 0; i < model.bc.names.size(); ++i) bcs += " " + model.bc.names[i] + "=" + input::boundaryTypeName(model.bc.types[i]);
   PetscCall(PetscPrintf(comm, "  boundaries:%s\n", bcs.c_str()));

@@ -227,21 +227,27 @@ PetscErrorCode BulkOperator::Setup(DM dm, const std::vector<RegionMaterial> &mat
     elementLumpedMass(shape_, x, m.rho, &lumped_[(size_t)idx * nen_]);
   }
   matrix_count_ = seen.size();
-  // The smallest edge/diagonal length over cells, for reports (points per wavelength).
+  // The smallest edge/diagonal length over cells, for reports (points per wavelength), and
+  // per region the largest cell's (each cell's shortest edge or diagonal).
+  region_element_size_.assign(materials.size(), 0.0);
   for (PetscInt c = 0; c < ncell_; ++c) {
-    const double *x = cellCoordinates(c);
+    const double *x    = cellCoordinates(c);
+    double        size = 1e300;
     for (PetscInt a = 0; a < nen_; ++a)
       for (PetscInt b = a + 1; b < nen_; ++b) {
         double d2 = 0;
         for (PetscInt i = 0; i < dim_; ++i) d2 += (x[a * dim_ + i] - x[b * dim_ + i]) * (x[a * dim_ + i] - x[b * dim_ + i]);
-        h_min_ = std::min(h_min_, std::sqrt(d2));
+        size = std::min(size, std::sqrt(d2));
       }
+    h_min_ = std::min(h_min_, size);
+    if (degree_ == 1) region_element_size_[cell_region_[c]] = std::max(region_element_size_[cell_region_[c]], size);
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &h_min_, 1, MPI_DOUBLE, MPI_MIN, PetscObjectComm((PetscObject)dm)));
   h_elem_min_ = h_min_;
   local_size_ = 0;
   for (PetscInt off : cell_dofs_) local_size_ = std::max(local_size_, off + dim_);
   if (degree_ > 1) PetscCall(setupSpectral(dm, *layout, materials));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, region_element_size_.data(), (int)region_element_size_.size(), MPI_DOUBLE, MPI_MAX, PetscObjectComm((PetscObject)dm)));
   PetscFunctionReturn(0);
 }
 
@@ -273,7 +279,7 @@ PetscErrorCode BulkOperator::setupSpectral(DM dm, const mesh::SpectralLayout &la
   h_elem_min_          = 1e300;
   const PetscInt ncorner = dim_ == 2 ? 4 : 8, n1 = degree_ + 1;
   for (PetscInt e = 0; e < layout.nelem; ++e) {
-    double x[8][3];
+    double x[8][3], size = 1e300;
     for (PetscInt k = 0; k < ncorner; ++k) {
       const PetscInt i = (k & 1) * degree_, j = ((k >> 1) & 1) * degree_, l = ((k >> 2) & 1) * degree_;
       const PetscInt a = i + n1 * (j + n1 * l);
@@ -283,8 +289,11 @@ PetscErrorCode BulkOperator::setupSpectral(DM dm, const mesh::SpectralLayout &la
       for (PetscInt b = a + 1; b < ncorner; ++b) {
         double d2 = 0;
         for (PetscInt d = 0; d < dim_; ++d) d2 += (x[a][d] - x[b][d]) * (x[a][d] - x[b][d]);
-        h_elem_min_ = std::min(h_elem_min_, std::sqrt(d2));
+        size = std::min(size, std::sqrt(d2));
       }
+    h_elem_min_         = std::min(h_elem_min_, size);
+    double &region_size = region_element_size_[layout.element_region[e]];
+    region_size         = std::max(region_size, size);
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &h_elem_min_, 1, MPI_DOUBLE, MPI_MIN, comm));
   PetscFunctionReturn(0);

@@ -7,7 +7,8 @@
 #  2. GLL nodes per S wavelength = p lambda / h (h = 15 m, the element edge): soil
 #     4 x 14.47 / 15 = 3.9, rock 15.4; the warning names the soil alone (below 5 GLL nodes per
 #     wavelength at p = 4, Komatitsch & Tromp 1999, src/app/run_report.cpp), the rock passes.
-#  3. p = 1 on the same mesh: the present numbers (points per wavelength lambda / h_min: soil
+#  3. p = 1 on the same mesh: the present numbers (points per wavelength lambda / h, h the
+#     region's largest cell, here every cell's 15 m: soil
 #     1.0, rock 3.9), both below 10 (Kuhlemeyer & Lysmer 1973): two warnings.
 #  4. p = 2 with h = 5 m: soil 2 x 14.47 / 5 = 5.8, below the 8.33 that degree 2 needs,
 #     although above the 5 of p = 4: the threshold depends on the degree.
@@ -36,7 +37,7 @@ grep -qE "region rock .* 15\.4 GLL nodes per S wavelength at 13\.82 Hz" "$WORK/p
 grep -qF "warning: region soil is under-resolved for the input's top frequency 13.82 Hz: 3.9 GLL nodes per S wavelength, below the 5 that elements of degree 4 need (Komatitsch & Tromp 1999)" \
   "$WORK/p4.log" || fail "p = 4 soil warning"
 [ "$(grep -c "under-resolved" "$WORK/p4.log")" = 1 ] || fail "p = 4: the rock (15.4 >= 5) is warned about"
-grep -qE "region soil .* 1\.0 points per S wavelength at 13\.82 Hz \(h_min 15 m\)" "$WORK/p1.log" || fail "p = 1 soil points per wavelength"
+grep -qE "region soil .* 1\.0 points per S wavelength at 13\.82 Hz \(cell size 15 m\)" "$WORK/p1.log" || fail "p = 1 soil points per wavelength"
 grep -qE "region rock .* 3\.9 points per S wavelength" "$WORK/p1.log" || fail "p = 1 rock points per wavelength"
 grep -qF "warning: region rock is under-resolved for the input's top frequency 13.82 Hz: 3.9 points per S wavelength, below the 10 that elements of degree 1 need (Kuhlemeyer & Lysmer 1973)" \
   "$WORK/p1.log" || fail "p = 1 rock warning"

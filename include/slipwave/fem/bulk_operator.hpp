@@ -94,6 +94,10 @@ public:
   double    minCellSize() const { return h_min_; }
   // The shortest edge or diagonal of an element's corners (degree 1: minCellSize).
   double    minElementSize() const { return h_elem_min_; }
+  // The largest element of a region, each element measured as above (its corners' shortest
+  // edge or diagonal), over all ranks: what limits the waves the region carries. On a uniform
+  // mesh it equals minElementSize; on a graded one it is the coarse part's size.
+  double    regionElementSize(PetscInt region) const { return region_element_size_[region]; }
 
 private:
   PetscErrorCode setupSpectral(DM dm, const mesh::SpectralLayout &layout, const std::vector<RegionMaterial> &materials);
@@ -102,6 +106,7 @@ private:
   CellShape             shape_ = CellShape::Quad4;
   std::vector<PetscInt> cell_dofs_, cell_vertices_, cell_region_, cell_matrix_;
   std::vector<char>     region_deforms_; // per region: RegionMaterial::deforms
+  std::vector<double>   region_element_size_; // per region: regionElementSize
   std::vector<double>   cell_coords_, stiffness_, stress_op_, lumped_;
   size_t                matrix_count_ = 0;
   double                h_min_ = 0, h_elem_min_ = 0;
