@@ -26,6 +26,11 @@ from .xdmf import XdmfError, read_index
 # Units of the columns of the station CSVs and energy.csv, by column name.
 _UNITS = {"t": "s", "p": "Pa", "p_excess": "Pa", "step": "-", "time": "s", "relative_balance_error": "-"}
 _UNITS.update({f"{q}_{c}": unit for q, unit in (("u", "m"), ("v", "m/s"), ("a", "m/s^2")) for c in "xyz"})
+# -station_stress: the stress s_* [Pa] and strain e_* [-] tensor components of the station's
+# cell; stations.h5 holds them as datasets stress and strain whose width names them (2D: the
+# components that plane strain does not make zero; src/io/stations.hpp).
+_TENSOR_COMPONENTS = {3: ("xx", "yy", "xy"), 4: ("xx", "yy", "zz", "xy"), 6: ("xx", "yy", "zz", "xy", "yz", "xz")}
+_UNITS.update({f"{q}_{c}": unit for q, unit in (("s", "Pa"), ("e", "-")) for c in _TENSOR_COMPONENTS[6]})
 ENERGY_UNIT = "J (per m in 2D)"
 
 # Units of the frames' fields (volume and interface), by field name.
@@ -42,7 +47,8 @@ INTERFACE_STATUS = ("stick", "slip", "open")
 
 def column_unit(name):
     """The unit of a station or energy.csv column: t [s]; u_* [m]; v_* [m/s]; a_* [m/s^2];
-    p, p_excess [Pa] (total and excess pore pressure, compression positive); step [-]; time
+    p, p_excess [Pa] (total and excess pore pressure, compression positive); s_* [Pa] and
+    e_* [-] (stress and strain tensor components, -station_stress); step [-]; time
     [s]; relative_balance_error [-]; every other energy.csv column an energy, ENERGY_UNIT."""
     return _UNITS.get(name, ENERGY_UNIT)
 
@@ -194,7 +200,10 @@ class RunFolder:
     def station(self, name, source=None):
         """Station `name`'s record, one row per time step, as a Table: t [s]; u_x, u_y[, u_z]
         [m], v_* [m/s], a_* [m/s^2] (interpolated at the station's point; 2D has no z);
-        saturated scenes add p and p_excess [Pa]. source "csv": stations/<name>.csv; "h5":
+        saturated scenes add p and p_excess [Pa]; with -station_stress the stress of the
+        station's cell s_xx, s_yy, s_zz, s_xy[, s_yz, s_xz] [Pa] (as the volume output shows
+        it) and its strain e_xx, e_yy[, e_zz], e_xy[, e_yz, e_xz] [-] (tensor components: the
+        engineering shear strain is 2 e_xy) come last. source "csv": stations/<name>.csv; "h5":
         stations.h5 (the same values); None: the CSV if there is one, else stations.h5."""
         path = self._file("stations", name + ".csv")
         if source is None:
@@ -216,6 +225,10 @@ class RunFolder:
             for column, dataset in (("p", "pore_pressure"), ("p_excess", "excess_pore_pressure")):
                 if dataset in g:
                     columns[column] = g[dataset][()]
+            for q, dataset in (("s", "stress"), ("e", "strain")):
+                if dataset in g:
+                    values = g[dataset][()]
+                    columns.update({f"{q}_{c}": values[:, i] for i, c in enumerate(_TENSOR_COMPONENTS[values.shape[1]])})
         return Table(columns)
 
     def stations(self):
@@ -242,7 +255,11 @@ class RunFolder:
         mesh carries), points_per_wavelength [-] (nodes per S wavelength that needs),
         slowest_region, h_min_m [m] (smallest cell), input_top_frequency_hz [Hz] (0 without
         an input wave), time_step_s [s]; at element degree p > 1 also element_degree and
-        element_size_m [m]."""
+        element_size_m [m]; with hysteretic soil hysteretic_regions, per region its backbone
+        (mkz, darendeli, gqh), gmax_pa, surfaces, strength_pa (0: no cap) and the parameters
+        the backbone was built from (mkz: reference_strain, curvature, beta; darendeli:
+        plasticity_index [%], ocr, mean_effective_stress_pa, frequency_hz, cycles; gqh:
+        theta)."""
         with open(self._file("run_info.json")) as f:
             return json.load(f)
 

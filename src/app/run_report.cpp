@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "slipwave/input/drm.hpp"
@@ -101,6 +102,36 @@ PetscErrorCode reportInterfaces(const problem::Elastodynamics &model) {
   PetscFunctionReturn(0);
 }
 
+// run_info.json's "hysteretic_regions": per hysteretic region what its backbone was built from
+// (the inputs of the published curve, not the fitted surfaces), so that a script can draw the
+// curve from its source formulas (scripts/soil_loops.py).
+std::string hystereticRegionsJson(const std::vector<medium::RegionMaterialInfo> &materials) {
+  std::string json;
+  char        buf[512];
+  for (const medium::RegionMaterialInfo &m : materials) {
+    if (m.model != medium::MaterialModel::Hysteretic) continue;
+    const medium::HystereticSpec &s = m.hysteretic;
+    std::snprintf(buf, sizeof buf, "%s{\"region\": \"%s\", \"backbone\": \"%s\", \"gmax_pa\": %.17g, \"surfaces\": %d, \"strength_pa\": %.17g", json.empty() ? "" : ", ",
+                  m.region.c_str(), medium::kBackboneNames[(int)s.choice], s.model->shearModulus(), s.model->surfaces(), s.strength);
+    json += buf;
+    switch (s.choice) {
+    case medium::BackboneChoice::Mkz:
+      std::snprintf(buf, sizeof buf, ", \"reference_strain\": %.17g, \"curvature\": %.17g, \"beta\": %.17g}", s.backbone.reference_strain, s.backbone.curvature, s.backbone.beta);
+      break;
+    case medium::BackboneChoice::Darendeli:
+      std::snprintf(buf, sizeof buf, ", \"plasticity_index\": %.17g, \"ocr\": %.17g, \"mean_effective_stress_pa\": %.17g, \"frequency_hz\": %.17g, \"cycles\": %.17g}",
+                    s.darendeli.plasticity_index, s.darendeli.ocr, s.darendeli.mean_effective_stress, s.darendeli.frequency, s.darendeli.cycles);
+      break;
+    case medium::BackboneChoice::Gqh:
+      std::snprintf(buf, sizeof buf, ", \"theta\": [%.17g, %.17g, %.17g, %.17g, %.17g]}", s.backbone.theta[0], s.backbone.theta[1], s.backbone.theta[2], s.backbone.theta[3],
+                    s.backbone.theta[4]);
+      break;
+    }
+    json += buf;
+  }
+  return json;
+}
+
 } // namespace
 
 void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt) {
@@ -110,6 +141,7 @@ void WriteRunInfo(const problem::Elastodynamics &model, const std::string &outpu
     std::fprintf(f, "{\"resolved_frequency_hz\": %.6g, \"points_per_wavelength\": %g, \"slowest_region\": \"%s\", \"resolving_element_size_m\": %.6g, \"h_min_m\": %.6g,\n",
                  res.frequency, nodesPerWavelengthNeeded(model.bulk.degree()), res.region.c_str(), res.size, model.bulk.minCellSize());
     if (model.bulk.degree() > 1) std::fprintf(f, " \"element_degree\": %d, \"element_size_m\": %.6g,\n", (int)model.bulk.degree(), model.bulk.minElementSize());
+    if (model.hysteresis) std::fprintf(f, " \"hysteretic_regions\": [%s],\n", hystereticRegionsJson(model.materials).c_str());
     std::fprintf(f, " \"input_top_frequency_hz\": %.6g, \"time_step_s\": %.10g}\n", model.bc.input.active() ? model.bc.input.topFrequency() : 0.0, dt);
     std::fclose(f);
   }

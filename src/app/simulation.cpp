@@ -183,6 +183,7 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
     PetscCall(porous::PorePressureTotal(r->model.pore));
     PetscCall(r->stations.SamplePressure(r->model.pore->pdm, r->model.pore->p_total, r->model.pore->p));
   }
+  PetscCall(r->stations.SampleStress(r->model.bulk, r->model.initial_stress, r->model.hysteresis));
   if (r->ledger.evaluated) PetscCall(appendEnergyRow(r, step, t));
   bool due;
   PetscCall(r->frames.WriteIfDue(r->model, step, t, last, u, v, a, &due));

@@ -377,31 +377,46 @@ void BulkOperator::elementStiffness(PetscInt e, double *K) const {
 }
 
 void BulkOperator::cellStress(const PetscScalar *u, PetscScalar *stress) const {
+  double sigma[kStressComponents];
+  for (PetscInt c = 0; c < ncell_; ++c) {
+    cellStress(c, u, sigma);
+    for (int k = 0; k < kStressComponents; ++k) stress[c * kStressComponents + k] = sigma[k];
+  }
+}
+
+void BulkOperator::cellStress(PetscInt c, const PetscScalar *u, double *sigma) const { cellTensor(c, u, nullptr, sigma); }
+
+// The strain is the stress of a material with lambda = 0 and mu = 1/2 (sigma = 2 mu eps), so
+// it comes from the stress's own kernels at the same point.
+void BulkOperator::cellStrain(PetscInt c, const PetscScalar *u, double *eps) const {
+  const LameParameters half{0.0, 0.5};
+  cellTensor(c, u, &half, eps);
+}
+
+void BulkOperator::cellTensor(PetscInt c, const PetscScalar *u, const LameParameters *lame, double *out) const {
   if (degree_ > 1) {
     // The sub-cell's centre in the element's reference coordinates: the mean of its corner
     // GLL points along each direction.
-    double x[numerics::kMaxSpectralDegree + 1], w[numerics::kMaxSpectralDegree + 1], sigma[kStressComponents];
+    double x[numerics::kMaxSpectralDegree + 1], w[numerics::kMaxSpectralDegree + 1], xi[3];
     numerics::gllPointsWeights(degree_, x, w);
-    for (PetscInt c = 0; c < ncell_; ++c) {
-      PetscInt pos = cell_position_[c];
-      double   xi[3];
-      for (PetscInt d = 0; d < dim_; ++d, pos /= degree_) xi[d] = 0.5 * (x[pos % degree_] + x[pos % degree_ + 1]);
-      spectral_.stressAt(cell_element_[c], xi, u, sigma);
-      for (int k = 0; k < kStressComponents; ++k) stress[c * kStressComponents + k] = sigma[k];
-    }
+    PetscInt pos = cell_position_[c];
+    for (PetscInt d = 0; d < dim_; ++d, pos /= degree_) xi[d] = 0.5 * (x[pos % degree_] + x[pos % degree_ + 1]);
+    spectral_.stressAt(cell_element_[c], xi, u, out, lame);
     return;
   }
   const PetscInt n = nen_ * dim_;
-  double         ue[kMaxCellDofs];
-  for (PetscInt c = 0; c < ncell_; ++c) {
-    for (PetscInt a = 0; a < nen_; ++a)
-      for (PetscInt i = 0; i < dim_; ++i) ue[a * dim_ + i] = PetscRealPart(u[cell_dofs_[c * nen_ + a] + i]);
-    const double *S = &stress_op_[(size_t)cell_matrix_[c] * kStressComponents * n];
-    for (int k = 0; k < kStressComponents; ++k) {
-      double s = 0;
-      for (PetscInt j = 0; j < n; ++j) s += S[k * n + j] * ue[j];
-      stress[c * kStressComponents + k] = s;
-    }
+  double         ue[kMaxCellDofs], own[kStressComponents * kMaxCellDofs];
+  for (PetscInt a = 0; a < nen_; ++a)
+    for (PetscInt i = 0; i < dim_; ++i) ue[a * dim_ + i] = PetscRealPart(u[cell_dofs_[c * nen_ + a] + i]);
+  const double *S = &stress_op_[(size_t)cell_matrix_[c] * kStressComponents * n];
+  if (lame) {
+    elementStressOperator(shape_, cellCoordinates(c), *lame, own);
+    S = own;
+  }
+  for (int k = 0; k < kStressComponents; ++k) {
+    double s = 0;
+    for (PetscInt j = 0; j < n; ++j) s += S[k * n + j] * ue[j];
+    out[k] = s;
   }
 }
 

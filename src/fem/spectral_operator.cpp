@@ -218,12 +218,12 @@ void SpectralOperator::elementStiffness(PetscInt e, double *K) const {
   spectralElementStiffness((int)dim_, (int)degree_, &wdet_[(size_t)r * nq_], &jinv_[(size_t)r * nq_ * dim_ * dim_], record_material_[r].lame, K);
 }
 
-void SpectralOperator::stressAt(PetscInt e, const double *xi, const PetscScalar *u, double *sigma) const {
+void SpectralOperator::stressAt(PetscInt e, const double *xi, const PetscScalar *u, double *sigma, const LameParameters *lame) const {
   double ue[kMaxSpectralDofs];
   for (PetscInt a = 0; a < nq_; ++a)
     for (PetscInt c = 0; c < dim_; ++c) ue[a * dim_ + c] = PetscRealPart(u[node_offset_[e * nq_ + a] + c]);
   // Setup checked the map at the nodes; the degree-p map of a valid element stays regular inside.
-  spectralStress((int)dim_, (int)degree_, elementCoordinates(e), record_material_[record_[e]].lame, ue, xi, sigma);
+  spectralStress((int)dim_, (int)degree_, elementCoordinates(e), lame ? *lame : record_material_[record_[e]].lame, ue, xi, sigma);
 }
 
 } // namespace slipwave::fem

@@ -5,6 +5,7 @@
 #include <fcntl.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <climits>
 #include <cmath>
@@ -21,6 +22,7 @@
 #include "slipwave/core/option_rules.hpp"
 #include "slipwave/core/options_check.hpp"
 #include "slipwave/fem/spectral_kernels.hpp"
+#include "slipwave/io/volume_output.hpp"
 #include "slipwave/io/whole_write.hpp"
 #include "slipwave/mesh/spectral_layout.hpp"
 
@@ -136,6 +138,7 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const meshi
                                     nullptr));
   PetscCall(core::OptionsChoice(PetscOptionsObject, "-station_side", "side recorded by a station on an interface (split nodes): structure or soil", sides, 2, &side,
                                 nullptr));
+  PetscCall(PetscOptionsBool("-station_stress", "also record the stress [Pa] and strain [-] of the cell holding each station", "Stations::Setup", stress_, &stress_, nullptr));
   PetscOptionsEnd();
   if (has_file) PetscCall(readStationFile(comm, file, dim_, &names_, &coords_));
   if (has_coords) {
@@ -189,21 +192,33 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const meshi
         if (touch[k] == 3 && region == (side == 0 ? mesh.interfaces[k].structure_region : mesh.interfaces[k].soil_region)) return 0;
       return 1;
     };
-    PetscInt found = -1, best = 2;
+    // Among the cells holding the point, the one of lowest key (priority, then its centroid's
+    // x, y, z) owns the station: the same cell on any partition, so that its stress and strain
+    // (-station_stress, discontinuous between cells) do not depend on it; ties (a cell on two
+    // ranks) go to the lowest rank. Key[0] = 3: no cell on this rank.
+    using Key = std::array<double, 4>;
+    auto keyOf = [&](PetscInt c) {
+      Key k = {(double)priority(c), 0, 0, 0};
+      for (PetscInt a = 0; a < nen; ++a)
+        for (PetscInt d = 0; d < dim_; ++d) k[1 + d] += bulk.cellCoordinates(c)[a * dim_ + d] / nen;
+      return k;
+    };
+    Key      mine  = {3, 0, 0, 0};
+    PetscInt found = -1;
     double   xi[3] = {0, 0, 0};
     for (size_t h = 0; h < holding.size(); ++h)
-      if (priority(holding[h]) < best) {
-        best  = priority(holding[h]);
+      if (keyOf(holding[h]) < mine) {
+        mine  = keyOf(holding[h]);
         found = holding[h];
         std::copy(&xis[3 * h], &xis[3 * h] + 3, xi);
       }
-    // The lowest key (priority, rank) owns the station: the same choice on any partition.
-    PetscMPIInt claim = found >= 0 ? (PetscMPIInt)(best * size + rank) : 2 * size, key;
-    PetscCallMPI(MPI_Allreduce(&claim, &key, 1, MPI_INT, MPI_MIN, comm));
+    std::vector<Key> keys(size);
+    PetscCallMPI(MPI_Allgather(mine.data(), 4, MPI_DOUBLE, keys.data(), 4, MPI_DOUBLE, comm));
+    const PetscMPIInt owner = (PetscMPIInt)(std::min_element(keys.begin(), keys.end()) - keys.begin());
     char point[96];
     if (dim_ == 3) std::snprintf(point, sizeof point, "(%g, %g, %g)", x[0], x[1], x[2]);
     else std::snprintf(point, sizeof point, "(%g, %g)", x[0], x[1]);
-    PetscCheck(key < 2 * size, comm, PETSC_ERR_USER_INPUT, "station '%s' at %s lies outside the mesh; allowed: points inside the mesh", names_[s].c_str(), point);
+    PetscCheck(keys[owner][0] < 3, comm, PETSC_ERR_USER_INPUT, "station '%s' at %s lies outside the mesh; allowed: points inside the mesh", names_[s].c_str(), point);
     for (size_t k = 0; k < nif; ++k)
       if (touch[k] == 3) {
         const auto &spec = mesh.interfaces[k];
@@ -213,10 +228,11 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const meshi
                       sides[1 - side]);
         ambiguities_.push_back(line);
       }
-    if (key == claim) {
+    if (rank == owner) {
       double N[8];
       Local  l;
       l.station = (PetscInt)s;
+      l.cell    = found;
       if (bulk.degree() > 1) PetscCall(elementWeights(dm, bulk, found, x, &l.offsets, &l.shape));
       else {
         numerics::shapeFunctions(shape, xi, N);
@@ -279,11 +295,33 @@ PetscErrorCode Stations::SamplePressure(DM pdm, Vec p_total, Vec p_excess) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Stations::SampleStress(const fem::BulkOperator &bulk, const std::vector<double> &initial_stress, const medium::Hysteresis *hysteresis) {
+  PetscFunctionBeginUser;
+  if (!stress_ || names_.empty()) PetscFunctionReturn(0);
+  PetscCall(PetscLogEventBegin(core::event_stations, 0, 0, 0, 0));
+  const PetscScalar *ul;
+  PetscCall(VecGetArrayRead(work_[0], &ul)); // Sample's u
+  for (Local &l : local_) {
+    double relaxation[fem::kStressComponents] = {}, sigma[fem::kStressComponents], eps[fem::kStressComponents];
+    if (hysteresis) medium::HysteresisCellRelaxation(hysteresis, ul, l.cell, relaxation);
+    CellStressShown(bulk, l.cell, ul, initial_stress, hysteresis ? relaxation : nullptr, sigma);
+    bulk.cellStrain(l.cell, ul, eps);
+    for (int k : stressColumns()) l.record.push_back(sigma[k]);
+    for (int k : strainColumns()) l.record.push_back(eps[k]);
+  }
+  PetscCall(VecRestoreArrayRead(work_[0], &ul));
+  PetscCall(PetscLogEventEnd(core::event_stations, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
 namespace {
 
-// The datasets of a station's group (time and the pore pressures: one column; the last two in
-// saturated scenes only).
-const char *const kDatasets[6] = {"time", "displacement", "velocity", "acceleration", "pore_pressure", "excess_pore_pressure"};
+// A dataset of a station's group: its columns [first, first + width) of the row; width 0: one
+// column as a 1D dataset.
+struct Dataset {
+  const char *name;
+  int         first, width;
+};
 
 // Rows per HDF5 chunk: a few KiB, so a short run's file stays small and a long one's appends
 // touch few chunks.
@@ -328,8 +366,8 @@ herr_t appendRows(hid_t dset, const std::vector<double> &rows, int width) {
 
 // Appends rows (per station, row-major, row values each) to the station groups of an HDF5 file,
 // created with its groups and empty extendible datasets first if create.
-PetscErrorCode appendRowsToFile(const std::string &path, bool create, const std::vector<std::string> &names, const std::vector<std::vector<double>> &rows, int row, int dim,
-                                bool pressure) {
+PetscErrorCode appendRowsToFile(const std::string &path, bool create, const std::vector<std::string> &names, const std::vector<std::vector<double>> &rows, int row,
+                                const std::vector<Dataset> &datasets) {
   PetscFunctionBeginUser;
   hid_t file = create ? H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT) : H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", path.c_str());
@@ -337,12 +375,12 @@ PetscErrorCode appendRowsToFile(const std::string &path, bool create, const std:
   for (size_t s = 0; s < names.size() && status >= 0; ++s) {
     hid_t        group = create ? H5Gcreate2(file, names[s].c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : H5Gopen2(file, names[s].c_str(), H5P_DEFAULT);
     const size_t nt    = rows[s].size() / row;
-    for (int q = 0; q < (pressure ? 6 : 4) && status >= 0; ++q) {
-      const int           width = q == 0 || q >= 4 ? 0 : dim;
-      std::vector<double> buf(nt * std::max(width, 1));
+    for (size_t q = 0; q < datasets.size() && status >= 0; ++q) {
+      const int           width = datasets[q].width, cols = std::max(width, 1);
+      std::vector<double> buf(nt * cols);
       for (size_t r = 0; r < nt; ++r)
-        for (int k = 0; k < std::max(width, 1); ++k) buf[r * std::max(width, 1) + k] = rows[s][r * row + (q == 0 ? 0 : q >= 4 ? 1 + 3 * dim + (q - 4) : 1 + (q - 1) * dim + k)];
-      hid_t dset = create ? createExtendible(group, kDatasets[q], width) : H5Dopen2(group, kDatasets[q], H5P_DEFAULT);
+        for (int k = 0; k < cols; ++k) buf[r * cols + k] = rows[s][r * row + datasets[q].first + k];
+      hid_t dset = create ? createExtendible(group, datasets[q].name, width) : H5Dopen2(group, datasets[q].name, H5P_DEFAULT);
       status     = dset < 0 ? (herr_t)-1 : appendRows(dset, buf, width);
       if (dset >= 0) H5Dclose(dset);
     }
@@ -400,6 +438,7 @@ PetscErrorCode Stations::Flush(MPI_Comm comm, const std::string &dir, bool last)
     PetscCheck(!error, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot create %s/stations: %s", dir.c_str(), error.message().c_str());
   }
   const char *axes = "xyz";
+  const char *const kComponents[6] = {"xx", "yy", "zz", "xy", "yz", "xz"};
   for (size_t s = 0; s < names_.size(); ++s) {
     const std::string path = dir + "/stations/" + names_[s] + ".csv";
     std::string       text;
@@ -408,7 +447,12 @@ PetscErrorCode Stations::Flush(MPI_Comm comm, const std::string &dir, bool last)
       text = "t";
       for (const char *q : {"u", "v", "a"})
         for (PetscInt d = 0; d < dim_; ++d) text += std::string(",") + q + "_" + axes[d];
-      text += has_pressure_ ? ",p,p_excess\n" : "\n";
+      if (has_pressure_) text += ",p,p_excess";
+      if (stress_) {
+        for (int k : stressColumns()) text += std::string(",s_") + kComponents[k];
+        for (int k : strainColumns()) text += std::string(",e_") + kComponents[k];
+      }
+      text += "\n";
     }
     for (size_t r = 0; r + row <= fresh[s].size(); r += row) {
       for (int k = 0; k < row; ++k) {
@@ -425,16 +469,21 @@ PetscErrorCode Stations::Flush(MPI_Comm comm, const std::string &dir, bool last)
   // rows and then trades names with stations.h5 in one atomic rename, so stations.h5 is always
   // a file that was closed whole.
   const std::string h5path = dir + "/stations.h5", spare = dir + "/" + kSpareName;
+  const int         dim = (int)dim_, after = 1 + 3 * dim + (has_pressure_ ? 2 : 0), nstress = (int)stressColumns().size();
+  // Time and the pore pressures: one column each; the pressures in saturated scenes only.
+  std::vector<Dataset> datasets = {{"time", 0, 0}, {"displacement", 1, dim}, {"velocity", 1 + dim, dim}, {"acceleration", 1 + 2 * dim, dim}};
+  if (has_pressure_) datasets.insert(datasets.end(), {{"pore_pressure", 1 + 3 * dim, 0}, {"excess_pore_pressure", 2 + 3 * dim, 0}});
+  if (stress_) datasets.insert(datasets.end(), {{"stress", after, nstress}, {"strain", after + nstress, (int)strainColumns().size()}});
   if (first) {
     const std::string partial = dir + "/.stations.h5.partial";
-    PetscCall(appendRowsToFile(partial, true, names_, fresh, row, (int)dim_, has_pressure_));
+    PetscCall(appendRowsToFile(partial, true, names_, fresh, row, datasets));
     PetscCheck(std::rename(partial.c_str(), h5path.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s: %s", h5path.c_str(), std::strerror(errno));
-    if (!last) PetscCall(appendRowsToFile(spare, true, names_, fresh, row, (int)dim_, has_pressure_));
+    if (!last) PetscCall(appendRowsToFile(spare, true, names_, fresh, row, datasets));
     previous_.assign(names_.size(), {});
   } else {
     std::vector<std::vector<double>> rows = previous_;
     for (size_t s = 0; s < names_.size(); ++s) rows[s].insert(rows[s].end(), fresh[s].begin(), fresh[s].end());
-    PetscCall(appendRowsToFile(spare, false, names_, rows, row, (int)dim_, has_pressure_));
+    PetscCall(appendRowsToFile(spare, false, names_, rows, row, datasets));
     PetscCall(exchangeFiles(spare, h5path));
     previous_ = std::move(fresh);
   }

@@ -6,6 +6,14 @@
 
 namespace slipwave::io {
 
+void CellStressShown(const fem::BulkOperator &bulk, PetscInt c, const PetscScalar *u_local, const std::vector<double> &initial_stress, const double *relaxation, double *s) {
+  bulk.cellStress(c, u_local, s);
+  for (int k = 0; k < fem::kStressComponents; ++k) {
+    if (!initial_stress.empty()) s[k] += initial_stress[c * fem::kStressComponents + k];
+    if (relaxation) s[k] -= relaxation[k];
+  }
+}
+
 PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir, const std::vector<std::pair<PetscInt, PetscReal>> *previous,
                                   Vec pore_layout, bool soil) {
   MPI_Comm     comm = PetscObjectComm((PetscObject)dm);
@@ -76,14 +84,12 @@ PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscIn
   PetscScalar       *s;
   PetscCall(VecGetArrayRead(u_local_, &ul));
   PetscCall(VecGetArray(stress_, &s));
-  bulk.cellStress(ul, s);
-  for (size_t k = 0; k < initial_stress.size(); ++k) s[k] += initial_stress[k];
+  for (PetscInt c = 0; c < bulk.cellCount(); ++c) CellStressShown(bulk, c, ul, initial_stress, soil ? &soil->relaxation_stress[c * fem::kStressComponents] : nullptr, &s[c * fem::kStressComponents]);
   if (soil) {
     PetscScalar *g, *ratio;
     PetscCall(VecGetArray(max_strain_, &g));
     PetscCall(VecGetArray(modulus_ratio_, &ratio));
     for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
-      for (int k = 0; k < fem::kStressComponents; ++k) s[c * fem::kStressComponents + k] -= soil->relaxation_stress[c * fem::kStressComponents + k];
       g[c]     = soil->max_shear_strain[c];
       ratio[c] = soil->modulus_ratio[c];
     }

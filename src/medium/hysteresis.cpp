@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <stdexcept>
 
@@ -36,14 +37,14 @@ inline int along(int q, int k, int m, int n1) {
 }
 
 // Runs fn(point index, element index k, point in the element, w |det J|, strain) over the
-// region's points on this rank.
+// points of the region's elements k in [first, last) on this rank (default: all of them).
 template <int Dim, class Fn>
-void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn) {
+void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first = 0, size_t last = SIZE_MAX) {
   constexpr int  kStrain = physics::HystereticLayout<Dim>::kStrain;
   const PetscInt nen = h.nodes, nq = reg.points;
   const int      n1  = (int)h.degree + 1;
   std::vector<double> u((size_t)nen * Dim);
-  for (size_t k = 0; k < reg.dofs.size() / nen; ++k) {
+  for (size_t k = first; k < std::min(last, reg.dofs.size() / nen); ++k) {
     for (PetscInt a = 0; a < nen; ++a)
       for (int i = 0; i < Dim; ++i) u[a * Dim + i] = PetscRealPart(u_local[reg.dofs[k * nen + a] + i]);
     for (PetscInt q = 0; q < nq; ++q) {
@@ -161,23 +162,35 @@ double relaxationEnergy(const Hysteresis *h, const PetscScalar *u_local) {
   return sum;
 }
 
+// The mean relaxation stress (6) over the points of the region's elements [first, last) and
+// their largest strain, per element, at the committed state.
 template <int Dim>
-void cellFields(const Hysteresis *h, const PetscScalar *u_local, double *relaxation, double *max_strain, double *modulus_ratio) {
+void elementFields(const HystereticRegion &reg, const Hysteresis &h, const PetscScalar *u_local, size_t first, size_t last, double *mean, double *largest) {
   constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
-  for (size_t g = 0; g < h->regions.size(); ++g) {
-    const HystereticRegion &reg = h->regions[g];
-    const int               size = physics::hystereticStateSize<Dim>(*reg.model);
-    const size_t            nel = reg.elements.size();
-    // Per element of the region: the mean relaxation stress and the largest strain.
-    std::vector<double> mean(6 * nel, 0.0), largest(nel, 0.0);
-    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t k, int, double, const double *eps) {
+  const int     size    = physics::hystereticStateSize<Dim>(*reg.model);
+  std::fill(mean, mean + 6 * (last - first), 0.0);
+  std::fill(largest, largest + (last - first), 0.0);
+  forEachPoint<Dim>(
+    h, reg, u_local,
+    [&](size_t p, size_t k, int, double, const double *eps) {
       double sigma[kStress], r[6];
       // Evaluate only (no state out): the committed state stays as it is.
       physics::hystereticUpdate<Dim>(*reg.model, &reg.committed[p * size], eps, sigma, nullptr);
       relaxationStress<Dim>(reg, eps, sigma, r);
-      for (int j = 0; j < 6; ++j) mean[6 * k + j] += r[j] / reg.points;
-      largest[k] = std::max(largest[k], physics::maxShearStrain<Dim>(*reg.model, &reg.committed[p * size]));
-    });
+      for (int j = 0; j < 6; ++j) mean[6 * (k - first) + j] += r[j] / reg.points;
+      largest[k - first] = std::max(largest[k - first], physics::maxShearStrain<Dim>(*reg.model, &reg.committed[p * size]));
+    },
+    first, last);
+}
+
+template <int Dim>
+void cellFields(const Hysteresis *h, const PetscScalar *u_local, double *relaxation, double *max_strain, double *modulus_ratio) {
+  for (size_t g = 0; g < h->regions.size(); ++g) {
+    const HystereticRegion &reg = h->regions[g];
+    const size_t            nel = reg.elements.size();
+    // Per element of the region: the mean relaxation stress and the largest strain.
+    std::vector<double> mean(6 * nel), largest(nel);
+    elementFields<Dim>(reg, *h, u_local, 0, nel, mean.data(), largest.data());
     // To the cells: at degree p > 1 every sub-cell of an element shows the element's values.
     for (size_t c = 0; c < h->cell_element.size(); ++c) {
       const auto [region, k] = h->element_place[h->cell_element[c]];
@@ -353,6 +366,14 @@ double HysteresisRelaxationEnergy(const Hysteresis *h, const PetscScalar *u_loca
 void HysteresisCellFields(const Hysteresis *h, const PetscScalar *u_local, double *relaxation, double *max_strain, double *modulus_ratio) {
   if (h->dim == 2) cellFields<2>(h, u_local, relaxation, max_strain, modulus_ratio);
   else cellFields<3>(h, u_local, relaxation, max_strain, modulus_ratio);
+}
+
+void HysteresisCellRelaxation(const Hysteresis *h, const PetscScalar *u_local, PetscInt cell, double *relaxation) {
+  const auto [region, k] = h->element_place[h->cell_element[cell]];
+  if (region < 0) return;
+  double largest;
+  if (h->dim == 2) elementFields<2>(h->regions[region], *h, u_local, (size_t)k, (size_t)k + 1, relaxation, &largest);
+  else elementFields<3>(h->regions[region], *h, u_local, (size_t)k, (size_t)k + 1, relaxation, &largest);
 }
 
 std::vector<std::string> HysteresisReport(const std::vector<RegionMaterialInfo> &materials) {

@@ -4,13 +4,15 @@
 # The soil's committed states are restored as they are and the update is deterministic, so
 # B must equal C byte for byte: energy.csv (with hysteretic_dissipated) and the stations, and
 # every volume frame (with max_shear_strain and secant_modulus_ratio) with zero difference
-# (as tests/cases/restart.sh).
+# (as tests/cases/restart.sh). The stations record their cell's stress and strain
+# (-station_stress): the checkpoint carries those columns with the rest of the rows.
 set -eu
 . tests/tools/lib.sh
 O="-mesh_box_faces 12,8 -mesh_box_upper 30,20 -regions soil,block -region_block_box 10,20,10,20 -material_soil_rho 1800 -material_soil_vp 600
   -material_soil_vs 250 -material_soil_model hysteretic -material_soil_backbone mkz -material_soil_reference_strain 3e-4 -material_soil_curvature 0.9
   -material_soil_strength 6e4 -material_block_rho 2500 -material_block_E 3e10 -material_block_nu 0.2 -initial_velocity 0.1,0.05
-  -bc_bottom_type fixed -ts_max_time 1e9 -output_interval 0.1 -progress_interval 1000 -station_coordinates 5,20,15,20,25,10 -station_names a,b,c"
+  -bc_bottom_type fixed -ts_max_time 1e9 -output_interval 0.1 -progress_interval 1000 -station_coordinates 5,20,15,20,25,10 -station_names a,b,c
+  -station_stress true"
 $SW $O -ts_max_steps 2000 -output_dir "$WORK/C" > /dev/null
 $SW $O -ts_max_steps 1000 -checkpoint_interval 1000 -output_dir "$WORK/A" > /dev/null
 cp -r "$WORK/A" "$WORK/B"
@@ -18,6 +20,7 @@ $SW $O -ts_max_steps 2000 -restart "$WORK/B/checkpoint.bin" -output_dir "$WORK/B
 head -1 "$WORK/B/energy.csv" | grep -q ",hysteretic_dissipated$"
 cmp "$WORK/B/energy.csv" "$WORK/C/energy.csv"
 for s in a b c; do cmp "$WORK/B/stations/$s.csv" "$WORK/C/stations/$s.csv"; done
+head -1 "$WORK/B/stations/a.csv" | grep -q ",s_xx,s_yy,s_zz,s_xy,e_xx,e_yy,e_xy$"
 echo "restart: energy.csv and stations a, b, c byte for byte equal to the straight run"
 $PY - "$WORK" <<'PY'
 import sys

@@ -84,8 +84,9 @@ def stations_equal(args):
             return 1
         # Each quantity (u, v, a) is scaled by its peak over all components: a component that
         # is zero up to round-off (u_y of a vertically incident SV wave) has no scale of its own.
-        # p: the pore pressure column of saturated scenes, absent elsewhere.
-        for q in ("t", "u", "v", "a", "p"):
+        # p: the pore pressure column of saturated scenes; s, e: the stress and strain of
+        # -station_stress; absent elsewhere.
+        for q in ("t", "u", "v", "a", "p", "s", "e"):
             cols = [c for c in a.names if c == q or c.startswith(q + "_")]
             if not cols:
                 continue
@@ -96,7 +97,7 @@ def stations_equal(args):
                     worst_a = max(worst_a, diff)
                 else:
                     worst = max(worst, diff)
-    print(f"stations: largest difference {worst:.3e} of each quantity's peak for t, u, v, p (bound {args.tol:.1e}), {worst_a:.3e} for a (bound {tol_a:.1e})")
+    print(f"stations: largest difference {worst:.3e} of each quantity's peak for t, u, v, p, s, e (bound {args.tol:.1e}), {worst_a:.3e} for a (bound {tol_a:.1e})")
     return 0 if worst <= args.tol and worst_a <= tol_a else 1
 
 

@@ -30,6 +30,20 @@ def hyperbola(gmax, g_r):
     return lambda g: gmax * g / (1 + np.abs(g) / g_r)
 
 
+def masing_loop(args):
+    """The strain-controlled loop of `loop` in closed form: (gamma(t), Masing tau(t), largest
+    gamma up to t, gamma_m, tau_m, e the N-surface error) for scalar or array t."""
+    gmax, g_r, A, f, H = args.gmax, args.reference_strain, args.amplitude, args.f0, args.height
+    F = hyperbola(gmax, g_r)
+    gm, T = A / (np.pi * f * H), 1 / f
+    tau_m, tau0 = F(gm), F(gm) - 2 * F(gm / 2)
+    e = math.log((0.1 / 1e-6) ** (1 / (args.surfaces - 1))) ** 2 / 16
+    gamma = lambda t: A * (1 - np.cos(2 * np.pi * f * t)) / (2 * np.pi * f * H)  # noqa: E731
+    tau = lambda t: np.where(t <= T / 2, F(gamma(t)), np.where(t <= T, tau_m - 2 * F((gm - gamma(t)) / 2), tau0 + 2 * F(gamma(t) / 2)))  # noqa: E731
+    largest = lambda t: np.where(t <= T / 2, gamma(t), gm)  # noqa: E731
+    return gamma, tau, largest, gm, tau_m, e
+
+
 def loop(args):
     d = read_csv(args.csv)
     gmax, g_r, A, f, H = args.gmax, args.reference_strain, args.amplitude, args.f0, args.height
@@ -92,17 +106,12 @@ def frames(args):
     sys.path.insert(0, "tests/tools")
     from frames import Frames
     f = Frames(args.dir)
-    gmax, g_r, A, fr, H = args.gmax, args.reference_strain, args.amplitude, args.f0, args.height
-    F = hyperbola(gmax, g_r)
-    gm, T = A / (np.pi * fr * H), 1 / fr
-    tau_m, tau0 = F(gm), F(gm) - 2 * F(gm / 2)
-    e = math.log((0.1 / 1e-6) ** (1 / (args.surfaces - 1))) ** 2 / 16
+    _, tau, largest, gm, tau_m, e = masing_loop(args)
+    g_r = args.reference_strain
     worst_tau = worst_g = worst_ratio = 0.0
     for k, t in enumerate(f.times):
-        g = A * (1 - np.cos(2 * np.pi * fr * t)) / (2 * np.pi * fr * H)
-        expect = F(g) if t <= T / 2 else (tau_m - 2 * F((gm - g) / 2) if t <= T else tau0 + 2 * F(g / 2))
-        g_max = g if t <= T / 2 else gm
-        worst_tau = max(worst_tau, abs(f.field("stress", k)[0][1] - expect) / tau_m)
+        g_max = largest(t)
+        worst_tau = max(worst_tau, abs(f.field("stress", k)[0][1] - tau(t)) / tau_m)
         worst_g = max(worst_g, abs(f.field("max_shear_strain", k)[0][0] - g_max) / gm)
         ratio = 1 / (1 + g_max / g_r)
         worst_ratio = max(worst_ratio, abs(f.field("secant_modulus_ratio", k)[0][0] - ratio))
@@ -111,6 +120,35 @@ def frames(args):
     print(f"frames: {len(f.times)} frames; stress xy within {worst_tau:.2e} of tau_m of the Masing closed forms (bound 2 e = {2 * e:.2e}); "
           f"max_shear_strain within {worst_g:.2e} of gamma_m (bound 1e-5); secant G/Gmax within {worst_ratio:.2e} (bound e = {e:.2e})")
     return 0 if worst_tau <= 2 * e and worst_g <= 1e-5 and worst_ratio <= e + 1e-5 and len(f.times) >= 7 else 1
+
+
+def station(args):
+    """A station in the same loop run's cell (-station_stress): every step, its engineering
+    shear strain 2 e_xy against gamma(t) (bound 1e-5 of gamma_m, the time step's, as in
+    `frames`) and its s_xy against the Masing closed forms (bound 2 e, as `loop`); the other
+    strains zero (the top moves in x only: 1e-12 of gamma_m); and at each volume frame its
+    stress equal to the frame's cell stress (the same path, io/volume_output.cpp: 1e-12)."""
+    sys.path.insert(0, "tests/tools")
+    from frames import Frames
+    from slipwave import RunFolder
+    d = RunFolder(args.dir).station(args.name)
+    gamma, tau, _, gm, tau_m, e = masing_loop(args)
+    t = d["t"]
+    err_g = np.max(np.abs(2 * d["e_xy"] - gamma(t))) / gm
+    err_tau = np.max(np.abs(d["s_xy"] - tau(t))) / tau_m
+    others = max(np.max(np.abs(d[c])) for c in d.names if c.startswith("e_") and c != "e_xy") / gm
+    f = Frames(args.dir)
+    components = [c for c in d.names if c.startswith("s_")]
+    order = {"s_xx": 0, "s_yy": 4, "s_zz": 8, "s_xy": 1, "s_yz": 5, "s_xz": 2}  # row-major 3 x 3 of the frames
+    err_frame = 0.0
+    for k, tf in enumerate(f.times):
+        row = int(np.argmin(np.abs(t - tf)))
+        for c in components:
+            err_frame = max(err_frame, abs(d[c][row] - f.field("stress", k)[0][order[c]]) / tau_m)
+    print(f"station: {len(t)} rows; 2 e_xy within {err_g:.2e} of gamma_m of gamma(t) (bound 1e-5); s_xy within {err_tau:.2e} of tau_m of the "
+          f"Masing closed forms (bound 2 e = {2 * e:.2e}); other strains {others:.1e} of gamma_m (bound 1e-12); stress at {len(f.times)} frames "
+          f"within {err_frame:.1e} of tau_m of the volume output's (bound 1e-12)")
+    return 0 if err_g <= 1e-5 and err_tau <= 2 * e and others <= 1e-12 and err_frame <= 1e-12 and len(f.times) >= 7 else 1
 
 
 def ricker(t, amplitude, f0, t0):
@@ -215,12 +253,18 @@ def main():
     for name in ("gmax", "reference-strain", "amplitude", "f0", "height"):
         q.add_argument("--" + name, type=float, required=True)
     q.add_argument("--surfaces", type=int, required=True)
+    q = sub.add_parser("station")
+    q.add_argument("dir")
+    q.add_argument("name")
+    for name in ("gmax", "reference-strain", "amplitude", "f0", "height"):
+        q.add_argument("--" + name, type=float, required=True)
+    q.add_argument("--surfaces", type=int, required=True)
     q = sub.add_parser("column")
     q.add_argument("station")
     for name in ("height", "layer-bottom", "rho", "speed", "reference-strain", "amplitude", "f0", "t0", "dz", "l2-max"):
         q.add_argument("--" + name, type=float, required=True)
     a = p.parse_args()
-    return {"loop": loop, "frames": frames, "column": column}[a.cmd](a)
+    return {"loop": loop, "frames": frames, "station": station, "column": column}[a.cmd](a)
 
 
 if __name__ == "__main__":

@@ -18,7 +18,8 @@ namespace slipwave::app {
 PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::StableStep &limit, const io::Stations &stations, PetscReal dt, PetscReal max_time,
                            const std::string &output_dir);
 
-// Rank 0: OUTPUT_DIR/run_info.json (resolved frequency, h_min, input top frequency, dt).
+// Rank 0: OUTPUT_DIR/run_info.json (resolved frequency, h_min, input top frequency, dt; with
+// hysteretic soil, each region's backbone and the parameters it was built from).
 void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt);
 
 // The interfaces' final states, the contact dashpots' work, steps and wall time, the energy

@@ -66,6 +66,10 @@ public:
   // Stress (6 per cell: xx,yy,zz,xy,yz,xz) at the centroid of each of this rank's cells, in cell
   // order (degree > 1: by the element's basis at the sub-cell's centre).
   void cellStress(const PetscScalar *u_local, PetscScalar *stress) const;
+  // The same for cell c alone (6 values), and the small-strain tensor there (6 tensor
+  // components in the same order; 2D: zz = yz = xz = 0, plane strain).
+  void cellStress(PetscInt c, const PetscScalar *u_local, double *stress) const;
+  void cellStrain(PetscInt c, const PetscScalar *u_local, double *strain) const;
 
   PetscInt  dimension() const { return dim_; }
   PetscInt  nodesPerCell() const { return nen_; }
@@ -100,6 +104,8 @@ public:
   double    regionElementSize(PetscInt region) const { return region_element_size_[region]; }
 
 private:
+  // cellStress of cell c with the region's moduli (lame null) or with *lame.
+  void           cellTensor(PetscInt c, const PetscScalar *u_local, const LameParameters *lame, double *out) const;
   PetscErrorCode setupSpectral(DM dm, const mesh::SpectralLayout &layout, const std::vector<RegionMaterial> &materials);
 
   PetscInt              dim_ = 0, nen_ = 0, ncell_ = 0, local_size_ = 0;

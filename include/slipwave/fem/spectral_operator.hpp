@@ -54,8 +54,9 @@ public:
   // Element matrix of element e: (dim (p+1)^dim)^2 values row-major, row a*dim+i (node-major),
   // the operator addStiffnessTimes applies (for assembling K where a static solve needs it).
   void elementStiffness(PetscInt e, double *K) const;
-  // Stress (xx, yy, zz, xy, yz, xz) in element e at the reference point xi.
-  void stressAt(PetscInt e, const double *xi, const PetscScalar *u_local, double *sigma) const;
+  // Stress (xx, yy, zz, xy, yz, xz) in element e at the reference point xi; lame: other
+  // moduli than the element's (null: the element's).
+  void stressAt(PetscInt e, const double *xi, const PetscScalar *u_local, double *sigma, const LameParameters *lame = nullptr) const;
 
   PetscInt dimension() const { return dim_; }
   PetscInt degree() const { return degree_; }

@@ -10,9 +10,14 @@
 // a body) except on an interface, where the soil and the structure cells hold different
 // nodes of each split pair. There the station records the side -station_side chooses
 // (structure by default: a point on a foundation's base is usually there to see the
-// foundation slide and lift), whatever the partition: among the ranks whose cells hold the
-// point, the lowest one with a cell of that side. ambiguities() lists those stations for the
-// run report.
+// foundation slide and lift). ambiguities() lists those stations for the run report. Of the
+// cells holding the point (of that side) the station takes the one with the lowest centroid
+// (x, then y, z), whatever the partition.
+// -station_stress true adds the stress and strain of that cell (the stress the volume output
+// shows for it, io/volume_output.hpp: the cell's centroid, at degree p > 1 the element's basis
+// at the sub-cell's centre; the strain at the same point) as the last columns, s_* [Pa] and
+// e_* [-] (tensor components). A point on a cell face gets one of the cells' values: the
+// stress jumps there.
 #pragma once
 #include <petscdm.h>
 
@@ -20,6 +25,7 @@
 #include <vector>
 
 #include "slipwave/fem/bulk_operator.hpp"
+#include "slipwave/medium/hysteresis.hpp"
 #include "slipwave/meshing/mesh_builder.hpp"
 
 namespace slipwave::io {
@@ -41,6 +47,12 @@ public:
   // on a clone of dm) joins the row as columns p (total: hydrostatic + excess) and p_excess
   // [Pa], compression positive.
   PetscErrorCode SamplePressure(DM pdm, Vec p_total, Vec p_excess);
+  // With -station_stress, after Sample (and SamplePressure), closing the row: the stress of
+  // the station's cell as the volume output shows it (initial_stress: 6 per local cell, or
+  // empty; hysteresis: the hysteretic regions, or null), columns s_xx, s_yy, s_zz, s_xy
+  // (3D: and s_yz, s_xz) [Pa], and the strain of u there, e_xx, e_yy, e_xy (3D: e_xx, e_yy,
+  // e_zz, e_xy, e_yz, e_xz) [-], tensor components (the engineering shear strain is 2 e_xy).
+  PetscErrorCode SampleStress(const fem::BulkOperator &bulk, const std::vector<double> &initial_stress, const medium::Hysteresis *hysteresis);
   // Collective: appends the rows sampled since the last flush to the station files; last: the
   // run's final flush.
   PetscErrorCode Flush(MPI_Comm comm, const std::string &dir, bool last);
@@ -52,11 +64,16 @@ public:
   // A restart of a saturated scene: the records to load have the pore pressure columns.
   void expectPressure() { has_pressure_ = true; }
   size_t localStations() const { return local_.size(); }
-  int    rowWidth() const { return 1 + 3 * (int)dim_ + (has_pressure_ ? 2 : 0); }
+  int    rowWidth() const { return 1 + 3 * (int)dim_ + (has_pressure_ ? 2 : 0) + (stress_ ? (int)(stressColumns().size() + strainColumns().size()) : 0); }
 
 private:
+  // The components of the 6 (xx, yy, zz, xy, yz, xz) recorded: those not zero in plane strain.
+  std::vector<int> stressColumns() const { return dim_ == 2 ? std::vector<int>{0, 1, 2, 3} : std::vector<int>{0, 1, 2, 3, 4, 5}; }
+  std::vector<int> strainColumns() const { return dim_ == 2 ? std::vector<int>{0, 1, 3} : std::vector<int>{0, 1, 2, 3, 4, 5}; }
+
   struct Local {
     PetscInt            station;
+    PetscInt            cell;          // the local cell holding the point
     std::vector<PetscInt> offsets; // local dof offsets of the cell's (degree > 1: the element's) nodes
     std::vector<double> shape;     // shape function (basis) values at the station
     std::vector<double> record;    // rows of t, u[dim], v[dim], a[dim]
@@ -71,6 +88,7 @@ private:
   std::vector<std::vector<double>> previous_;  // rank 0: the last flush's rows, not yet in the spare stations.h5
   Vec                      pressure_local_[2] = {nullptr, nullptr};
   bool                     has_pressure_ = false;
+  PetscBool                stress_       = PETSC_FALSE; // -station_stress
 };
 
 } // namespace slipwave::io

@@ -20,6 +20,12 @@ struct SoilCellOutput {
   const double *relaxation_stress, *max_shear_strain, *modulus_ratio;
 };
 
+// The stress the volume output shows in local cell c (6: xx, yy, zz, xy, yz, xz): the linear
+// stress of u_local (fem::BulkOperator::cellStress), plus initial_stress (6 per local cell, or
+// empty), less relaxation (the cell's 6 values of SoilCellOutput::relaxation_stress, or null).
+// The stations record the same stress (io/stations.hpp).
+void CellStressShown(const fem::BulkOperator &bulk, PetscInt c, const PetscScalar *u_local, const std::vector<double> &initial_stress, const double *relaxation, double *s);
+
 class VolumeOutput {
 public:
   // previous: output steps (step, time) already in DIR/volume.h5 to keep (a restart), or null.

@@ -90,6 +90,9 @@ double HysteresisRelaxationEnergy(const Hysteresis *h, const PetscScalar *u_loca
 // the soil's; max_strain the largest equivalent shear strain any of its points reached;
 // modulus_ratio the model's secant G/Gmax at that strain.
 void HysteresisCellFields(const Hysteresis *h, const PetscScalar *u_local, double *relaxation, double *max_strain, double *modulus_ratio);
+// The relaxation of HysteresisCellFields for local cell `cell` alone (6 values; untouched if
+// the cell is not hysteretic), at the cost of its element's points (a station, every step).
+void HysteresisCellRelaxation(const Hysteresis *h, const PetscScalar *u_local, PetscInt cell, double *relaxation);
 // Run report lines: per hysteretic region its backbone, parameters, surfaces and their fit.
 std::vector<std::string> HysteresisReport(const std::vector<RegionMaterialInfo> &materials);
 
