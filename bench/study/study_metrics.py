@@ -3,11 +3,12 @@
 
 usage: /usr/bin/python3 bench/study/study_metrics.py OUT [--json FILE]
 
-scene_metrics.py's numbers, plus: the block-top 5 %-damped PSA at 0.1, 0.3, 1 s, the
-largest single excursion of the mean tangential jump (max - min of the mean slip over time),
-the peak accelerations of block_top and free_field low-passed at the mesh's resolved
-frequency vs_min/(8 h) (4th-order Butterworth, zero phase, in the frequency domain), and the
-share of acceleration power above that frequency at every station.
+scripts/scene_metrics.py's answers, plus the names the study's tables were first written with
+(bench/study/study_table.py): f_resolved (vs_min/(8 h)), block_top_peak_lowpass and
+free_field_peak_lowpass (scene_metrics' ..._peak_acceleration_lowpassed at that frequency),
+hf_<station> and hf_y_<station> (its high_frequency_share_<station>[_y]), largest_excursion
+(its mean_slip_range: max - min of the mean tangential jump) and slip_peak_abs (the largest
+|mean tangential jump|).
 """
 import argparse
 import json
@@ -20,18 +21,7 @@ SCRIPTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "
 sys.path.insert(0, SCRIPTS)
 sys.path.insert(0, os.path.join(SCRIPTS, "..", "python"))
 import scene_metrics as sm  # noqa: E402
-from response_spectrum import pseudo_acceleration_spectrum, resample_uniform  # noqa: E402
 from slipwave import RunFolder  # noqa: E402
-
-STATIONS = ("block_top", "block_base", "block_base_left", "block_base_right", "free_field", "bedrock")
-
-
-def low_passed_peak(t, a, f_cut):
-    dt, acc = resample_uniform(t, a)
-    spec = np.fft.rfft(acc)
-    f = np.fft.rfftfreq(len(acc), dt)
-    gain = 1.0 / (1.0 + (f / f_cut) ** 8)  # |Butterworth 4|^2: zero phase
-    return float(np.max(np.abs(np.fft.irfft(spec * gain, len(acc)))))
 
 
 def main():
@@ -41,21 +31,14 @@ def main():
     args = p.parse_args()
     run = RunFolder(args.out)
     m = sm.metrics(args.out)
-    f_cut = sm.resolved_frequency(run)
-    m["f_resolved"] = f_cut
-    s = sm.station(run, "block_top")
-    dt, acc = resample_uniform(s["t"], s["a_x"])
-    for T, v in zip((0.1, 0.3, 1.0), pseudo_acceleration_spectrum(acc, dt, (0.1, 0.3, 1.0))):
-        m[f"block_top_psa_{T:g}s"] = float(v)
-    m["block_top_peak_lowpass"] = low_passed_peak(s["t"], s["a_x"], f_cut)
-    ff = sm.station(run, "free_field")
-    m["free_field_peak_lowpass"] = low_passed_peak(ff["t"], ff["a_x"], f_cut)
-    for name in STATIONS:
-        st = sm.station(run, name)
-        m[f"hf_{name}"] = sm.high_frequency_share(st["t"], st["a_x"], f_cut)
-        m[f"hf_y_{name}"] = sm.high_frequency_share(st["t"], st["a_y"], f_cut) if np.any(st["a_y"]) else 0.0
+    m["f_resolved"] = sm.resolved_frequency(run)
+    m["block_top_peak_lowpass"] = m["block_top_peak_acceleration_lowpassed"]
+    m["free_field_peak_lowpass"] = m["free_field_peak_acceleration_lowpassed"]
+    for key in [k for k in m if k.startswith("high_frequency_share_") and not k.endswith("_total")]:
+        station = key[len("high_frequency_share_"):]
+        m["hf_y_" + station[:-2] if station.endswith("_y") else "hf_" + station] = m[key]
+    m["largest_excursion"] = m["mean_slip_range"]
     mean_slip = run.interface("base").stacked(["slip"])["slip"][:, :, 0].mean(axis=1)
-    m["largest_excursion"] = float(mean_slip.max() - mean_slip.min())
     m["slip_peak_abs"] = float(np.max(np.abs(mean_slip)))
     for k, v in m.items():
         print(f"{k:32s} {v: .5g}")
