@@ -435,4 +435,29 @@ PetscErrorCode BulkStiffnessRowBounds(DM dm, const BulkOperator &bulk, Vec rows)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode BulkRegionNodes(DM dm, const BulkOperator &bulk, PetscInt region, Vec marks, Vec coords) {
+  Vec          mark_local, coord_local;
+  PetscScalar *m, *x;
+  const PetscInt dim = bulk.dimension(), nen = bulk.nodesPerCell();
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(dm, &mark_local));
+  PetscCall(DMGetLocalVector(dm, &coord_local));
+  PetscCall(VecZeroEntries(mark_local));
+  PetscCall(VecGetArray(mark_local, &m));
+  PetscCall(VecGetArray(coord_local, &x));
+  bulk.nodeCoordinates(x);
+  for (PetscInt c = 0; c < bulk.cellCount(); ++c)
+    if (bulk.cellRegion(c) == region)
+      for (PetscInt a = 0; a < nen; ++a)
+        for (PetscInt d = 0; d < dim; ++d) m[bulk.cellNodeOffset(c, a) + d] = 1;
+  PetscCall(VecRestoreArray(coord_local, &x));
+  PetscCall(VecRestoreArray(mark_local, &m));
+  PetscCall(VecZeroEntries(marks));
+  PetscCall(DMLocalToGlobal(dm, mark_local, ADD_VALUES, marks));
+  PetscCall(DMLocalToGlobal(dm, coord_local, INSERT_VALUES, coords));
+  PetscCall(DMRestoreLocalVector(dm, &coord_local));
+  PetscCall(DMRestoreLocalVector(dm, &mark_local));
+  PetscFunctionReturn(0);
+}
+
 } // namespace slipwave::fem

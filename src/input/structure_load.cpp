@@ -45,36 +45,6 @@ PetscErrorCode readStructureLoad(MPI_Comm comm, PetscInt dim, const std::vector<
   PetscFunctionReturn(0);
 }
 
-// Global vectors in the displacement layout: 1 on the dofs of the region's nodes, and the
-// nodes' coordinates.
-PetscErrorCode regionNodes(DM dm, const fem::BulkOperator &bulk, PetscInt region, Vec marks, Vec coords) {
-  Vec          mark_local, coord_local;
-  PetscScalar *m, *x;
-  const PetscInt dim = bulk.dimension(), nen = bulk.nodesPerCell();
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalVector(dm, &mark_local));
-  PetscCall(DMGetLocalVector(dm, &coord_local));
-  PetscCall(VecZeroEntries(mark_local));
-  PetscCall(VecGetArray(mark_local, &m));
-  PetscCall(VecGetArray(coord_local, &x));
-  for (PetscInt c = 0; c < bulk.cellCount(); ++c)
-    for (PetscInt a = 0; a < nen; ++a) {
-      const PetscInt off = bulk.cellNodeOffset(c, a);
-      for (PetscInt d = 0; d < dim; ++d) {
-        x[off + d] = bulk.cellCoordinates(c)[a * dim + d];
-        if (bulk.cellRegion(c) == region) m[off + d] = 1;
-      }
-    }
-  PetscCall(VecRestoreArray(coord_local, &x));
-  PetscCall(VecRestoreArray(mark_local, &m));
-  PetscCall(VecZeroEntries(marks));
-  PetscCall(DMLocalToGlobal(dm, mark_local, ADD_VALUES, marks));
-  PetscCall(DMLocalToGlobal(dm, coord_local, INSERT_VALUES, coords));
-  PetscCall(DMRestoreLocalVector(dm, &coord_local));
-  PetscCall(DMRestoreLocalVector(dm, &mark_local));
-  PetscFunctionReturn(0);
-}
-
 // pattern_i = F/N + theta x r_i on the marked nodes (see the header).
 PetscErrorCode rigidBodyForces(MPI_Comm comm, PetscInt dim, const StructureLoadOptions &o, Vec marks, Vec coords, Vec pattern, double centroid[3], double *count) {
   PetscInt           n;
@@ -137,7 +107,7 @@ PetscErrorCode StructureLoadCreate(DM dm, const fem::BulkOperator &bulk, const s
   PetscCall(VecDuplicate(marks, &coords));
   PetscCall(VecDuplicate(marks, &pattern));
   PetscCall(VecZeroEntries(pattern));
-  PetscCall(regionNodes(dm, bulk, region, marks, coords));
+  PetscCall(fem::BulkRegionNodes(dm, bulk, region, marks, coords));
   PetscCall(rigidBodyForces(comm, dim, o, marks, coords, pattern, centroid, &count));
   PetscCall(VecDestroy(&coords));
   PetscCall(VecDestroy(&marks));

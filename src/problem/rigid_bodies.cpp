@@ -9,24 +9,6 @@
 namespace slipwave::problem {
 namespace {
 
-// Global vector in the displacement layout: > 0 on the x dof of every node of region `region`.
-PetscErrorCode markRegionNodes(DM dm, const fem::BulkOperator &bulk, PetscInt region, Vec marks) {
-  Vec          local;
-  PetscScalar *m;
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalVector(dm, &local));
-  PetscCall(VecZeroEntries(local));
-  PetscCall(VecGetArray(local, &m));
-  for (PetscInt c = 0; c < bulk.cellCount(); ++c)
-    if (bulk.cellRegion(c) == region)
-      for (PetscInt a = 0; a < bulk.nodesPerCell(); ++a) m[bulk.cellNodeOffset(c, a)] = 1;
-  PetscCall(VecRestoreArray(local, &m));
-  PetscCall(VecZeroEntries(marks));
-  PetscCall(DMLocalToGlobal(dm, local, ADD_VALUES, marks));
-  PetscCall(DMRestoreLocalVector(dm, &local));
-  PetscFunctionReturn(0);
-}
-
 // A component held at every node of the body (-constrain_components) fixes the body's
 // translation along it and the rotations that would move it; held at some nodes only, or a
 // boundary dashpot on the body, stops the run: its supports are its interfaces and welded
@@ -109,24 +91,15 @@ PetscErrorCode RigidBodiesCreate(DM dm, const fem::BulkOperator &bulk, const std
   auto *rb = new RigidBodies;
   rb->comm = comm;
   rb->dim  = bulk.dimension();
-  Vec marks, coords, taken, local;
+  Vec marks, coords, taken;
   PetscCall(VecDuplicate(mass, &marks));
   PetscCall(VecDuplicate(mass, &coords));
   PetscCall(VecDuplicate(mass, &taken));
   PetscCall(VecZeroEntries(taken));
-  PetscCall(DMGetLocalVector(dm, &local));
-  {
-    PetscScalar *xl;
-    PetscCall(VecGetArray(local, &xl));
-    bulk.nodeCoordinates(xl);
-    PetscCall(VecRestoreArray(local, &xl));
-  }
-  PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, coords));
-  PetscCall(DMRestoreLocalVector(dm, &local));
   std::string first_rigid;
   for (size_t r = 0; r < materials.size(); ++r) {
     if (materials[r].model != medium::MaterialModel::Rigid) continue;
-    PetscCall(markRegionNodes(dm, bulk, (PetscInt)r, marks));
+    PetscCall(fem::BulkRegionNodes(dm, bulk, (PetscInt)r, marks, coords));
     // A node in two rigid regions would belong to two bodies.
     PetscScalar shared;
     PetscCall(VecDot(taken, marks, &shared)); // both >= 0: nonzero where a node is in both

@@ -125,5 +125,8 @@ private:
 // rows (global) = the row bounds of addStiffnessRowBounds summed over the ranks' cells:
 // K <= diag(rows), what every stable-step bound of the assembled problem starts from.
 PetscErrorCode BulkStiffnessRowBounds(DM dm, const BulkOperator &bulk, Vec rows);
+// Global vectors in the displacement layout: marks > 0 on every dof of the nodes of the
+// region's cells (each node once, whatever the partition), coords every node's coordinates.
+PetscErrorCode BulkRegionNodes(DM dm, const BulkOperator &bulk, PetscInt region, Vec marks, Vec coords);
 
 } // namespace slipwave::fem
