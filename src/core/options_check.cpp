@@ -16,7 +16,7 @@ bool readAtExit(const char *name) {
   return false;
 }
 
-// Options renamed for the consistent prefix scheme (see README.md, Options): the old name is
+// Options renamed for the consistent prefix scheme (see docs/options.md): the old name is
 // accepted, and reported, until the next release.
 struct RenamedOption {
   const char *old_name, *new_name;

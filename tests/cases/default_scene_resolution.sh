@@ -1,6 +1,6 @@
 # What of the default scene's answer does not depend on the numerics (issue 21, parts 1 and 3),
 # over its first 3 s (the record's peak at 2.1 s, the first slips, the largest uplift at
-# 2.4-3.0 s), on 2 ranks; the full 15 s study is in docs/convergence-study.md and README.
+# 2.4-3.0 s), on 2 ranks; the full 15 s study is in docs/convergence-study.md and docs/default-scene.md.
 #  1. The contact model: the interface twice as stiff (-interface_base_penalty_length 0.015,
 #     half the default width/200) moves every answer of scripts/scene_metrics.py by less
 #     than 5 % (the issue's bound; 15 s: slip path 4.7 %, the rest <= 1.5 %), except the

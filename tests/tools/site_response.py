@@ -22,7 +22,7 @@ G = 9.80665  # standard gravity [m/s^2], the record's unit
 def outcrop_velocity(path, pga_g):
     """(dt, velocity) of a record in g as slipwave applies it: baseline-corrected by removing the
     line c0 + c1 t that makes the integrated velocity and displacement end at zero, scaled to a
-    peak acceleration of pga_g, integrated by the trapezoid rule (README, "How a record is
+    peak acceleration of pga_g, integrated by the trapezoid rule (docs/features.md, "How a record is
     applied")."""
     d = np.loadtxt(path, delimiter=",", skiprows=1)
     t, a = d[:, 0], d[:, 1] * G

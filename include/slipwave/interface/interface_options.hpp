@@ -49,7 +49,7 @@ struct InterfaceOptions {
   // Fraction of each closed pair's critical normal damping. 0.1 removes the contact stress
   // ripple of the two-bar impact (48 % -> 0.02 %) and the energy the switching created
   // (2.3e-4 -> 0) while moving the exit velocities by 0.1 % and the step by 1.4 % in the
-  // default scene; larger ratios cost more step and raised the block's peaks there (README,
+  // default scene; larger ratios cost more step and raised the block's peaks there (docs/features.md,
   // interfaces).
   double contact_damping = 0.1;
 };
