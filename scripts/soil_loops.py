@@ -21,6 +21,8 @@ stations that record stress and strain (-station_stress true) in it. Figures go 
 The region's parameters come from OUT/run_info.json ("hysteretic_regions", written by the
 program); every curve is computed here from the published formulas, not by the program:
   MKZ (Matasovic and Vucetic 1993): G/Gmax = 1 / (1 + beta (gamma/gamma_r)^s)
+  table: the user's rows (run_info.json carries them and their "# source:"), linear in
+    (ln gamma, ln G/Gmax) between rows, as the program reads them
   GQ/H (Groholski et al. 2016): tau/tau_max = [1 + x - sqrt((1+x)^2 - 4 theta x)] / (2 theta),
     x = gamma/gamma_r, gamma_r = tau_max/Gmax, theta = theta1 + theta2 theta4 x^theta5 /
     (theta3^theta5 + theta4 x^theta5) (rationalised: 2x / (1 + x + sqrt(...)), exact at theta 0)
@@ -115,7 +117,18 @@ def published_modulus_ratio(region, gamma):
         return darendeli_modulus_ratio(gamma, region["plasticity_index"], region["ocr"], region["mean_effective_stress_pa"])
     if kind == "gqh":
         return gqh_modulus_ratio(gamma, region["gmax_pa"], region["strength_pa"], region["theta"])
-    raise ValueError(f"backbone {kind!r}; allowed: mkz, darendeli, gqh")
+    if kind == "table":
+        return table_modulus_ratio(gamma, np.asarray(region["table"], dtype=float))
+    raise ValueError(f"backbone {kind!r}; allowed: mkz, darendeli, gqh, table")
+
+
+def table_modulus_ratio(gamma, rows):
+    """A user's table (strain, G/Gmax), read as the program reads it: linear in (ln gamma,
+    ln G/Gmax) between rows, the first row's ratio below it, the last row's stress beyond."""
+    g = np.asarray(gamma, dtype=float)
+    ratio = np.exp(np.interp(np.log(g), np.log(rows[:, 0]), np.log(rows[:, 1])))
+    beyond = g > rows[-1, 0]
+    return np.where(beyond, rows[-1, 1] * rows[-1, 0] / g, ratio)
 
 
 def model_modulus_ratio(region, gamma):
@@ -192,7 +205,7 @@ def plot_curves(path, region, cycles):
         a1.semilogx(g * 100, darendeli_modulus_ratio(g, *args), "k--", label="Darendeli (2001)")
         a2.semilogx(g * 100, darendeli_damping(g, *args, region["frequency_hz"], region["cycles"]) * 100, "k--", label="Darendeli (2001): D")
     else:
-        label = "MKZ (Matasovic and Vucetic 1993)" if kind == "mkz" else "GQ/H (Groholski et al. 2016)"
+        label = {"mkz": "MKZ (Matasovic and Vucetic 1993)", "gqh": "GQ/H (Groholski et al. 2016)"}.get(kind, "user table")
         a1.semilogx(g * 100, published_modulus_ratio(region, g), "k--", label=label)
         a2.semilogx(g * 100, masing_damping(lambda x: published_modulus_ratio(region, x), g) * 100, "k--", label=label + ", Masing")
     for name, c in cycles.items():

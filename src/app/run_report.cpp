@@ -102,6 +102,20 @@ PetscErrorCode reportInterfaces(const problem::Elastodynamics &model) {
   PetscFunctionReturn(0);
 }
 
+// A string as a JSON string's contents: quotes, backslashes and control characters escaped.
+std::string jsonEscaped(const std::string &text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += {'\\', c};
+    else if ((unsigned char)c < 0x20) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\u%04x", (unsigned)(unsigned char)c);
+      out += hex;
+    } else out += c;
+  }
+  return out;
+}
+
 // run_info.json's "hysteretic_regions": per hysteretic region what its backbone was built from
 // (the inputs of the published curve, not the fitted surfaces), so that a script can draw the
 // curve from its source formulas (scripts/soil_loops.py).
@@ -126,6 +140,16 @@ std::string hystereticRegionsJson(const std::vector<medium::RegionMaterialInfo> 
       std::snprintf(buf, sizeof buf, ", \"theta\": [%.17g, %.17g, %.17g, %.17g, %.17g]}", s.backbone.theta[0], s.backbone.theta[1], s.backbone.theta[2], s.backbone.theta[3],
                     s.backbone.theta[4]);
       break;
+    case medium::BackboneChoice::Table: {
+      // The rows as run (strains as ratios), for the script to draw the user's curve.
+      std::string rows;
+      for (size_t k = 0; k < s.backbone.table_strain.size(); ++k) {
+        std::snprintf(buf, sizeof buf, "%s[%.17g, %.17g]", k ? ", " : "", s.backbone.table_strain[k], s.backbone.table_ratio[k]);
+        rows += buf;
+      }
+      json += ", \"table_file\": \"" + jsonEscaped(s.table_file) + "\", \"table_source\": \"" + jsonEscaped(s.table_source) + "\", \"table\": [" + rows + "]}";
+      continue;
+    }
     }
     json += buf;
   }

@@ -395,6 +395,9 @@ std::vector<std::string> HysteresisReport(const std::vector<RegionMaterialInfo> 
       std::snprintf(buf, sizeof buf, "gqh, theta %.4g,%.4g,%.4g,%.4g,%.4g", s.backbone.theta[0], s.backbone.theta[1], s.backbone.theta[2], s.backbone.theta[3],
                     s.backbone.theta[4]);
       break;
+    case BackboneChoice::Table:
+      std::snprintf(buf, sizeof buf, "table %s (%zu rows; source: %s)", s.table_file.c_str(), s.backbone.table_strain.size(), s.table_source.c_str());
+      break;
     }
     curve = buf;
     const physics::HystereticSoilModel &model = *s.model;

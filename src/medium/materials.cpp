@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "slipwave/core/option_choice.hpp"
+#include "slipwave/medium/backbone_table.hpp"
 
 namespace slipwave::medium {
 namespace {
@@ -23,7 +24,7 @@ PetscErrorCode materialNamesGiven(std::vector<std::string> *names) {
   const char       *properties[] = {"_rho", "_vp", "_vs", "_E", "_nu", "_damping_ratio", "_reference_frequency", "_saturated", "_porosity",
                                     "_hydraulic_conductivity", "_fluid_bulk_modulus", "_grain_bulk_modulus", "_fluid_density", "_model",
                                     // A hysteretic region's backbone (hystereticRead below).
-                                    "_backbone", "_reference_strain", "_curvature", "_beta", "_strength", "_gqh_theta", "_plasticity_index", "_ocr",
+                                    "_backbone", "_backbone_file", "_reference_strain", "_curvature", "_beta", "_strength", "_gqh_theta", "_plasticity_index", "_ocr",
                                     "_mean_effective_stress", "_surfaces", "_stress_points"};
   while (ss >> token) {
     if (token.rfind("-material_", 0) != 0) continue;
@@ -46,12 +47,18 @@ PetscErrorCode hystereticRead(PetscOptionItems *PetscOptionsObject, MPI_Comm com
                               HystereticSpec *spec) {
   PetscInt  choice = (PetscInt)BackboneChoice::Mkz, surfaces = physics::HystereticSurfaces{}.count, ntheta = 5, points = (PetscInt)StressPoints::Gauss;
   PetscReal gamma_r = 0, curvature = 1, beta = 1, strength = 0, pi = 0, ocr = 1, mean_stress = 0, theta[5] = {0, 0, 1, 1, 1};
-  PetscBool has_choice, has_gamma, has_curvature, has_beta, has_strength, has_pi, has_ocr, has_mean, has_theta, has_surfaces, has_points;
+  PetscBool has_choice, has_gamma, has_curvature, has_beta, has_strength, has_pi, has_ocr, has_mean, has_theta, has_surfaces, has_points, has_file;
+  char      file[PETSC_MAX_PATH_LEN] = "";
   PetscFunctionBeginUser;
   PetscCall(core::OptionsChoice(PetscOptionsObject, "-backbone",
                                 "backbone of a hysteretic region: mkz (Matasovic-Vucetic, from -reference_strain), darendeli (Darendeli 2001, from "
-                                "-plasticity_index, -ocr, -mean_effective_stress) or gqh (Groholski et al. 2016, from -strength and -gqh_theta)",
-                                kBackboneNames, 3, &choice, &has_choice));
+                                "-plasticity_index, -ocr, -mean_effective_stress), gqh (Groholski et al. 2016, from -strength and -gqh_theta) or table (G/Gmax "
+                                "against strain from -backbone_file)",
+                                kBackboneNames, 4, &choice, &has_choice));
+  PetscCall(PetscOptionsString("-backbone_file",
+                               "CSV file of a table backbone: a '# source: ...' line, the header strain,G/Gmax or strain_percent,G/Gmax, then the rows "
+                               "(docs/hysteretic-soil.md)",
+                               "MaterialsRead", file, file, sizeof file, &has_file));
   PetscCall(PetscOptionsReal("-reference_strain", "MKZ reference shear strain gamma_r [-] (a ratio, not percent), > 0", "MaterialsRead", gamma_r, &gamma_r, &has_gamma));
   PetscCall(PetscOptionsReal("-curvature", "MKZ curvature s [-], > 0 (1: hyperbolic)", "MaterialsRead", curvature, &curvature, &has_curvature));
   PetscCall(PetscOptionsReal("-beta", "MKZ coefficient beta [-], > 0 (1: hyperbolic)", "MaterialsRead", beta, &beta, &has_beta));
@@ -79,6 +86,7 @@ PetscErrorCode hystereticRead(PetscOptionItems *PetscOptionsObject, MPI_Comm com
                {"beta", has_beta, choice == (PetscInt)BackboneChoice::Mkz},
                {"strength", has_strength, true},
                {"gqh_theta", has_theta, choice == (PetscInt)BackboneChoice::Gqh},
+               {"backbone_file", has_file, choice == (PetscInt)BackboneChoice::Table},
                {"plasticity_index", has_pi, choice == (PetscInt)BackboneChoice::Darendeli},
                {"ocr", has_ocr, choice == (PetscInt)BackboneChoice::Darendeli},
                {"mean_effective_stress", has_mean, choice == (PetscInt)BackboneChoice::Darendeli},
@@ -90,11 +98,12 @@ PetscErrorCode hystereticRead(PetscOptionItems *PetscOptionsObject, MPI_Comm com
     PetscCheck(!g.set || g.used, comm, PETSC_ERR_USER_INPUT, "-material_%s_%s does not apply to -material_%s_backbone %s; allowed: %s", r, g.name, r, kBackboneNames[choice],
                choice == (PetscInt)BackboneChoice::Mkz       ? "-reference_strain, -curvature, -beta, -strength, -surfaces, -stress_points"
                : choice == (PetscInt)BackboneChoice::Gqh     ? "-strength, -gqh_theta, -surfaces, -stress_points"
+               : choice == (PetscInt)BackboneChoice::Table   ? "-backbone_file, -strength, -surfaces, -stress_points"
                                                               : "-plasticity_index, -ocr, -mean_effective_stress, -strength, -surfaces, -stress_points");
   }
   if (!hysteretic || !elastic) PetscFunctionReturn(0);
   const physics::ElasticMaterial &m = *elastic;
-  PetscCheck(has_choice, comm, PETSC_ERR_USER_INPUT, "-material_%s_backbone is missing (region '%s' is hysteretic); allowed: mkz, darendeli, gqh", r, r);
+  PetscCheck(has_choice, comm, PETSC_ERR_USER_INPUT, "-material_%s_backbone is missing (region '%s' is hysteretic); allowed: mkz, darendeli, gqh, table", r, r);
   PetscCheck(!has_theta || ntheta == 5, comm, PETSC_ERR_USER_INPUT, "-material_%s_gqh_theta has %" PetscInt_FMT " values; allowed: five, theta1,...,theta5", r, ntheta);
   PetscCheck(!has_strength || (strength > 0 && std::isfinite(strength)), comm, PETSC_ERR_USER_INPUT, "-material_%s_strength = %g; allowed: tau_max > 0 [Pa]", r, (double)strength);
   PetscCheck(surfaces >= 2 && surfaces <= 1000, comm, PETSC_ERR_USER_INPUT, "-material_%s_surfaces = %" PetscInt_FMT "; allowed: 2 to 1000", r, surfaces);
@@ -138,6 +147,15 @@ PetscErrorCode hystereticRead(PetscOptionItems *PetscOptionsObject, MPI_Comm com
         spec->backbone    = physics::gqhBackbone(gmax, strength, t);
       }
       break;
+    case BackboneChoice::Table: {
+      PetscCheck(has_file, comm, PETSC_ERR_USER_INPUT, "-material_%s_backbone_file is missing (-material_%s_backbone table); allowed: a CSV file of strain,G/Gmax rows", r, r);
+      BackboneTable     table;
+      const std::string problem = ReadBackboneTable(file, &table);
+      PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "-material_%s_backbone_file = %s", r, problem.c_str());
+      spec->table_file   = file;
+      spec->table_source = table.source;
+      spec->backbone     = physics::tableBackbone(table.strain, table.ratio, cap);
+    } break;
     }
     physics::HystereticSurfaces s;
     s.count     = (int)surfaces;

@@ -25,8 +25,8 @@ enum class MaterialModel { Elastic, Rigid, Hysteretic };
 inline constexpr const char *kMaterialModelNames[] = {"elastic", "rigid", "hysteretic"};
 
 // The backbone of a hysteretic region (-material_<region>_backbone; physics/soil_backbone.hpp).
-enum class BackboneChoice { Mkz, Darendeli, Gqh };
-inline constexpr const char *kBackboneNames[] = {"mkz", "darendeli", "gqh"};
+enum class BackboneChoice { Mkz, Darendeli, Gqh, Table };
+inline constexpr const char *kBackboneNames[] = {"mkz", "darendeli", "gqh", "table"};
 
 // Where a hysteretic region's stress is evaluated (-material_<region>_stress_points;
 // medium/hysteresis.hpp): the Gauss points of the linear K, or once per cell from its mean strain.
@@ -40,7 +40,8 @@ struct HystereticSpec {
   BackboneChoice                                     choice = BackboneChoice::Mkz;
   physics::SoilBackbone                              backbone;
   physics::DarendeliSoil                             darendeli; // choice Darendeli
-  double                                             strength = 0; // tau_max [Pa]; 0: no cap (MKZ, Darendeli)
+  double                                             strength = 0; // tau_max [Pa]; 0: no cap (MKZ, Darendeli, table)
+  std::string                                        table_file, table_source; // choice Table: the CSV file and its "# source:"
   StressPoints                                       points = StressPoints::Gauss;
   std::shared_ptr<const physics::HystereticSoilModel> model;
 };
