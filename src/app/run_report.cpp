@@ -11,6 +11,7 @@
 #include "slipwave/medium/hysteresis.hpp"
 #include "slipwave/porous/pore_pressure.hpp"
 #include "slipwave/problem/rigid_bodies.hpp"
+#include "slipwave/problem/scene_frequency.hpp"
 
 namespace slipwave::app {
 namespace {
@@ -166,7 +167,7 @@ void WriteRunInfo(const problem::Elastodynamics &model, const std::string &outpu
                  res.frequency, nodesPerWavelengthNeeded(model.bulk.degree()), res.region.c_str(), res.size, model.bulk.minCellSize());
     if (model.bulk.degree() > 1) std::fprintf(f, " \"element_degree\": %d, \"element_size_m\": %.6g,\n", (int)model.bulk.degree(), model.bulk.minElementSize());
     if (model.hysteresis) std::fprintf(f, " \"hysteretic_regions\": [%s],\n", hystereticRegionsJson(model.materials).c_str());
-    std::fprintf(f, " \"input_top_frequency_hz\": %.6g, \"time_step_s\": %.10g}\n", model.bc.input.active() ? model.bc.input.topFrequency() : 0.0, dt);
+    std::fprintf(f, " \"input_top_frequency_hz\": %.6g, \"time_step_s\": %.10g}\n", problem::SceneTopFrequency(model).hz, dt);
     std::fclose(f);
   }
 }
@@ -194,7 +195,8 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
                           " nodes, %" PetscInt_FMT " distinct element geometries on rank 0\n",
                           model.mesh.source.c_str(), p, nelem, nelem == 1 ? "" : "s", ncell, n_nodes / model.dim, model.bulk.distinctMatrices()));
   }
-  const double fmax = model.bc.input.active() ? model.bc.input.topFrequency() : 0.0;
+  const problem::SceneFrequency top  = problem::SceneTopFrequency(model);
+  const double                  fmax = top.hz;
   for (size_t r = 0; r < model.materials.size(); ++r) {
     const auto    &m = model.materials[r];
     const PetscInt k = (PetscInt)r;
@@ -213,8 +215,8 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
     const double  n = fmax > 0 ? nodesPerWavelength(model, (PetscInt)r, m.elastic.vs, fmax) : 0.0;
     if (m.model != medium::MaterialModel::Rigid && fmax > 0 && n < nodesPerWavelengthNeeded(p))
       PetscCall(PetscPrintf(comm,
-                            "  warning: region %s is under-resolved for the input's top frequency %.2f Hz: %.1f %s per S wavelength, below the %.3g that elements of degree %" PetscInt_FMT " need (%s); refine the mesh or raise -element_degree\n",
-                            m.region.c_str(), fmax, n, p == 1 ? "points" : "GLL nodes", nodesPerWavelengthNeeded(p), p, nodesPerWavelengthSource(p)));
+                            "  warning: region %s is under-resolved for the top frequency %.2f Hz of %s: %.1f %s per S wavelength, below the %.3g that elements of degree %" PetscInt_FMT " need (%s); refine the mesh or raise -element_degree\n",
+                            m.region.c_str(), fmax, top.source.c_str(), n, p == 1 ? "points" : "GLL nodes", nodesPerWavelengthNeeded(p), p, nodesPerWavelengthSource(p)));
   }
   const Resolution res = resolvedFrequency(model);
   if (res.region.empty()) {

@@ -640,6 +640,8 @@ PetscErrorCode DrmAddForce(Drm *d, const DrmSetting &m, TS ts, PetscReal t, Vec 
   PetscFunctionReturn(0);
 }
 
+double DrmTopFrequency(const Drm *drm) { return drm->incident.topFrequency(); }
+
 std::vector<std::string> DrmReport(const Drm *d) { return d ? d->report : std::vector<std::string>{}; }
 
 void DrmCommit(Drm *d) {

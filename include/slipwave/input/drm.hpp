@@ -73,6 +73,8 @@ PetscErrorCode DrmDestroy(Drm **drm);
 PetscErrorCode DrmAddForce(Drm *drm, const DrmSetting &setting, TS ts, PetscReal t, Vec f);
 // Lines for the run report (empty without DRM).
 std::vector<std::string> DrmReport(const Drm *drm);
+// The incident wave's highest frequency [Hz] (TimeFunction::topFrequency), for the resolution report.
+double DrmTopFrequency(const Drm *drm);
 // The trial of the last DrmAddForce (memory, u0) becomes the committed state (no-op without one).
 void DrmCommit(Drm *drm);
 // Committed state for checkpoints: [started, committed_time, u0 and memory of this rank].
