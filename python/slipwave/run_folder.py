@@ -253,10 +253,10 @@ class RunFolder:
     def run_info(self):
         """run_info.json as a dict: resolved_frequency_hz [Hz] (highest S-wave frequency the
         mesh carries), points_per_wavelength [-] (nodes per S wavelength that needs),
-        slowest_region, h_min_m [m] (smallest cell), input_top_frequency_hz [Hz] (0 without
-        an input wave), time_step_s [s]; at element degree p > 1 also element_degree and
+        slowest_region, h_min_m [m] (smallest cell), input_top_frequency_hz [Hz] (the highest of every time history of the scene: input wave, loads, DRM; 0 without
+        any), time_step_s [s]; at element degree p > 1 also element_degree and
         element_size_m [m]; with hysteretic soil hysteretic_regions, per region its backbone
-        (mkz, darendeli, gqh), gmax_pa, surfaces, strength_pa (0: no cap) and the parameters
+        (mkz, darendeli, gqh, table), gmax_pa, surfaces, strength_pa (0: no cap) and the parameters
         the backbone was built from (mkz: reference_strain, curvature, beta; darendeli:
         plasticity_index [%], ocr, mean_effective_stress_pa, frequency_hz, cycles; gqh:
         theta)."""
