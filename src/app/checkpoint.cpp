@@ -219,6 +219,7 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
     iface.loadState(state.data());
     iface.setMaxDrift(scalars[3 + kLedgerSize + nframes + k]);
   }
+  PetscCall(problem::ElastodynamicsDrainOpenGaps(s.model));
   // Every station has one row per step taken so far (steps 0 .. step).
   if (s.model->pore) s.stations->expectPressure();
   const PetscInt      samples = (header[4] + 1) * s.stations->rowWidth() * (PetscInt)s.stations->localStations();

@@ -231,6 +231,15 @@ PetscErrorCode InterfaceAssembler::SetPorePressure(Vec p) {
   PetscFunctionReturn(0);
 }
 
+void InterfaceAssembler::openSoilDofs(std::vector<PetscInt> *dofs) const {
+  dofs->clear();
+  const size_t n = dim_ == 2 ? states2_.size() : states3_.size();
+  for (size_t i = 0; i < n; ++i) {
+    const physics::InterfaceStatus status = dim_ == 2 ? states2_[i].status : states3_[i].status;
+    if (status == physics::InterfaceStatus::Open) dofs->push_back(pairs_.soil_dof[i]);
+  }
+}
+
 void InterfaceAssembler::Commit() {
   if (!has_trial_) return;
   states2_.swap(trial_states2_);

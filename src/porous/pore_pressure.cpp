@@ -457,7 +457,7 @@ PetscErrorCode PorePressureDestroy(PorePressure **pore) {
   PetscFunctionBeginUser;
   if (!*pore) PetscFunctionReturn(0);
   PorePressure *pp = *pore;
-  for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial, &pp->p_hydrostatic, &pp->p_total, &pp->p_total_trial, &pp->at_water_table,
+  for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial, &pp->p_hydrostatic, &pp->p_total, &pp->p_total_trial, &pp->at_water_table, &pp->sealed_free_mask, &pp->sealed_inv_storage,
                  &pp->p_local, &pp->q_local})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&pp->pdm));
@@ -589,12 +589,58 @@ PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pp, DM dm, Vec rows) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PorePressureEnergy(PorePressure *pp, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e) {
+namespace {
+// (1/2) [p S p - h p (alpha Q v_{n+1/2}) - h p Hbar + h p q] summed over the nodes held this
+// step that still hold p_n != 0 (PorePressureEnergy).
+PetscErrorCode gapReleasedEnergy(PorePressure *pp, DM dm, PetscReal h, Vec v, Vec a, double *released) {
+  Vec                v_half, v_local, Qv;
+  PetscScalar       *q;
+  const PetscScalar *vl;
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(v, &v_half));
+  PetscCall(VecWAXPY(v_half, 0.5 * h, a, v));
+  PetscCall(DMGetLocalVector(dm, &v_local));
+  PetscCall(DMGlobalToLocal(dm, v_half, INSERT_VALUES, v_local));
+  PetscCall(VecZeroEntries(pp->q_local));
+  PetscCall(VecGetArray(pp->q_local, &q));
+  PetscCall(VecGetArrayRead(v_local, &vl));
+  couplingTimesU(*pp, vl, q);
+  PetscCall(VecRestoreArrayRead(v_local, &vl));
+  PetscCall(VecRestoreArray(pp->q_local, &q));
+  PetscCall(DMRestoreLocalVector(dm, &v_local));
+  PetscCall(VecDestroy(&v_half));
+  PetscCall(VecDuplicate(pp->p, &Qv));
+  PetscCall(localToGlobalSum(pp->pdm, pp->q_local, Qv));
+  PetscInt           n;
+  const PetscScalar *p, *S, *hp, *in, *mask, *qv;
+  double             sum = 0;
+  PetscCall(VecGetLocalSize(pp->p, &n));
+  PetscCall(VecGetArrayRead(pp->p, &p));
+  PetscCall(VecGetArrayRead(pp->storage, &S));
+  PetscCall(VecGetArrayRead(pp->Hbar, &hp));
+  PetscCall(VecGetArrayRead(pp->inflow, &in));
+  PetscCall(VecGetArrayRead(pp->free_mask, &mask));
+  PetscCall(VecGetArrayRead(Qv, &qv));
+  for (PetscInt k = 0; k < n; ++k)
+    if (PetscRealPart(mask[k]) == 0 && p[k] != 0.0) sum += 0.5 * PetscRealPart(p[k] * (S[k] * p[k] - h * qv[k] - h * hp[k] + h * in[k]));
+  PetscCall(VecRestoreArrayRead(Qv, &qv));
+  PetscCall(VecRestoreArrayRead(pp->free_mask, &mask));
+  PetscCall(VecRestoreArrayRead(pp->inflow, &in));
+  PetscCall(VecRestoreArrayRead(pp->Hbar, &hp));
+  PetscCall(VecRestoreArrayRead(pp->storage, &S));
+  PetscCall(VecRestoreArrayRead(pp->p, &p));
+  PetscCall(VecDestroy(&Qv));
+  PetscCallMPI(MPI_Allreduce(&sum, released, 1, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)v)));
+  PetscFunctionReturn(0);
+}
+} // namespace
+
+PetscErrorCode PorePressureEnergy(PorePressure *pp, DM dm, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e) {
   PetscFunctionBeginUser;
   // Local sums, reduced once: 0 v_{n+1/2} . f_pore, 1 v_n . f_pore on held dofs, 2 p S p,
-  // 3 p . Hbar_n, 4 p . Hbar_{n-1}, 5 p . q.
+  // 3 p . Hbar_n, 4 p . Hbar_{n-1}, 5 p . q, 6 nodes held this step with p_n != 0.
   PetscCall(diffuse(pp, h)); // Hbar_n of the step about to be taken
-  double s[6] = {0, 0, 0, 0, 0, 0};
+  double s[7] = {0, 0, 0, 0, 0, 0, 0};
   {
     PetscInt           n;
     const PetscScalar *va, *aa, *fp, *mask;
@@ -614,30 +660,41 @@ PetscErrorCode PorePressureEnergy(PorePressure *pp, PetscReal h, Vec v, Vec a, V
   }
   {
     PetscInt           n;
-    const PetscScalar *p, *S, *hp, *hq, *q;
+    const PetscScalar *p, *S, *hp, *hq, *q, *mask;
     PetscCall(VecGetLocalSize(pp->p, &n));
     PetscCall(VecGetArrayRead(pp->p, &p));
     PetscCall(VecGetArrayRead(pp->storage, &S));
     PetscCall(VecGetArrayRead(pp->Hbar, &hp));
     PetscCall(VecGetArrayRead(pp->Hbar_previous, &hq));
     PetscCall(VecGetArrayRead(pp->inflow, &q));
+    PetscCall(VecGetArrayRead(pp->free_mask, &mask));
     for (PetscInt k = 0; k < n; ++k) {
       s[2] += PetscRealPart(p[k] * S[k] * p[k]);
       s[3] += PetscRealPart(p[k] * hp[k]);
       s[4] += PetscRealPart(p[k] * hq[k]);
       s[5] += PetscRealPart(p[k] * q[k]);
+      if (PetscRealPart(mask[k]) == 0 && p[k] != 0.0) s[6] += 1;
     }
+    PetscCall(VecRestoreArrayRead(pp->free_mask, &mask));
     PetscCall(VecRestoreArrayRead(pp->inflow, &q));
     PetscCall(VecRestoreArrayRead(pp->Hbar_previous, &hq));
     PetscCall(VecRestoreArrayRead(pp->Hbar, &hp));
     PetscCall(VecRestoreArrayRead(pp->storage, &S));
     PetscCall(VecRestoreArrayRead(pp->p, &p));
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 6, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)v)));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 7, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)v)));
   // S p_{n+1} = S p_n - h alpha Q v_{n+1/2} - h (Hbar_n - q) on free nodes, p = 0 on the
   // others, and p_n . alpha Q v = v . alpha Q^T p_n = v . f_pore.
   e->storage    = 0.5 * (s[2] - h * s[0] - h * s[3] + h * s[5]);
   e->darcy      = 0.5 * h * (s[3] + s[4]);
+  if (s[6] > 0) {
+    // Nodes drained from this step on while holding p_n (a gap opened over them): the sums
+    // above gave each the storage equation's F_{n+1/2}; it holds none, so that energy leaves.
+    double released = 0;
+    PetscCall(gapReleasedEnergy(pp, dm, h, v, a, &released));
+    e->storage -= released;
+    e->darcy += released;
+  }
   e->inflow     = h * s[5];
   e->held_power = s[1];
   PetscFunctionReturn(0);

@@ -73,7 +73,10 @@ PetscErrorCode PorePressureInterfaceFluid(PorePressure *pp, MPI_Comm comm, const
   if (condition == 1) {
     pp->drained.push_back("interface " + name);
     PetscCall(PorePressureDrainNodes(pp, marker));
-  } else if (pp->at_water_table) {
+  } else {
+    pp->sealed_interfaces.push_back(name);
+  }
+  if (condition == 0 && pp->at_water_table) {
     // noflow: the structure seals the soil surface it rests on, so soil nodes that the water
     // table drained only because they lie on it (a footing on a water table at the surface)
     // keep their excess pore pressure. Fluid boundaries (-bc_<b>_fluid drained) still win.
@@ -101,6 +104,37 @@ PetscErrorCode PorePressureInterfaceFluid(PorePressure *pp, MPI_Comm comm, const
     if (sealed) pp->drained.push_back("(not the " + std::to_string(sealed) + " soil nodes of interface " + name + " on the water table: noflow seals them)");
   }
   PetscCall(VecDestroy(&marker));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureDrainOpenGaps(PorePressure *pp, Vec open_marker) {
+  PetscInt           n;
+  PetscScalar       *mask, *inv;
+  const PetscScalar *open, *mask0, *inv0;
+  PetscFunctionBeginUser;
+  if (!pp->sealed_free_mask) {
+    // The first call comes after the set-up: its conditions are those without a gap.
+    PetscCall(VecDuplicate(pp->free_mask, &pp->sealed_free_mask));
+    PetscCall(VecCopy(pp->free_mask, pp->sealed_free_mask));
+    PetscCall(VecDuplicate(pp->inv_storage, &pp->sealed_inv_storage));
+    PetscCall(VecCopy(pp->inv_storage, pp->sealed_inv_storage));
+  }
+  PetscCall(VecGetLocalSize(open_marker, &n));
+  PetscCall(VecGetArrayRead(open_marker, &open));
+  PetscCall(VecGetArrayRead(pp->sealed_free_mask, &mask0));
+  PetscCall(VecGetArrayRead(pp->sealed_inv_storage, &inv0));
+  PetscCall(VecGetArray(pp->free_mask, &mask));
+  PetscCall(VecGetArray(pp->inv_storage, &inv));
+  for (PetscInt i = 0; i < n; ++i) {
+    const bool gap = PetscRealPart(open[i]) > 0;
+    mask[i]        = gap ? 0.0 : mask0[i];
+    inv[i]         = gap ? 0.0 : inv0[i];
+  }
+  PetscCall(VecRestoreArray(pp->inv_storage, &inv));
+  PetscCall(VecRestoreArray(pp->free_mask, &mask));
+  PetscCall(VecRestoreArrayRead(pp->sealed_inv_storage, &inv0));
+  PetscCall(VecRestoreArrayRead(pp->sealed_free_mask, &mask0));
+  PetscCall(VecRestoreArrayRead(open_marker, &open));
   PetscFunctionReturn(0);
 }
 

@@ -383,6 +383,27 @@ PetscErrorCode ElastodynamicsCommit(Elastodynamics *m) {
   medium::HysteresisCommit(m->hysteresis);
   porous::PorePressureCommit(m->pore);
   input::DrmCommit(m->drm);
+  PetscCall(ElastodynamicsDrainOpenGaps(m));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ElastodynamicsDrainOpenGaps(Elastodynamics *m) {
+  PetscFunctionBeginUser;
+  if (!m->pore || m->pore->sealed_interfaces.empty()) PetscFunctionReturn(0);
+  const auto &sealed = m->pore->sealed_interfaces;
+  Vec         marker;
+  PetscCall(VecDuplicate(m->pore->p, &marker));
+  PetscCall(VecZeroEntries(marker));
+  std::vector<PetscInt> open;
+  for (const auto &iface : m->interfaces) {
+    if (std::find(sealed.begin(), sealed.end(), iface.spec().name) == sealed.end()) continue;
+    iface.openSoilDofs(&open);
+    for (PetscInt dof : open) PetscCall(VecSetValue(marker, dof / m->dim, 1.0, INSERT_VALUES));
+  }
+  PetscCall(VecAssemblyBegin(marker));
+  PetscCall(VecAssemblyEnd(marker));
+  PetscCall(porous::PorePressureDrainOpenGaps(m->pore, marker));
+  PetscCall(VecDestroy(&marker));
   PetscFunctionReturn(0);
 }
 

@@ -177,7 +177,7 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool ev
   porous::PoreEnergy fluid;
   if (m->pore) {
     // Its Darcy and inflow work are booked every step like the rest of the work.
-    PetscCall(porous::PorePressureEnergy(m->pore, h, v, a, m->f_pore, m->bc.free_mask, &fluid));
+    PetscCall(porous::PorePressureEnergy(m->pore, m->dm, h, v, a, m->f_pore, m->bc.free_mask, &fluid));
     s[2] += fluid.storage;
     s[5] -= fluid.held_power;
     e->fluid = true;

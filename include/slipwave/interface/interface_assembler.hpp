@@ -61,6 +61,9 @@ public:
   // Smallest and largest dashpot coefficient c over all pairs [N s/m] (for the report).
   PetscErrorCode DashpotRange(double *c_min, double *c_max) const;
   PetscErrorCode Totals(InterfaceTotals *totals) const;
+  // Global soil-node dof indices (x component) of this rank's pairs that are open in the
+  // committed state (a saturated soil side drains into the gap: porous/pore_pressure.hpp).
+  void openSoilDofs(std::vector<PetscInt> *dofs) const;
   // Measures jumps from the current displacement as zero again (after the geostatic stage the
   // displacements restart from zero); tractions and state are kept.
   void ResetJumpReference() { jump_prev_.assign(jump_prev_.size(), 0.0); }

@@ -75,6 +75,10 @@ struct PorePressure {
   Vec    at_water_table = nullptr;               // 1 at free nodes the water table drained because they lie on it
                                                  // (not above): a noflow interface seals those of its soil side
   double water_table_elevation = 0;              // [m] along minus the gravity direction
+  // Noflow interfaces drain into their open gaps (PorePressureDrainOpenGaps): their names,
+  // and the fluid conditions without any gap (free_mask, inv_storage as set up).
+  std::vector<std::string> sealed_interfaces;
+  Vec    sealed_free_mask = nullptr, sealed_inv_storage = nullptr;
 };
 
 // Reads the per-region options after MaterialsRead; sets vp_undrained of saturated regions
@@ -91,7 +95,7 @@ PetscErrorCode PorePressureAddHydrostaticForce(PorePressure *pore, DM dm, Vec f)
 PetscErrorCode PorePressureTotal(PorePressure *pore);
 // An interface whose soil side is saturated: -interface_<name>_fluid noflow (default) or
 // drained, which holds the excess pore pressure at zero at its soil nodes (soil_dofs: global
-// indices of their x components).
+// indices of their x components). A noflow interface joins sealed_interfaces.
 PetscErrorCode PorePressureInterfaceFluid(PorePressure *pore, MPI_Comm comm, const std::string &name, const std::vector<PetscInt> &soil_dofs);
 PetscErrorCode PorePressureDestroy(PorePressure **pore);
 // Trial state at time t from the ghosted displacement u_local: p_trial, and the force on the
@@ -103,6 +107,15 @@ void           PorePressureCommit(PorePressure *pore);
 // step (whose monitor, and so the ledger, it skips), so the continued run repeats the
 // uninterrupted one bit for bit (the RHS's own h = t_{n+1} - t_n differs by round-off).
 PetscErrorCode PorePressureDiffuseStep(PorePressure *pore, PetscReal h);
+// A noflow interface seals the soil it rests on only while in contact: where a pair opens,
+// water (below the water table) or air (above it) fills the gap, so the soil node's total
+// pressure is the hydrostatic one there, as on a drained surface (excess 0), until the pair
+// closes again. open_marker: 1 at the soil nodes of the open pairs of the interfaces in
+// sealed_interfaces (pressure layout, global), 0 elsewhere; called after each commit, so the
+// next step (its ledger and its RHS) drains them. A node that drains with p != 0 releases its
+// pressure's energy (PorePressureEnergy books it with the Darcy dissipation).
+PetscErrorCode PorePressureDrainOpenGaps(PorePressure *pore, Vec open_marker);
+
 // Adds alpha^2 (|Q|^T S^{-1} |Q| 1) to the Gershgorin rows of K (global, displacement layout):
 // the undrained stiffening the wave step must cover (rows of drained nodes do not stiffen).
 PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pore, DM dm, Vec rows);
@@ -132,7 +145,11 @@ PetscInt PorePressureSubsteps(const PorePressure *pore, double h);
 struct PoreEnergy {
   double storage = 0, darcy = 0, inflow = 0, held_power = 0;
 };
-// v, a: v_n and a_n; f_pore at t_n; free_mask of the displacement dofs.
-PetscErrorCode PorePressureEnergy(PorePressure *pore, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e);
+// v, a: v_n and a_n; f_pore at t_n; free_mask of the displacement dofs; dm the displacement
+// layout. A node held this step (drained) that still holds p_n != 0 (a gap just opened over
+// it: PorePressureDrainOpenGaps) stores nothing from now on: the energy the storage equation
+// would have given it, (1/2) [p S p - h p (alpha Q v_{n+1/2}) - h p Hbar + h p q] at that node,
+// leaves with the water and is booked in darcy.
+PetscErrorCode PorePressureEnergy(PorePressure *pore, DM dm, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e);
 
 } // namespace slipwave::porous

@@ -78,6 +78,10 @@ PetscErrorCode ElastodynamicsDestroy(Elastodynamics *model);
 PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx);
 // The trial states of the last RHS evaluation become the committed ones.
 PetscErrorCode ElastodynamicsCommit(Elastodynamics *model);
+// Saturated soil under noflow interfaces: the soil nodes of the committed open pairs drain
+// into their gaps for the next step (porous::PorePressureDrainOpenGaps). Part of the commit;
+// a restart calls it once the interface states are loaded. No-op without such interfaces.
+PetscErrorCode ElastodynamicsDrainOpenGaps(Elastodynamics *model);
 // A "cd" TS (type set, options read) gets the RHS, the commit hook and the nodal damping.
 PetscErrorCode ElastodynamicsSetUpTS(Elastodynamics *model, TS ts);
 // Global f = K x by the element loop (ghost exchange included), as the RHS computes it.
