@@ -263,9 +263,8 @@ def label_of(key):
 def shade_unresolved(ax, info):
     """Shades the periods shorter than 1 / resolved frequency (the mesh does not carry them)."""
     f = info.get("resolved_frequency_hz")
-    if f:
-        lo = ax.get_xlim()[0]
-        ax.axvspan(min(lo, PERIOD_RANGE[0]), 1.0 / f, color="0.85", zorder=0,
+    if f and 1.0 / f > PERIOD_RANGE[0]:
+        ax.axvspan(PERIOD_RANGE[0], 1.0 / f, color="0.85", zorder=0,
                    label=f"T < {1.0 / f:.3g} s: above the {f:.3g} Hz the mesh resolves")
         ax.set_xlim(PERIOD_RANGE)
 
