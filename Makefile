@@ -41,8 +41,9 @@ run: deps
 # grid-convergence bands (scripts/convergence_check.py), then the plots of the main run.
 run-only: build-only
 	MPIEXEC_FLAGS="$(MPIEXEC_FLAGS)" /usr/bin/python3 scripts/convergence_check.py config/scenes/default.yaml --np $(NP) --out $(BUILD)/run/default --companion coarser --echo-main
-	/usr/bin/python3 scripts/plot_results.py $(BUILD)/run/default/main
-	@echo "Open $(BUILD)/run/default/main/volume.xmf and interface_base.xmf in ParaView (default reader); plots in $(BUILD)/run/default/main/plots/"
+	/usr/bin/python3 scripts/plot_results.py $(BUILD)/run/default/main --layer 30,200
+	xvfb-run -a pvpython --force-offscreen-rendering scripts/paraview_views.py $(BUILD)/run/default/main --state $(BUILD)/run/default/main/plots/view.pvsm
+	@echo "Plots and a ParaView view in $(BUILD)/run/default/main/plots/ (view.pvsm: File > Load State); volume.xmf, interface_base.xmf open in ParaView"
 
 # The scene's main answers with a grid-convergence band: the scene and a companion resolution
 # (scripts/convergence_check.py; CHECK_ARGS: its options, e.g. "--levels 3 -- -ts_max_time 5").

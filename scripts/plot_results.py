@@ -1,25 +1,37 @@
 #!/usr/bin/python3
 """Plots the results of a slipwave run as PNG figures (matplotlib, no display needed).
 
-usage: /usr/bin/python3 scripts/plot_results.py OUT [--out DIR] [--reference STATION]
+usage: /usr/bin/python3 scripts/plot_results.py OUT [--out DIR] [--reference STATION] [--layer H,VS]
 
-OUT is the -output_dir of a run. Figures go to OUT/plots/ (or DIR):
-  stations_acceleration.png     one row per station: horizontal and vertical acceleration as
-                                computed (unfiltered); the title gives the highest frequency
-                                the mesh resolves (OUT/run_info.json): content above it is
-                                numerical, not physical
-  spectra.png, spectra.csv      5 %-damped pseudo-acceleration response spectra PSA(T) [g]
-                                of every station's horizontal acceleration, T = 0.02 to 5 s
-                                (exact piecewise-linear oscillator step, response_spectrum.py)
+OUT is the -output_dir of a run. Figures go to OUT/plots/ (or DIR). Accelerations are in g
+(9.80665 m/s^2) everywhere; stations are shown from the highest to the lowest (by their
+coordinates in stations.h5; at equal height the one nearest the highest station first), so a
+structure comes first, then the free-field surface, then the bedrock:
+  stations_acceleration.png     the input (outcrop) motion of input_motion.csv, then one row per
+                                station: horizontal and vertical acceleration as computed
+                                (unfiltered, the dynamic motion: no gravity in it), with each
+                                trace's peak; the suptitle gives the highest frequency the mesh
+                                resolves (OUT/run_info.json): content above it is numerical
+  spectra.png, spectra.csv      5 %-damped pseudo-acceleration response spectra PSA(T) [g] of
+                                the input motion and of every station's horizontal
+                                acceleration, at N_PERIODS log-spaced periods from 0.02 to 5 s
+                                (exact piecewise-linear oscillator step, response_spectrum.py);
+                                the periods shorter than 1 / resolved frequency are shaded
+  amplification.png             PSA(station) / PSA(input outcrop motion): the site's
+                                amplification, the free-field surface (--reference) in bold,
+                                the layer's fundamental period 4 H / vs marked (--layer)
   transfer_ratio.png            PSA(station) / PSA(reference station) of every other station:
                                 the structure / free-field spectral ratio (--reference NAME,
                                 default free_field; skipped without that station)
   interface_<name>_history.png  accumulated slip (the slip path) and opening (mean and max
-                                over the pairs), the net tangential offset (mean slip), and
-                                the fraction of pairs in stick / slip / open vs time
+                                over the pairs), the net tangential offset (mean slip), the
+                                structure's rocking angle (rigid_<region>.csv, else the
+                                stations block_base_left and block_base_right), and the
+                                fraction of pairs in stick / slip / open vs time
   interface_<name>_profile.png  accumulated slip and opening of every pair at the last output
                                 step, and the accumulated slip in space and time
-  energy.png                    the energy budget, with the balance error on a second axis
+  energy.png                    the energy budget (bulk terms), the interfaces' terms on their
+                                own axis, and the relative balance error
   stations_pore_pressure.png    saturated scenes: the excess pore pressure (over the
                                 hydrostatic one of -water_table) [kPa] at every station,
                                 compression positive
@@ -27,8 +39,10 @@ OUT is the -output_dir of a run. Figures go to OUT/plots/ (or DIR):
 Works for 2D and 3D output. What is absent (no stations, no interface, no energy.csv) is
 skipped with a message. Prints the list of files written; exits 1 if nothing was plotted.
 The output may be plotted while the run is going (the XDMF lists the finished steps).
+The figure_* functions return matplotlib figures (tests check their axes).
 """
 import argparse
+import glob
 import os
 import sys
 import xml.etree.ElementTree as ET
@@ -42,19 +56,22 @@ import numpy as np  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
-from response_spectrum import default_periods, pseudo_acceleration_spectrum, resample_uniform  # noqa: E402
-from slipwave import INTERFACE_STATUS, RunFolder  # noqa: E402
+from response_spectrum import pseudo_acceleration_spectrum, resample_uniform  # noqa: E402
+from slipwave import INTERFACE_STATUS, RunFolder, read_csv  # noqa: E402
 
 try:
-    import h5py  # noqa: F401
+    import h5py
 except ImportError:  # only the interface plots and stations.h5 need it
     h5py = None
 
 STANDARD_GRAVITY = 9.80665  # m/s^2 per g
 SPECTRUM_DAMPING = 0.05
+N_PERIODS = 200  # log-spaced: about 80 per decade, smooth at the spectra's narrow peaks
+PERIOD_RANGE = (0.02, 5.0)  # s
 MAX_POINTS = 20000  # a time series longer than this is thinned for plotting (every k-th sample)
 STATUS_NAMES = INTERFACE_STATUS
 STATUS_COLORS = ("tab:green", "tab:orange", "tab:red")
+INPUT_LABEL = "input (outcrop motion)"
 
 
 def note(message):
@@ -77,6 +94,45 @@ def save(fig, path, written):
     written.append(path)
 
 
+def spectral_periods():
+    return np.logspace(np.log10(PERIOD_RANGE[0]), np.log10(PERIOD_RANGE[1]), N_PERIODS)
+
+
+# ---------------------------------------------------------------------------------------
+# What the run says about itself
+
+
+def run_info(run):
+    try:
+        return run.run_info()
+    except (OSError, ValueError):
+        return {}
+
+
+def resolution_note(info):
+    """The title's statement of what the mesh resolves, from run_info.json."""
+    if "resolved_frequency_hz" not in info:
+        return "resolved frequency unknown (no run_info.json)"
+    # Spectral elements (degree p > 1) count GLL nodes per wavelength.
+    points = f"GLL nodes at degree {info['element_degree']}" if "element_degree" in info else "points"
+    return (f"mesh resolves up to {info['resolved_frequency_hz']:.3g} Hz "
+            f"({info['points_per_wavelength']:g} {points} per S wavelength in '{info['slowest_region']}'); "
+            "content above is numerical")
+
+
+def read_input_motion(run):
+    """The outcrop motion the run applied (input_motion.csv): (component, t [s], a [m/s^2]),
+    or None without an incident wave."""
+    path = os.path.join(run.path, "input_motion.csv")
+    if not os.path.isfile(path):
+        return None
+    table = read_csv(path)
+    column = next((n for n in table.names if n.startswith("a_outcrop_")), None)
+    if column is None or len(table) < 2:
+        return None
+    return column[-1], table["t"], table[column]
+
+
 # ---------------------------------------------------------------------------------------
 # Stations
 
@@ -90,25 +146,34 @@ def read_stations(run):
     return {name: data for name, data in stations.items() if len(data) and "t" in data}
 
 
-def resolution_note(out):
-    """The title's statement of what the mesh resolves, from OUT/run_info.json."""
-    try:
-        info = RunFolder(out).run_info()
-        # Spectral elements (degree p > 1) count GLL nodes per wavelength.
-        points = f"GLL nodes at degree {info['element_degree']}" if "element_degree" in info else "points"
-        return (f"mesh resolves up to {info['resolved_frequency_hz']:.3g} Hz "
-                f"({info['points_per_wavelength']:g} {points} per S wavelength in '{info['slowest_region']}'); "
-                "content above is numerical")
-    except (OSError, ValueError, KeyError):
-        return "resolved frequency unknown (no run_info.json)"
+def station_coordinates(run):
+    """{name: point [m]} from stations.h5's group attribute "coordinates" ({} without it)."""
+    path = os.path.join(run.path, "stations.h5")
+    if h5py is None or not os.path.isfile(path):
+        return {}
+    with h5py.File(path, "r") as f:
+        return {name: np.array(f[name].attrs["coordinates"]) for name in f if "coordinates" in f[name].attrs}
 
 
-def plot_pore_pressure(plots, written, stations):
-    """Saturated scenes only: the stations' column p."""
-    names = [n for n in stations if "p_excess" in stations[n]]
+def station_order(names, coordinates):
+    """The stations from the highest to the lowest (the last coordinate is the vertical); at
+    equal height the nearest (horizontally) to the highest station first, so that a structure's
+    stations come before the free field's at the same level. Without coordinates: as given."""
+    if not names or any(n not in coordinates for n in names):
+        return list(names)
+    top = max(names, key=lambda n: coordinates[n][-1])
+    def key(n):
+        x = coordinates[n]
+        return (-round(float(x[-1]), 9), float(np.linalg.norm(x[:-1] - coordinates[top][:-1])), n)
+    return sorted(names, key=key)
+
+
+def figure_pore_pressure(stations, order):
+    """Saturated scenes only: the stations' column p_excess; None without it."""
+    names = [n for n in order if "p_excess" in stations[n]]
     if not names:
-        return
-    fig, ax = plt.subplots(figsize=(11, 4))
+        return None
+    fig, ax = plt.subplots(figsize=(11, 4), layout="constrained")
     for name in names:
         tt, p = thin(stations[name]["t"], stations[name]["p_excess"])
         ax.plot(tt, p / 1e3, lw=0.8, label=name)
@@ -117,100 +182,169 @@ def plot_pore_pressure(plots, written, stations):
     ax.set_title("Excess pore pressure at the stations (over the hydrostatic; compression positive)")
     ax.grid(alpha=0.3)
     ax.legend(loc="upper right", fontsize=8)
-    fig.tight_layout()
-    save(fig, os.path.join(plots, "stations_pore_pressure.png"), written)
+    return fig
 
 
-def plot_stations(out, plots, written, stations):
-    if not stations:
-        note("no station records (stations/*.csv or stations.h5): station plot skipped")
-        return
-    names = list(stations)
-    fig, axes = plt.subplots(len(names), 2, figsize=(11, 2.4 * len(names) + 1.0), sharex=True, squeeze=False)
-    for row, name in enumerate(names):
-        data = stations[name]
-        comps = [c for c in "xyz" if f"a_{c}" in data]
-        vertical = comps[-1]  # the vertical axis is the last one
-        t = data["t"]
+def components(data):
+    """(horizontal components, vertical component) of a station's record: the vertical axis is
+    the last one (y in 2D, z in 3D)."""
+    comps = [c for c in "xyz" if f"a_{c}" in data]
+    return comps[:-1], comps[-1]
+
+
+def figure_stations(stations, order, motion, info):
+    """Rows: the input motion (if any), then each station in order; columns: horizontal and
+    vertical acceleration [g]."""
+    rows = ([("input", None)] if motion is not None else []) + [("station", n) for n in order]
+    fig, axes = plt.subplots(len(rows), 2, figsize=(12, 1.9 * len(rows) + 1.2), sharex=True, squeeze=False,
+                             layout="constrained")
+    for row, (kind, name) in enumerate(rows):
         ax_h, ax_v = axes[row]
-        for c in comps[:-1]:
-            tt, a = thin(t, data[f"a_{c}"])
+        if kind == "input":
+            c, t, a = motion
+            tt, y = thin(t, a / STANDARD_GRAVITY)
+            vertical = "z" if any("a_z" in stations[n] for n in order) else "y"
+            ax = ax_v if c == vertical else ax_h
+            ax.plot(tt, y, lw=0.8, color="k", label=f"a_{c}")
+            ax.set_title(f"{INPUT_LABEL}: peak {np.max(np.abs(a)) / STANDARD_GRAVITY:.3g} g", fontsize=9)
+            other = ax_v if ax is ax_h else ax_h
+            other.text(0.5, 0.5, "no input in this direction", ha="center", va="center", transform=other.transAxes,
+                       fontsize=8, color="0.4")
+            for x in (ax_h, ax_v):
+                x.set_ylabel("acceleration [g]")
+                x.grid(alpha=0.3)
+            continue
+        data = stations[name]
+        horizontal, vertical = components(data)
+        peaks = []
+        for c in horizontal:
+            tt, a = thin(data["t"], data[f"a_{c}"] / STANDARD_GRAVITY)
             ax_h.plot(tt, a, lw=0.8, label=f"a_{c}")
-        tt, a = thin(t, data[f"a_{vertical}"])
+            peaks.append(f"a_{c} {np.max(np.abs(a)):.3g} g")
+        tt, a = thin(data["t"], data[f"a_{vertical}"] / STANDARD_GRAVITY)
         ax_v.plot(tt, a, lw=0.8, color="tab:purple", label=f"a_{vertical}")
-        ax_h.set_title(f"station '{name}': horizontal acceleration")
-        ax_v.set_title(f"station '{name}': vertical acceleration")
+        ax_h.set_title(f"'{name}' horizontal: peak {', '.join(peaks)}", fontsize=9)
+        ax_v.set_title(f"'{name}' vertical: peak a_{vertical} {np.max(np.abs(a)):.3g} g", fontsize=9)
         for ax in (ax_h, ax_v):
-            ax.set_ylabel("acceleration [m/s²]")
+            ax.set_ylabel("acceleration [g]")
             ax.grid(alpha=0.3)
-            ax.legend(loc="upper right", fontsize=8)
+            if len(ax.lines) > 1:
+                ax.legend(loc="upper right", fontsize=7)
     for ax in axes[-1]:
         ax.set_xlabel("time [s]")
-    fig.suptitle(f"Station accelerations as computed, unfiltered ({len(names)} station{'s' if len(names) > 1 else ''}; "
-                 f"vertical includes gravity if applied)\n{resolution_note(out)}")
-    fig.tight_layout()
-    save(fig, os.path.join(plots, "stations_acceleration.png"), written)
+    fig.suptitle("Accelerations as computed, unfiltered (dynamic motion, the static state under gravity is at rest), "
+                 f"top to bottom\n{resolution_note(info)}", fontsize=10)
+    return fig
 
 
-def station_spectra(stations):
-    """{(station, component): PSA [g]} of the horizontal components, and the periods [s]."""
-    periods = default_periods()
+def station_spectra(stations, order, motion):
+    """The periods [s] and {label: PSA [g]}: the input motion's (INPUT_LABEL) first, then
+    (station, component) of each station's horizontal components, in order."""
+    periods = spectral_periods()
     spectra = {}
-    for name, data in stations.items():
-        comps = [c for c in "xyz" if f"a_{c}" in data]
+    if motion is not None:
+        c, t, a = motion
+        dt, acc = resample_uniform(t, a)
+        spectra[INPUT_LABEL] = pseudo_acceleration_spectrum(acc, dt, periods, SPECTRUM_DAMPING) / STANDARD_GRAVITY
+    for name in order:
+        data = stations[name]
         if len(data["t"]) < 2:
             continue
-        for c in comps[:-1]:
+        for c in components(data)[0]:
             dt, acc = resample_uniform(data["t"], data[f"a_{c}"])
             spectra[(name, c)] = pseudo_acceleration_spectrum(acc, dt, periods, SPECTRUM_DAMPING) / STANDARD_GRAVITY
     return periods, spectra
 
 
-def plot_spectra(plots, written, periods, spectra):
-    if not spectra:
-        note("no station records: response spectra skipped")
-        return
-    os.makedirs(plots, exist_ok=True)
-    keys = list(spectra)
-    path = os.path.join(plots, "spectra.csv")
-    header = "period_s," + ",".join(f"{name}_a_{c}_psa_g" for name, c in keys)
-    np.savetxt(path, np.column_stack([periods] + [spectra[k] for k in keys]), delimiter=",", header=header,
-               comments="", fmt="%.6g")
-    written.append(path)
-    fig, ax = plt.subplots(figsize=(10, 5.5))
-    for name, c in keys:
-        ax.plot(periods, spectra[(name, c)], label=f"{name} a_{c}")
+def label_of(key):
+    return key if isinstance(key, str) else f"{key[0]} a_{key[1]}"
+
+
+def shade_unresolved(ax, info):
+    """Shades the periods shorter than 1 / resolved frequency (the mesh does not carry them)."""
+    f = info.get("resolved_frequency_hz")
+    if f and 1.0 / f > PERIOD_RANGE[0]:
+        ax.axvspan(PERIOD_RANGE[0], 1.0 / f, color="0.85", zorder=0,
+                   label=f"T < {1.0 / f:.3g} s: above the {f:.3g} Hz the mesh resolves")
+        ax.set_xlim(PERIOD_RANGE)
+
+
+def mark_layer_period(ax, layer):
+    if layer:
+        h, vs = layer
+        ax.axvline(4 * h / vs, color="tab:red", ls="--", lw=1,
+                   label=f"layer period 4H/vs = 4 x {h:g} m / {vs:g} m/s = {4 * h / vs:.3g} s")
+
+
+def style_spectrum_axes(ax, ylabel):
     ax.set_xscale("log")
+    ax.set_xlim(PERIOD_RANGE)
     ax.set_xlabel("period T [s]")
-    ax.set_ylabel("pseudo-acceleration PSA [g]")
+    ax.set_ylabel(ylabel)
     ax.grid(alpha=0.3, which="both")
+
+
+def figure_spectra(periods, spectra, info, layer):
+    fig, ax = plt.subplots(figsize=(10, 5.5), layout="constrained")
+    for key, psa in spectra.items():
+        if key == INPUT_LABEL:
+            ax.plot(periods, psa, color="k", ls="--", lw=1.5, label=INPUT_LABEL)
+        else:
+            ax.plot(periods, psa, label=label_of(key))
+    style_spectrum_axes(ax, "pseudo-acceleration PSA [g]")
+    shade_unresolved(ax, info)
+    mark_layer_period(ax, layer)
     ax.legend(fontsize=8)
-    ax.set_title(f"{100 * SPECTRUM_DAMPING:g} %-damped pseudo-acceleration response spectra of the stations")
-    fig.tight_layout()
-    save(fig, os.path.join(plots, "spectra.png"), written)
+    ax.set_title(f"{100 * SPECTRUM_DAMPING:g} %-damped pseudo-acceleration response spectra ({len(periods)} periods)")
+    return fig
 
 
-def plot_transfer(plots, written, periods, spectra, reference):
-    ref = {c: s for (name, c), s in spectra.items() if name == reference}
+def figure_amplification(periods, spectra, info, layer, reference):
+    """PSA(station) / PSA(input outcrop motion); None without the input motion."""
+    if INPUT_LABEL not in spectra:
+        return None
+    outcrop = spectra[INPUT_LABEL]
+    fig, ax = plt.subplots(figsize=(10, 5.5), layout="constrained")
+    for key, psa in spectra.items():
+        if key == INPUT_LABEL:
+            continue
+        bold = key[0] == reference
+        ax.plot(periods, psa / outcrop, lw=2.2 if bold else 0.9, color="tab:blue" if bold else None,
+                alpha=1 if bold else 0.7, label=label_of(key) + (" (free-field surface)" if bold else ""))
+    ax.axhline(1, color="k", lw=0.6)
+    style_spectrum_axes(ax, "PSA ratio to the outcrop motion [-]")
+    shade_unresolved(ax, info)
+    mark_layer_period(ax, layer)
+    ax.legend(fontsize=8)
+    ax.set_title(f"Amplification: {100 * SPECTRUM_DAMPING:g} %-damped PSA of each station over the input outcrop motion's")
+    return fig
+
+
+def figure_transfer(periods, spectra, info, reference):
+    ref = {key[1]: s for key, s in spectra.items() if key != INPUT_LABEL and key[0] == reference}
     if not ref:
         note(f"no station '{reference}' (the free-field reference, --reference): transfer ratio skipped")
-        return
-    others = [(name, c) for (name, c) in spectra if name != reference and c in ref]
+        return None
+    others = [key for key in spectra if key != INPUT_LABEL and key[0] != reference and key[1] in ref]
     if not others:
         note(f"no station other than '{reference}': transfer ratio skipped")
-        return
-    fig, ax = plt.subplots(figsize=(10, 5.5))
+        return None
+    fig, ax = plt.subplots(figsize=(10, 5.5), layout="constrained")
     for name, c in others:
         ax.plot(periods, spectra[(name, c)] / ref[c], label=f"{name} / {reference} (a_{c})")
     ax.axhline(1, color="k", lw=0.6)
-    ax.set_xscale("log")
-    ax.set_xlabel("period T [s]")
-    ax.set_ylabel("PSA ratio [-]")
-    ax.grid(alpha=0.3, which="both")
+    style_spectrum_axes(ax, "PSA ratio [-]")
+    shade_unresolved(ax, info)
     ax.legend(fontsize=8)
     ax.set_title(f"Transfer ratio: {100 * SPECTRUM_DAMPING:g} %-damped PSA of each station over the free field '{reference}'")
-    fig.tight_layout()
-    save(fig, os.path.join(plots, "transfer_ratio.png"), written)
+    return fig
+
+
+def write_spectra_csv(path, periods, spectra):
+    keys = list(spectra)
+    names = ["input_outcrop_psa_g" if k == INPUT_LABEL else f"{k[0]}_a_{k[1]}_psa_g" for k in keys]
+    np.savetxt(path, np.column_stack([periods] + [spectra[k] for k in keys]), delimiter=",",
+               header="period_s," + ",".join(names), comments="", fmt="%.6g")
 
 
 # ---------------------------------------------------------------------------------------
@@ -259,7 +393,31 @@ def chain_order(topology, npairs):
     return chains
 
 
-def plot_interfaces(run, plots, written):
+def rocking_angles(run, stations, coordinates):
+    """[(label, t [s], angle [rad])] of the structure's rotation: rigid_<region>.csv's theta_*
+    columns (the rigid body's history) if there are any, else the stations block_base_left and
+    block_base_right: (u_v(right) - u_v(left)) / their horizontal distance (counter-clockwise
+    positive in 2D, as theta_z). [] without either."""
+    angles = []
+    for path in sorted(glob.glob(os.path.join(run.path, "rigid_*.csv"))):
+        table = read_csv(path)
+        region = os.path.basename(path)[len("rigid_"):-len(".csv")]
+        for column in table.names:
+            if column.startswith("theta_") and len(table) and np.any(table[column] != 0):
+                angles.append((f"rigid body '{region}' {column}", table["t"], table[column]))
+    if angles:
+        return angles
+    left, right = "block_base_left", "block_base_right"
+    if left in stations and right in stations and left in coordinates and right in coordinates:
+        vertical = components(stations[left])[1]
+        span = float(np.linalg.norm(coordinates[right][:-1] - coordinates[left][:-1]))
+        n = min(len(stations[left]), len(stations[right]))
+        theta = (stations[right][f"u_{vertical}"][:n] - stations[left][f"u_{vertical}"][:n]) / span
+        angles.append((f"(u_{vertical}({right}) - u_{vertical}({left})) / {span:g} m", stations[left]["t"][:n], theta))
+    return angles
+
+
+def plot_interfaces(run, plots, written, rocking):
     names = run.interface_names()
     if not names:
         note("no interface output (interface_*.xmf): interface plots skipped")
@@ -277,8 +435,10 @@ def plot_interfaces(run, plots, written):
         if data is None or not data["fields"]:
             note(f"interface '{name}': no output steps in {xmf}: skipped")
             continue
-        plot_interface_history(name, data, plots, written)
-        plot_interface_profile(name, data, plots, written)
+        save(figure_interface_history(name, data, rocking), os.path.join(plots, f"interface_{name}_history.png"), written)
+        fig = figure_interface_profile(name, data)
+        if fig is not None:
+            save(fig, os.path.join(plots, f"interface_{name}_profile.png"), written)
 
 
 def scalar_field(data, name):
@@ -289,10 +449,12 @@ def scalar_field(data, name):
     return f[:, :, 0] if f.shape[2] == 1 else np.linalg.norm(f, axis=2)
 
 
-def plot_interface_history(name, data, plots, written):
+def figure_interface_history(name, data, rocking):
+    """Slip, opening, the rocking angle (rocking: rocking_angles(); its panel only if there is
+    one) and the pairs' status vs time."""
     t = data["times"]
     npairs = data["geometry"].shape[0]
-    fig, axes = plt.subplots(3, 1, figsize=(10, 9), sharex=True)
+    fig, axes = plt.subplots(4 if rocking else 3, 1, figsize=(10, 12 if rocking else 9), sharex=True, layout="constrained")
     slip = scalar_field(data, "accumulated_slip")
     slip_label = "accumulated slip"
     if slip is None:
@@ -331,7 +493,17 @@ def plot_interface_history(name, data, plots, written):
         ax.text(0.5, 0.5, "no opening field", ha="center", transform=ax.transAxes)
     ax.set_ylabel("opening [m]")
     ax.set_title(f"interface '{name}': normal opening over the pairs")
-    ax = axes[2]
+    if rocking:
+        ax = axes[2]
+        for label, tr, theta in rocking:
+            tt, y = thin(tr, theta * 1e3)
+            ax.plot(tt, y, lw=0.9, label=label)
+        ax.axhline(0, color="k", lw=0.5)
+        ax.set_ylabel("rocking angle [mrad]")
+        ax.set_title(f"the structure's rotation (peak {max(np.max(np.abs(th)) for _, _, th in rocking) * 1e3:.3g} mrad; "
+                     "counter-clockwise positive)")
+        ax.legend(fontsize=8)
+    ax = axes[-1]
     status = scalar_field(data, "status")
     if status is not None:
         s = np.rint(status).astype(int)
@@ -346,11 +518,10 @@ def plot_interface_history(name, data, plots, written):
     ax.set_xlabel("time [s]")
     for ax in axes:
         ax.grid(alpha=0.3)
-    fig.tight_layout()
-    save(fig, os.path.join(plots, f"interface_{name}_history.png"), written)
+    return fig
 
 
-def plot_interface_profile(name, data, plots, written):
+def figure_interface_profile(name, data):
     t = data["times"]
     xyz = data["geometry"]
     npairs = xyz.shape[0]
@@ -360,7 +531,7 @@ def plot_interface_profile(name, data, plots, written):
     opening = scalar_field(data, "opening")
     if slip is None and opening is None:
         note(f"interface '{name}': no slip or opening field: profile skipped")
-        return
+        return None
     chains = chain_order(data["topology"], npairs) if data["topology_type"] == "Polyline" else None
     if chains:
         # 2D: distance along the interface line, chain after chain.
@@ -382,7 +553,7 @@ def plot_interface_profile(name, data, plots, written):
         xlabel = "pair (sorted by x, then y, then z) [-]"
         subtitle = ""
     three_d = data["topology_type"] != "Polyline"
-    fig = plt.figure(figsize=(11, 8.5))
+    fig = plt.figure(figsize=(11, 8.5), layout="constrained")
     grid = fig.add_gridspec(2, 2, height_ratios=(1, 1.2))
     ax = fig.add_subplot(grid[0, :] if not three_d else grid[0, 0])
     status = scalar_field(data, "status")
@@ -434,12 +605,72 @@ def plot_interface_profile(name, data, plots, written):
     ax.set_xlabel(xlabel)
     ax.set_ylabel("time [s]")
     ax.set_title(f"interface '{name}': {label.split(' [')[0]} in space and time")
-    fig.tight_layout()
-    save(fig, os.path.join(plots, f"interface_{name}_profile.png"), written)
+    return fig
 
 
 # ---------------------------------------------------------------------------------------
 # Energy
+
+
+# energy.csv's columns (src/app/energy_csv.cpp, problem/energy_ledger.hpp) as what they hold.
+# external_work is the ledger's external + reactions: the work of f_external (gravity, surface
+# tractions, point and body forces, and the free-field sides' C v_ff + A t_ff) and of the held
+# dofs; absorbed takes the dashpots of the absorbing base and of the free-field sides (-C v).
+BULK_TERMS = [
+    ("kinetic", "kinetic energy (now)", "tab:blue", "-"),
+    ("strain", "strain energy (now)", "tab:orange", "-"),
+    ("input_work", "work of the incident wave at the base", "tab:green", "-"),
+    ("external_work", "work of the external forces: free-field sides, gravity, loads, supports", "tab:olive", "-"),
+    ("absorbed", "absorbed by the dashpots (absorbing base, free-field sides)", "tab:red", "-"),
+    ("damped", "dissipated by Rayleigh damping", "tab:brown", "-"),
+    ("anelastic", "work against the constant-Q damping (memory variables)", "tab:gray", "-"),
+    ("hysteretic_dissipated", "dissipated by the hysteretic soil", "tab:cyan", "-"),
+    ("darcy_dissipated", "dissipated by the pore-fluid flow (Darcy)", "tab:pink", "-"),
+]
+INTERFACE_TERMS = [
+    ("interface_work", "work of the interface forces on the bulk", "k", "-"),
+    ("interface_stored", "stored in the interface springs (now)", "tab:pink", "--"),
+    ("interface_dissipated", "dissipated by interface slip (Mohr-Coulomb)", "tab:purple", "-"),
+    ("contact_damped", "absorbed by the contact dashpots", "tab:cyan", "-"),
+]
+
+
+def figure_energy(e):
+    """Bulk terms (cumulative work, and the energies stored now), the interfaces' terms on an
+    axis of their own (they are small beside the bulk's), and the relative balance error."""
+    t = e["time"]
+    has_interface = any(c in e and np.any(e[c] != 0) for c, *_ in INTERFACE_TERMS)
+    rows = 2 + has_interface
+    fig, axes = plt.subplots(rows, 1, figsize=(10, 3.6 * rows + 0.6), sharex=True, squeeze=False,
+                             height_ratios=[2] + [1.4] * has_interface + [0.8], layout="constrained")
+    axes = axes[:, 0]
+    ax = axes[0]
+    for column, label, color, ls in BULK_TERMS:
+        if column in e and (column in ("kinetic", "strain") or np.any(e[column] != 0)):
+            tt, y = thin(t, e[column])
+            ax.plot(tt, y, color=color, ls=ls, label=label)
+    ax.set_ylabel("energy [J/m in 2D, J in 3D]")
+    ax.set_title("Energy budget of the bulk: work done since the start (cumulative) and energies stored now")
+    ax.legend(loc="upper left", fontsize=8)
+    if has_interface:
+        ax = axes[1]
+        for column, label, color, ls in INTERFACE_TERMS:
+            if column in e:
+                tt, y = thin(t, e[column])
+                ax.plot(tt, y, color=color, ls=ls, label=label)
+        ax.set_ylabel("energy [J/m in 2D, J in 3D]")
+        ax.set_title("Interfaces (all): stored, dissipated by slip, absorbed by the contact dashpots (cumulative)")
+        ax.legend(loc="upper left", fontsize=8)
+    ax = axes[-1]
+    if "relative_balance_error" in e:
+        tt, y = thin(t, e["relative_balance_error"])
+        ax.plot(tt, y, color="0.3", lw=0.6)
+        ax.set_title(f"balance error over the largest energy so far (largest {np.max(np.abs(y)):.2e}; round-off: a few 1e-15)")
+    ax.set_ylabel("relative balance error [-]")
+    ax.set_xlabel("time [s]")
+    for a in axes:
+        a.grid(alpha=0.3)
+    return fig
 
 
 def plot_energy(run, plots, written):
@@ -450,53 +681,54 @@ def plot_energy(run, plots, written):
     if not len(e) or "time" not in e:
         note("energy.csv has no rows: energy plot skipped")
         return
-    t = e["time"]
-    fig, ax = plt.subplots(figsize=(10, 5.5))
-    curves = [
-        ("kinetic", "kinetic", "tab:blue", "-"),
-        ("strain", "strain", "tab:orange", "-"),
-        ("input_work", "input work (incident wave, cumulative)", "tab:green", "-"),
-        ("external_work", "external work (gravity, tractions, supports, cumulative)", "tab:olive", "-"),
-        ("absorbed", "absorbed by the dashpots (cumulative)", "tab:red", "-"),
-        ("damped", "Rayleigh damping (cumulative)", "tab:brown", "-"),
-        ("anelastic", "constant-Q damping (work on the memory variables, cumulative)", "tab:gray", "-"),
-        ("interface_stored", "interface stored", "tab:pink", "--"),
-        ("interface_dissipated", "interface dissipated (cumulative)", "tab:purple", "--"),
-        ("contact_damped", "contact dashpots (cumulative)", "tab:cyan", "--"),
-    ]
-    for column, label, color, ls in curves:
-        if column in e and (column in ("kinetic", "strain", "input_work") or np.any(e[column] != 0)):
-            tt, y = thin(t, e[column])
-            ax.plot(tt, y, color=color, ls=ls, label=label)
-    if "interface_stored" in e and "interface_dissipated" in e:
-        total = e["interface_stored"] + e["interface_dissipated"]
-        if np.any(total != 0):
-            tt, y = thin(t, total)
-            ax.plot(tt, y, color="k", ls=":", label="interface stored + dissipated")
-    ax.set_xlabel("time [s]")
-    ax.set_ylabel("energy [J per m in 2D, J in 3D]")
-    ax.grid(alpha=0.3)
-    handles, labels = ax.get_legend_handles_labels()
-    if "balance_error" in e:
-        ax2 = ax.twinx()
-        tt, y = thin(t, e["balance_error"])
-        ax2.plot(tt, y, color="0.6", lw=0.5, alpha=0.8, label="balance error (right axis)")
-        ax.set_zorder(ax2.get_zorder() + 1)  # energies drawn over the (noisy) error
-        ax.patch.set_visible(False)
-        ax2.set_ylabel("balance error [J]", color="0.4")
-        h2, l2 = ax2.get_legend_handles_labels()
-        handles += h2
-        labels += l2
-        rel = e.get("relative_balance_error")
-        if rel is not None:
-            ax.set_title(f"Energy budget (largest relative balance error {np.max(np.abs(rel)):.2e})")
-        else:
-            ax.set_title("Energy budget")
+    save(figure_energy(e), os.path.join(plots, "energy.png"), written)
+
+
+def layer_argument(text):
+    try:
+        h, vs = (float(v) for v in text.split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"--layer {text}: allowed: H,VS (thickness [m], shear-wave speed [m/s])")
+    if not (h > 0 and vs > 0):
+        raise argparse.ArgumentTypeError(f"--layer {text}: allowed: H > 0 and VS > 0")
+    return h, vs
+
+
+def make_figures(out, plots, reference="free_field", layer=None):
+    """Writes every figure of the run folder OUT into PLOTS; returns the paths written."""
+    written = []
+    run = RunFolder(out)
+    info = run_info(run)
+    stations = read_stations(run)
+    coordinates = station_coordinates(run)
+    order = station_order(list(stations), coordinates)
+    motion = read_input_motion(run)
+    if stations or motion is not None:
+        save(figure_stations(stations, order, motion, info), os.path.join(plots, "stations_acceleration.png"), written)
     else:
-        ax.set_title("Energy budget")
-    ax.legend(handles, labels, loc="upper left", fontsize=8)
-    fig.tight_layout()
-    save(fig, os.path.join(plots, "energy.png"), written)
+        note("no station records (stations/*.csv or stations.h5) and no input motion: station plot skipped")
+    fig = figure_pore_pressure(stations, order)
+    if fig is not None:
+        save(fig, os.path.join(plots, "stations_pore_pressure.png"), written)
+    periods, spectra = station_spectra(stations, order, motion)
+    if spectra:
+        os.makedirs(plots, exist_ok=True)
+        write_spectra_csv(os.path.join(plots, "spectra.csv"), periods, spectra)
+        written.append(os.path.join(plots, "spectra.csv"))
+        save(figure_spectra(periods, spectra, info, layer), os.path.join(plots, "spectra.png"), written)
+        fig = figure_amplification(periods, spectra, info, layer, reference)
+        if fig is not None:
+            save(fig, os.path.join(plots, "amplification.png"), written)
+        else:
+            note("no input motion (input_motion.csv): amplification skipped")
+        fig = figure_transfer(periods, spectra, info, reference)
+        if fig is not None:
+            save(fig, os.path.join(plots, "transfer_ratio.png"), written)
+    else:
+        note("no station records and no input motion: response spectra skipped")
+    plot_interfaces(run, plots, written, rocking_angles(run, stations, coordinates))
+    plot_energy(run, plots, written)
+    return written
 
 
 def main():
@@ -504,22 +736,16 @@ def main():
     parser.add_argument("out", metavar="OUT", help="the -output_dir of the run")
     parser.add_argument("--out", dest="plots", metavar="DIR", help="where to write the figures (default OUT/plots)")
     parser.add_argument("--reference", default="free_field", metavar="STATION",
-                        help="the free-field station the transfer ratio divides by (default free_field)")
+                        help="the free-field surface station (default free_field): bold in the amplification, "
+                             "the denominator of the transfer ratio")
+    parser.add_argument("--layer", type=layer_argument, metavar="H,VS",
+                        help="the soil layer's thickness [m] and shear-wave speed [m/s]: its period 4 H / VS is "
+                             "marked on the spectra")
     args = parser.parse_args()
     if not os.path.isdir(args.out):
         print(f"plot_results: error: {args.out} is not a directory", file=sys.stderr)
         return 1
-    plots = args.plots or os.path.join(args.out, "plots")
-    written = []
-    run = RunFolder(args.out)
-    stations = read_stations(run)
-    plot_stations(args.out, plots, written, stations)
-    plot_pore_pressure(plots, written, stations)
-    periods, spectra = station_spectra(stations)
-    plot_spectra(plots, written, periods, spectra)
-    plot_transfer(plots, written, periods, spectra, args.reference)
-    plot_interfaces(run, plots, written)
-    plot_energy(run, plots, written)
+    written = make_figures(args.out, args.plots or os.path.join(args.out, "plots"), args.reference, args.layer)
     if not written:
         print(f"plot_results: error: nothing to plot in {args.out} (no stations, interfaces or energy.csv)",
               file=sys.stderr)

@@ -20,9 +20,9 @@ namespace {
 constexpr size_t kMaxDirLength = 3800;
 
 // True for a name slipwave writes into the output folder (see the writers: energy_csv.cpp,
-// run_report.cpp, checkpoint.cpp, stations.cpp, field_writer.cpp).
+// run_report.cpp, input_motion_csv.cpp, checkpoint.cpp, stations.cpp, field_writer.cpp).
 bool isRunFile(const std::string &name) {
-  static const char *const exact[] = {"energy.csv", "run_info.json", "checkpoint.bin", "checkpoint.bin.tmp", "volume.h5", "volume.xmf", "volume",
+  static const char *const exact[] = {"energy.csv", "run_info.json", "input_motion.csv", "checkpoint.bin", "checkpoint.bin.tmp", "volume.h5", "volume.xmf", "volume",
                                       ".volume.h5.partial", ".volume.xmf.partial", "stations.h5", ".stations.h5.spare", ".stations.h5.partial", "stations"};
   for (const char *e : exact)
     if (name == e) return true;

@@ -12,6 +12,7 @@ PetscErrorCode OutputFrames::Open(const problem::Elastodynamics &model, const st
   bool       kept      = false;
   PetscFunctionBeginUser;
   interval_ = interval;
+  PetscCall(base_.Setup(model.dm, model.bulk));
   std::vector<std::pair<PetscInt, PetscReal>> previous;
   for (size_t k = 0; k < times_.size(); ++k) previous.emplace_back((PetscInt)k, times_[k]);
   if (volume) {
@@ -34,6 +35,8 @@ PetscErrorCode OutputFrames::WriteIfDue(const problem::Elastodynamics &model, Pe
   *due = Due(step, t, last);
   if (!*due) PetscFunctionReturn(0);
   const PetscInt frame = (PetscInt)times_.size();
+  PetscScalar    base[3];
+  PetscCall(base_.Mean(u, base));
   if (volume_) {
     if (model.pore) PetscCall(porous::PorePressureTotal(model.pore));
     io::SoilCellOutput soil{};
@@ -54,10 +57,10 @@ PetscErrorCode OutputFrames::WriteIfDue(const problem::Elastodynamics &model, Pe
       PetscCall(DMRestoreLocalVector(model.dm, &u_local));
       soil = {relaxation.data(), max_strain.data(), ratio.data()};
     }
-    PetscCall(volume_->Write(model.dm, model.bulk, frame, t, u, v, a, model.initial_stress, model.pore ? model.pore->p_total : nullptr, model.pore ? model.pore->p : nullptr,
+    PetscCall(volume_->Write(model.dm, model.bulk, frame, t, u, base, v, a, model.initial_stress, model.pore ? model.pore->p_total : nullptr, model.pore ? model.pore->p : nullptr,
                              model.hysteresis ? &soil : nullptr));
   }
-  for (size_t k = 0; k < interfaces_.size(); ++k) PetscCall(interfaces_[k]->Write(model.interfaces[k], frame, t));
+  for (size_t k = 0; k < interfaces_.size(); ++k) PetscCall(interfaces_[k]->Write(model.interfaces[k], frame, t, u, base));
   times_.push_back(t);
   while (next_output_ <= t * (1 + 1e-12)) next_output_ += interval_;
   PetscFunctionReturn(0);
@@ -66,6 +69,7 @@ PetscErrorCode OutputFrames::WriteIfDue(const problem::Elastodynamics &model, Pe
 PetscErrorCode OutputFrames::Close() {
   PetscFunctionBeginUser;
   if (volume_) PetscCall(volume_->Close());
+  PetscCall(base_.Destroy());
   for (auto &out : interfaces_) PetscCall(out->Close());
   PetscFunctionReturn(0);
 }

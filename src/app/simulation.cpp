@@ -15,6 +15,7 @@
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/core/options_check.hpp"
 #include "slipwave/input/record_files_check.hpp"
+#include "slipwave/io/input_motion_csv.hpp"
 #include "slipwave/io/stations.hpp"
 #include "slipwave/porous/pore_pressure.hpp"
 #include "slipwave/problem/elastodynamics.hpp"
@@ -263,7 +264,7 @@ PetscErrorCode setInitialState(Run *r, TS ts, Vec u, Vec v) {
   PetscFunctionReturn(0);
 }
 
-// OUTPUT_DIR with energy.csv and run_info.json (rank 0), and the output frames.
+// OUTPUT_DIR with energy.csv, run_info.json and input_motion.csv (rank 0), and the output frames.
 PetscErrorCode openOutputs(Run *r, TS ts) {
   const bool restarted = r->opt.restart[0];
   PetscFunctionBeginUser;
@@ -274,6 +275,10 @@ PetscErrorCode openOutputs(Run *r, TS ts) {
     r->energy_csv.SetHysteretic(r->model.hysteresis != nullptr);
     PetscCall(r->energy_csv.Open(r->opt.output_dir, restarted ? CheckpointFolder(r->opt.restart) + "/energy.csv" : "", r->restart_step));
     WriteRunInfo(r->model, r->opt.output_dir, dt);
+    const input::BoundaryConditions &bc = r->model.bc;
+    // Rank 0 alone: a failure warns (an error here would leave the other ranks waiting).
+    if (bc.input.active() && bc.input_wave != input::InputWave::None && !io::WriteInputMotion(r->opt.output_dir, bc.input, (int)bc.input_component, r->max_time))
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "warning: cannot write %s/input_motion.csv: the plots will not show the input motion\n", r->opt.output_dir));
   }
   // Default: 50 frames over the run.
   const PetscReal interval = r->opt.output_interval > 0 ? r->opt.output_interval : r->max_time / 50;

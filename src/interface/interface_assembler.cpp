@@ -207,6 +207,20 @@ PetscErrorCode InterfaceAssembler::applyToPairs(Vec x, Vec f, const std::functio
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode InterfaceAssembler::SoilSideDisplacement(Vec u, std::vector<double> *values) const {
+  const PetscInt     np = (PetscInt)pairs_.id.size();
+  const PetscScalar *pu;
+  PetscFunctionBeginUser;
+  PetscCall(VecScatterBegin(scatter_, u, pair_u_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(scatter_, u, pair_u_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGetArrayRead(pair_u_, &pu));
+  values->resize(np * dim_);
+  for (PetscInt p = 0; p < np; ++p)
+    for (PetscInt i = 0; i < dim_; ++i) (*values)[p * dim_ + i] = PetscRealPart(pu[p * 2 * dim_ + i]); // soil node first, then structure
+  PetscCall(VecRestoreArrayRead(pair_u_, &pu));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode InterfaceAssembler::SetPorePressure(Vec p) {
   const PetscInt np = (PetscInt)pairs_.id.size();
   PetscFunctionBeginUser;

@@ -26,6 +26,7 @@ PetscErrorCode InterfaceOutput::Open(MPI_Comm comm, PetscInt dim, const interfac
                                      const std::vector<std::pair<PetscInt, PetscReal>> *previous) {
   const meshing::InterfacePairs &pairs = iface.pairs();
   PetscFunctionBeginUser;
+  dim_ = dim;
   PetscCall(pairVector(comm, pairs.n_global, dim, &geometry_));
   std::vector<PetscInt> rows(pairs.id.size() * dim);
   for (size_t p = 0; p < pairs.id.size(); ++p)
@@ -36,6 +37,7 @@ PetscErrorCode InterfaceOutput::Open(MPI_Comm comm, PetscInt dim, const interfac
   PetscCall(ISCreateGeneral(comm, (PetscInt)pairs.face_pairs.size(), pairs.face_pairs.data(), PETSC_COPY_VALUES, &topology_));
   PetscCall(ISSetBlockSize(topology_, pairs.nodes_per_face));
   names_ = iface.pairFieldNames();
+  for (Vec *v : {&u_soil_, &u_relative_}) PetscCall(pairVector(comm, pairs.n_global, dim, v));
   for (size_t f = 0; f < names_.size(); ++f) {
     const int w = f < std::size(kWidths) ? kWidths[f] : 1;
     Vec       v;
@@ -49,7 +51,7 @@ PetscErrorCode InterfaceOutput::Open(MPI_Comm comm, PetscInt dim, const interfac
   grid.nodes_per_cell = (int)pairs.nodes_per_face;
   grid.cell_type      = dim == 2 ? "Polyline" : (pairs.nodes_per_face == 3 ? "Triangle" : "Quadrilateral");
   if (previous) {
-    std::vector<FieldRef> layout;
+    std::vector<FieldRef> layout = {{"displacement", Centering::Node, u_soil_}, {"displacement_relative", Centering::Node, u_relative_}};
     for (size_t f = 0; f < fields_.size(); ++f) layout.push_back({names_[f], Centering::Node, fields_[f]});
     PetscCall(writer_.Resume(comm, dir, grid, geometry_, topology_, *previous, layout));
   } else {
@@ -58,11 +60,28 @@ PetscErrorCode InterfaceOutput::Open(MPI_Comm comm, PetscInt dim, const interfac
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode InterfaceOutput::fill(const interface::InterfaceAssembler &iface) {
+PetscErrorCode InterfaceOutput::fill(const interface::InterfaceAssembler &iface, Vec u, const PetscScalar *base) {
   const meshing::InterfacePairs &pairs = iface.pairs();
+  const PetscInt                 dim   = dim_;
   std::vector<double>         values;
   int                         per_pair;
   PetscFunctionBeginUser;
+  PetscCall(iface.SoilSideDisplacement(u, &values));
+  {
+    std::vector<PetscInt> rows(values.size());
+    std::vector<double>   relative(values.size());
+    for (size_t p = 0; p < pairs.id.size(); ++p)
+      for (PetscInt k = 0; k < dim; ++k) {
+        rows[p * dim + k]     = pairs.id[p] * dim + k;
+        relative[p * dim + k] = values[p * dim + k] - PetscRealPart(base[k]);
+      }
+    PetscCall(VecSetValues(u_soil_, (PetscInt)rows.size(), rows.data(), values.data(), INSERT_VALUES));
+    PetscCall(VecSetValues(u_relative_, (PetscInt)rows.size(), rows.data(), relative.data(), INSERT_VALUES));
+    for (Vec v : {u_soil_, u_relative_}) {
+      PetscCall(VecAssemblyBegin(v));
+      PetscCall(VecAssemblyEnd(v));
+    }
+  }
   iface.pairFields(&values, &per_pair);
   int offset = 0;
   for (size_t f = 0; f < fields_.size(); ++f) {
@@ -82,11 +101,11 @@ PetscErrorCode InterfaceOutput::fill(const interface::InterfaceAssembler &iface)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode InterfaceOutput::Write(const interface::InterfaceAssembler &iface, PetscInt step, PetscReal t) {
+PetscErrorCode InterfaceOutput::Write(const interface::InterfaceAssembler &iface, PetscInt step, PetscReal t, Vec u, const PetscScalar *base) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(core::event_output, 0, 0, 0, 0));
-  PetscCall(fill(iface));
-  std::vector<FieldRef> refs;
+  PetscCall(fill(iface, u, base));
+  std::vector<FieldRef> refs = {{"displacement", Centering::Node, u_soil_}, {"displacement_relative", Centering::Node, u_relative_}};
   for (size_t f = 0; f < fields_.size(); ++f) refs.push_back({names_[f], Centering::Node, fields_[f]});
   PetscCall(writer_.WriteStep(step, t, refs));
   PetscCall(PetscLogEventEnd(core::event_output, 0, 0, 0, 0));
@@ -97,6 +116,8 @@ PetscErrorCode InterfaceOutput::Close() {
   PetscFunctionBeginUser;
   PetscCall(writer_.Close());
   PetscCall(VecDestroy(&geometry_));
+  PetscCall(VecDestroy(&u_soil_));
+  PetscCall(VecDestroy(&u_relative_));
   PetscCall(ISDestroy(&topology_));
   for (Vec &v : fields_) PetscCall(VecDestroy(&v));
   fields_.clear();

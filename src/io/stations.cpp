@@ -365,15 +365,25 @@ herr_t appendRows(hid_t dset, const std::vector<double> &rows, int width) {
 }
 
 // Appends rows (per station, row-major, row values each) to the station groups of an HDF5 file,
-// created with its groups and empty extendible datasets first if create.
-PetscErrorCode appendRowsToFile(const std::string &path, bool create, const std::vector<std::string> &names, const std::vector<std::vector<double>> &rows, int row,
-                                const std::vector<Dataset> &datasets) {
+// created with its groups (each with the attribute "coordinates", the station's point [m],
+// dim of coords per station, which plots use to order the stations) and empty extendible
+// datasets first if create.
+PetscErrorCode appendRowsToFile(const std::string &path, bool create, const std::vector<std::string> &names, const std::vector<double> &coords,
+                                const std::vector<std::vector<double>> &rows, int row, const std::vector<Dataset> &datasets) {
   PetscFunctionBeginUser;
   hid_t file = create ? H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT) : H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", path.c_str());
   herr_t status = 0;
   for (size_t s = 0; s < names.size() && status >= 0; ++s) {
     hid_t        group = create ? H5Gcreate2(file, names[s].c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : H5Gopen2(file, names[s].c_str(), H5P_DEFAULT);
+    if (create) {
+      const hsize_t dim   = coords.size() / names.size();
+      hid_t         space = H5Screate_simple(1, &dim, nullptr);
+      hid_t         attr  = H5Acreate2(group, "coordinates", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
+      status              = attr < 0 ? (herr_t)-1 : H5Awrite(attr, H5T_NATIVE_DOUBLE, &coords[s * dim]);
+      if (attr >= 0) H5Aclose(attr);
+      H5Sclose(space);
+    }
     const size_t nt    = rows[s].size() / row;
     for (size_t q = 0; q < datasets.size() && status >= 0; ++q) {
       const int           width = datasets[q].width, cols = std::max(width, 1);
@@ -476,14 +486,14 @@ PetscErrorCode Stations::Flush(MPI_Comm comm, const std::string &dir, bool last)
   if (stress_) datasets.insert(datasets.end(), {{"stress", after, nstress}, {"strain", after + nstress, (int)strainColumns().size()}});
   if (first) {
     const std::string partial = dir + "/.stations.h5.partial";
-    PetscCall(appendRowsToFile(partial, true, names_, fresh, row, datasets));
+    PetscCall(appendRowsToFile(partial, true, names_, coords_, fresh, row, datasets));
     PetscCheck(std::rename(partial.c_str(), h5path.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s: %s", h5path.c_str(), std::strerror(errno));
-    if (!last) PetscCall(appendRowsToFile(spare, true, names_, fresh, row, datasets));
+    if (!last) PetscCall(appendRowsToFile(spare, true, names_, coords_, fresh, row, datasets));
     previous_.assign(names_.size(), {});
   } else {
     std::vector<std::vector<double>> rows = previous_;
     for (size_t s = 0; s < names_.size(); ++s) rows[s].insert(rows[s].end(), fresh[s].begin(), fresh[s].end());
-    PetscCall(appendRowsToFile(spare, false, names_, rows, row, datasets));
+    PetscCall(appendRowsToFile(spare, false, names_, coords_, rows, row, datasets));
     PetscCall(exchangeFiles(spare, h5path));
     previous_ = std::move(fresh);
   }

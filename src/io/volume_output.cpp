@@ -40,6 +40,7 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
   PetscCall(VecRestoreArray(u_local_, &x));
   PetscCall(DMLocalToGlobal(dm, u_local_, INSERT_VALUES, geometry_));
   PetscCall(VecSetBlockSize(geometry_, dim));
+  PetscCall(VecDuplicate(geometry_, &u_relative_));
 
   PetscCall(VecCreateMPI(comm, ncell * fem::kStressComponents, PETSC_DETERMINE, &stress_));
   PetscCall(VecSetBlockSize(stress_, fem::kStressComponents));
@@ -62,6 +63,7 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
   if (previous) {
     // The node fields have the geometry's layout; the cell fields those of stress and region.
     std::vector<FieldRef> layout = {{"displacement", Centering::Node, geometry_},
+                                    {"displacement_relative", Centering::Node, geometry_},
                                     {"velocity", Centering::Node, geometry_},
                                     {"acceleration", Centering::Node, geometry_},
                                     {"stress", Centering::Cell, stress_},
@@ -75,7 +77,7 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a,
+PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, const PetscScalar *base, Vec v, Vec a,
                                    const std::vector<double> &initial_stress, Vec p_total, Vec p_excess, const SoilCellOutput *soil) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(core::event_output, 0, 0, 0, 0));
@@ -99,7 +101,15 @@ PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscIn
   PetscCall(VecRestoreArray(stress_, &s));
   PetscCall(VecRestoreArrayRead(u_local_, &ul));
   for (Vec x : {u, v, a}) PetscCall(VecSetBlockSize(x, bulk.dimension()));
+  PetscInt     n;
+  PetscScalar *r;
+  PetscCall(VecCopy(u, u_relative_));
+  PetscCall(VecGetLocalSize(u_relative_, &n));
+  PetscCall(VecGetArray(u_relative_, &r));
+  for (PetscInt i = 0; i < n; ++i) r[i] -= base[i % bulk.dimension()];
+  PetscCall(VecRestoreArray(u_relative_, &r));
   std::vector<FieldRef> fields = {{"displacement", Centering::Node, u},
+                                            {"displacement_relative", Centering::Node, u_relative_},
                                             {"velocity", Centering::Node, v},
                                             {"acceleration", Centering::Node, a},
                                             {"stress", Centering::Cell, stress_},
@@ -116,6 +126,7 @@ PetscErrorCode VolumeOutput::Close() {
   PetscFunctionBeginUser;
   PetscCall(writer_.Close());
   PetscCall(VecDestroy(&geometry_));
+  PetscCall(VecDestroy(&u_relative_));
   PetscCall(VecDestroy(&stress_));
   PetscCall(VecDestroy(&max_strain_));
   PetscCall(VecDestroy(&modulus_ratio_));

@@ -26,7 +26,7 @@ echo "ok: -output_fields false keeps the interface output and drops the volume g
 echo "my notes" > "$WORK/a/notes.txt"
 if $SW $O -output_dir "$WORK/a" > "$WORK/b.log" 2> "$WORK/b.err"; then echo "FAIL: a reused folder was accepted"; exit 1; fi
 [ "$(grep -c '' "$WORK/b.err")" -eq 1 ] || { echo "FAIL: not one stderr line:"; cat "$WORK/b.err"; exit 1; }
-grep -E "^slipwave: error: -output_dir = .*/a: holds the output of an earlier run \(energy.csv, interface_base, interface_base.h5, interface_base.xmf, \.\.\.\); allowed: a new or empty folder, or -output_overwrite" "$WORK/b.err"
+grep -E "^slipwave: error: -output_dir = .*/a: holds the output of an earlier run \(energy.csv, input_motion.csv, interface_base, interface_base.h5, \.\.\.\); allowed: a new or empty folder, or -output_overwrite" "$WORK/b.err"
 ! grep -q "geostatic\|mesh:" "$WORK/b.log" || { echo "FAIL: the reused folder was refused only after the set-up"; exit 1; }
 $SW $O -output_dir "$WORK/a" -output_overwrite > "$WORK/c.log"
 [ -e "$WORK/a/notes.txt" ] || { echo "FAIL: -output_overwrite deleted a file that is not the run's"; exit 1; }

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "slipwave/io/base_displacement.hpp"
 #include "slipwave/io/interface_output.hpp"
 #include "slipwave/io/volume_output.hpp"
 #include "slipwave/problem/elastodynamics.hpp"
@@ -37,6 +38,7 @@ private:
   PetscReal                                         interval_    = 0;
   PetscReal                                         next_output_ = 0;
   std::vector<PetscReal>                            times_; // times of the frames written
+  io::BaseDisplacement                              base_;   // taken off the displacement_relative fields
   std::unique_ptr<io::VolumeOutput>                 volume_; // null with -output_fields false
   std::vector<std::unique_ptr<io::InterfaceOutput>> interfaces_;
 };

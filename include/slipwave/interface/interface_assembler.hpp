@@ -79,6 +79,9 @@ public:
   void pairFields(std::vector<double> *values, int *per_pair) const;
   // Their names, in order (saturated soil side: also the pore pressure and sigma_N + p).
   std::vector<std::string> pairFieldNames() const;
+  // The displacement of each of this rank's pairs' soil node (dim per pair, in pairs().id
+  // order) in the global vector u, for output: the interface grid moves with the soil side.
+  PetscErrorCode SoilSideDisplacement(Vec u, std::vector<double> *values) const;
   PetscErrorCode Destroy();
 
   const meshing::InterfaceSpec  &spec() const { return spec_; }

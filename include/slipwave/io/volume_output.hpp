@@ -1,7 +1,8 @@
 // The volume grid for FieldWriter: node coordinates and cell connectivity in the global node
 // numbering of the displacement vector (node i = entries [i*dim, (i+1)*dim) of a global
 // vector), and per output step u, v, a at nodes plus cell stress and region id (and, with
-// hysteretic soil, its largest shear strain and secant G/Gmax per cell).
+// hysteretic soil, its largest shear strain and secant G/Gmax per cell), and
+// displacement_relative, u less the base's displacement (io/base_displacement.hpp).
 #pragma once
 #include <petscdm.h>
 
@@ -39,12 +40,14 @@ public:
   // vectors of porous/pore_pressure.hpp), written as the node fields pore_pressure and
   // excess_pore_pressure [Pa]; else null. The stress written is then the effective stress
   // (total = effective - alpha p I).
-  PetscErrorCode Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, Vec v, Vec a, const std::vector<double> &initial_stress,
+  // base: the base's displacement (dim values) taken off u in displacement_relative.
+  PetscErrorCode Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, const PetscScalar *base, Vec v, Vec a, const std::vector<double> &initial_stress,
                        Vec p_total = nullptr, Vec p_excess = nullptr, const SoilCellOutput *soil = nullptr);
   PetscErrorCode Close();
 
 private:
   FieldWriter writer_;
+  Vec         u_relative_ = nullptr; // displacement_relative
   Vec         geometry_ = nullptr, stress_ = nullptr, region_ = nullptr, u_local_ = nullptr;
   Vec         max_strain_ = nullptr, modulus_ratio_ = nullptr; // hysteretic soil's cell fields, or null
   IS          topology_ = nullptr;
