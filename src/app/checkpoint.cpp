@@ -26,6 +26,8 @@ constexpr PetscInt kVersion = 8; // 2: ledger with `anelastic`, attenuation memo
                                  // 7: free-field columns keep constant-Q memory at every GLL
                                  //    point of a segment (both ends at p = 1)
                                  // 8: the hysteretic soil's state and the ledger's hysteretic work
+                                 //    (a free-field column beside hysteretic soil appends its Iwan
+                                 //    states to its record; a linear column's record is unchanged)
 constexpr PetscInt kHeader  = 10;
 
 // The ledger as a flat array, in a fixed order.

@@ -6,6 +6,7 @@
 
 #include "slipwave/input/boundary_faces.hpp"
 #include "slipwave/medium/attenuation.hpp"
+#include "slipwave/medium/hysteresis.hpp"
 #include "slipwave/mesh/spectral_layout.hpp"
 #include "slipwave/mesh/vertex_coordinates.hpp"
 #include "slipwave/numerics/gll_basis.hpp"
@@ -24,7 +25,8 @@ PetscErrorCode vertexHeight(const mesh::VertexCoordinates &vc, PetscInt v, doubl
 }
 
 bool sameMaterial(const medium::RegionMaterialInfo &a, const medium::RegionMaterialInfo &b) {
-  return a.elastic.rho == b.elastic.rho && a.elastic.vp == b.elastic.vp && a.elastic.vs == b.elastic.vs && a.damping_ratio == b.damping_ratio;
+  return a.elastic.rho == b.elastic.rho && a.elastic.vp == b.elastic.vp && a.elastic.vs == b.elastic.vs && a.damping_ratio == b.damping_ratio && a.model == b.model &&
+         a.hysteretic.model == b.hysteretic.model;
 }
 
 PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryConditions &bc, const std::vector<medium::RegionMaterialInfo> &materials,
@@ -150,6 +152,14 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
     const std::string q_problem = side->column.setAttenuation(seg_models, seg_factor);
     PetscCheck(q_problem.empty(), comm, PETSC_ERR_PLIB, "-bc_%s_type freefield: %s", name.c_str(), q_problem.c_str());
   }
+  // Hysteretic regions: the segments beside them carry the region's Iwan model on the same
+  // element moduli, so the side's traction is the stress the interior's cells would give
+  // (one model per region, which the segments of an element share).
+  std::vector<std::shared_ptr<const physics::HystereticSoilModel>> region_soil(materials.size()), seg_soil(nseg);
+  for (size_t r = 0; r < materials.size(); ++r) PetscCall(medium::HystereticElementModel(materials[r], &region_soil[r]));
+  for (int e = 0; e < nseg; ++e) seg_soil[e] = region_soil[seg_min[e]];
+  const std::string h_problem = side->column.setHysteresis(seg_soil);
+  PetscCheck(h_problem.empty(), comm, PETSC_ERR_PLIB, "-bc_%s_type freefield: %s", name.c_str(), h_problem.c_str());
   if (bc.input_wave != InputWave::None) side->column.setInput((int)bc.input_component, bc.input_wave == InputWave::P);
   PetscFunctionReturn(0);
 }

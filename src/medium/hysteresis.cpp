@@ -204,6 +204,26 @@ void cellFields(const Hysteresis *h, const PetscScalar *u_local, double *relaxat
 
 } // namespace
 
+PetscErrorCode HystereticElementModel(const RegionMaterialInfo &m, std::shared_ptr<const physics::HystereticSoilModel> *model) {
+  PetscFunctionBeginUser;
+  *model = m.model == MaterialModel::Hysteretic ? m.hysteretic.model : nullptr;
+  const double mu = m.fe.lame.mu, lambda = m.fe.lame.lambda;
+  // A damped region's element moduli are the unrelaxed ones (medium/attenuation.hpp): the
+  // model takes them as its small-strain moduli, the same G/Gmax curve, so that it is the
+  // linear element below the elastic limit and the constant-Q body acts on its stress.
+  if (*model && mu != (*model)->shearModulus()) {
+    physics::HystereticSurfaces surfaces;
+    surfaces.count = (*model)->surfaces();
+    // The same curve the options' check built a model from: it cannot fail here.
+    try {
+      *model = std::make_shared<const physics::HystereticSoilModel>(mu, lambda + 2.0 / 3.0 * mu, m.hysteretic.backbone, surfaces);
+    } catch (const std::invalid_argument &e) {
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_PLIB, "region %s: the hysteretic model on the unrelaxed moduli: %s", m.region.c_str(), e.what());
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector<RegionMaterialInfo> &materials, Hysteresis **out) {
   PetscFunctionBeginUser;
   *out = nullptr;
@@ -230,22 +250,9 @@ PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector
     if (materials[r].model != MaterialModel::Hysteretic) continue;
     HystereticRegion reg;
     reg.region = (PetscInt)r;
-    reg.model  = materials[r].hysteretic.model;
+    PetscCall(HystereticElementModel(materials[r], &reg.model));
     reg.lambda = materials[r].fe.lame.lambda;
     reg.mu     = materials[r].fe.lame.mu;
-    // A damped region's element moduli are the unrelaxed ones (medium/attenuation.hpp): the
-    // model takes them as its small-strain moduli, the same G/Gmax curve, so that it is the
-    // linear element below the elastic limit and the constant-Q body acts on its stress.
-    if (reg.mu != reg.model->shearModulus()) {
-      physics::HystereticSurfaces surfaces;
-      surfaces.count = reg.model->surfaces();
-      // The same curve the options' check built a model from: it cannot fail here.
-      try {
-        reg.model = std::make_shared<const physics::HystereticSoilModel>(reg.mu, reg.lambda + 2.0 / 3.0 * reg.mu, materials[r].hysteretic.backbone, surfaces);
-      } catch (const std::invalid_argument &e) {
-        SETERRQ(PETSC_COMM_SELF, PETSC_ERR_PLIB, "region %s: the hysteretic model on the unrelaxed moduli: %s", materials[r].region.c_str(), e.what());
-      }
-    }
     // Mean: one point per cell, with the cell's mean strain (the volume average of the Gauss
     // points' gradients) and its volume.
     const bool mean = materials[r].hysteretic.points == StressPoints::Mean;

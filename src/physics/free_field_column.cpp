@@ -44,6 +44,25 @@ double symmetricLambdaMax(int n, std::vector<double> A) {
 
 bool sameElastic(const ElasticMaterial &a, const ElasticMaterial &b) { return a.rho == b.rho && a.vp == b.vp && a.vs == b.vs; }
 
+int soilStateSize(int dim, const HystereticSoilModel &model) { return dim == 2 ? hystereticStateSize<2>(model) : hystereticStateSize<3>(model); }
+
+// The Iwan update, in place, at a point of a height-only motion with g[c] = du_c/dz (the last
+// axis vertical): the full strain tensor of the motion in, out[c] = sigma_{c z} (c = dim-1:
+// sigma_zz) and out[dim] = sigma_xx.
+void soilPoint(const HystereticSoilModel &model, int dim, const double *g, double *state, double *out) {
+  if (dim == 2) {
+    const double strain[3] = {0.0, g[1], 0.5 * g[0]}; // xx, yy, xy
+    double       sigma[4];
+    hystereticUpdate<2>(model, state, strain, sigma, state);
+    out[0] = sigma[2], out[1] = sigma[1], out[2] = sigma[0];
+  } else {
+    const double strain[6] = {0.0, 0.0, g[2], 0.0, 0.5 * g[1], 0.5 * g[0]}; // xx, yy, zz, xy, yz, xz
+    double       sigma[6];
+    hystereticUpdate<3>(model, state, strain, sigma, state);
+    out[0] = sigma[5], out[1] = sigma[4], out[2] = sigma[2], out[3] = sigma[0];
+  }
+}
+
 } // namespace
 
 std::string FreeFieldColumn::setup(int dim, const std::vector<double> &heights, const std::vector<ElasticMaterial> &materials, double alpha, double beta,
@@ -119,6 +138,9 @@ std::string FreeFieldColumn::setup(int dim, const std::vector<double> &heights, 
   memory_weight_.clear();
   zeta_.clear();
   spring_old_.clear();
+  soil_.clear();
+  soil_offset_.clear();
+  for (std::vector<double> *x : {&soil_state_, &soil_stress_, &lateral_zeta_, &lateral_old_}) x->clear();
   base_dashpot_.assign(dim_, 0.0);
   for (int c = 0; c < dim_; ++c) base_dashpot_[c] = mat_[0].rho * (c == dim_ - 1 ? mat_[0].vp : mat_[0].vs);
   for (std::vector<double> *x : {&u_, &v_, &a_, &v_half_, &a_star_, &work_}) x->assign(n * dim_, 0.0);
@@ -146,6 +168,44 @@ std::string FreeFieldColumn::setAttenuation(const std::vector<ConstantQModel> &m
   return "";
 }
 
+std::string FreeFieldColumn::setHysteresis(const std::vector<std::shared_ptr<const HystereticSoilModel>> &models) {
+  const int ne = elementCount(), n1 = p_ + 1;
+  if ((int)models.size() != segmentCount()) return "a free-field column needs one hysteretic model (or none) per segment";
+  soil_.assign(ne, nullptr);
+  soil_offset_.assign(ne, -1);
+  long size = 0;
+  for (int e = 0; e < ne; ++e) {
+    const std::shared_ptr<const HystereticSoilModel> &m = models[e * p_];
+    for (int a = 1; a < p_; ++a)
+      if (models[e * p_ + a] != m) return "the segments of a free-field element must share their hysteretic model";
+    if (!m) continue;
+    // Its small-strain moduli must be the element's (unrelaxed) ones, so that below the
+    // elastic limit the segment is the linear one.
+    const auto   lm = lame(mat_[e * p_]);
+    const double f = modulus_factor_[e * p_], mu = lm.mu * f, bulk = (lm.lambda + 2.0 / 3.0 * lm.mu) * f;
+    if (std::fabs(m->shearModulus() - mu) > 1e-12 * mu || std::fabs(m->bulkModulus() - bulk) > 1e-12 * bulk) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "the hysteretic model of the element from height %g has Gmax %.17g and K %.17g, its segment %.17g and %.17g", z_[e * p_], m->shearModulus(),
+                    m->bulkModulus(), mu, bulk);
+      return buf;
+    }
+    soil_[e]        = m;
+    soil_offset_[e] = size;
+    size += (long)n1 * soilStateSize(dim_, *m);
+  }
+  if (size == 0) {
+    soil_.clear();
+    soil_offset_.clear();
+    return "";
+  }
+  const size_t L = memory_omega_.size();
+  soil_state_.assign(size, 0.0);
+  soil_stress_.assign((size_t)ne * n1 * (dim_ + 1), 0.0);
+  lateral_zeta_.assign((size_t)ne * n1 * L, 0.0);
+  lateral_old_.assign(L > 0 ? (size_t)ne * n1 : 0, 0.0);
+  return "";
+}
+
 void FreeFieldColumn::setInput(int component, bool p_wave) {
   input_component_ = component;
   input_impedance_ = mat_.empty() ? 0.0 : mat_[0].rho * (p_wave ? mat_[0].vp : mat_[0].vs);
@@ -157,16 +217,41 @@ double FreeFieldColumn::scaledGradient(const std::vector<double> &x, int e, int 
   return 2 * g;
 }
 
-void FreeFieldColumn::internalForce(const std::vector<double> &x, std::vector<double> &f) const {
+void FreeFieldColumn::internalForce(const std::vector<double> &x, std::vector<double> &f, bool skip_soil) const {
   std::fill(f.begin(), f.end(), 0.0);
   const int n1 = p_ + 1;
-  for (int e = 0; e < elementCount(); ++e)
+  for (int e = 0; e < elementCount(); ++e) {
+    if (skip_soil && hysteretic() && soil_[e]) continue;
     for (int c = 0; c < dim_; ++c)
       for (int a = 0; a <= p_; ++a) {
         double s = 0;
         for (int b = 0; b <= p_; ++b) s += ref_S2_[a * n1 + b] * x[(e * p_ + b) * dim_ + c];
         f[(e * p_ + a) * dim_ + c] += k_[e * dim_ + c] * s;
       }
+  }
+}
+
+// f_a = sum_q w_q D_qa sigma_q per component: the integral of the stress against the basis
+// gradient (the Jacobian L/2 cancels the 2/L of the gradient), K u for a linear stress.
+void FreeFieldColumn::soilForce(std::vector<double> &f) {
+  const int n1 = p_ + 1, ns = dim_ + 1;
+  double    g[3];
+  for (int e = 0; e < elementCount(); ++e) {
+    if (!soil_[e]) continue;
+    const double L = elementLength(e);
+    const int    size = soilStateSize(dim_, *soil_[e]);
+    double      *sig  = &soil_stress_[(size_t)e * n1 * ns];
+    for (int q = 0; q <= p_; ++q) {
+      for (int c = 0; c < dim_; ++c) g[c] = scaledGradient(u_, e, c, q) / L;
+      soilPoint(*soil_[e], dim_, g, &soil_state_[soil_offset_[e] + (long)q * size], &sig[q * ns]);
+    }
+    for (int c = 0; c < dim_; ++c)
+      for (int a = 0; a <= p_; ++a) {
+        double s = 0;
+        for (int q = 0; q <= p_; ++q) s += ref_w_[q] * ref_D_[q * n1 + a] * sig[q * ns + c];
+        f[(e * p_ + a) * dim_ + c] += s;
+      }
+  }
 }
 
 // The memory over a step of h ending at u_ (the unrelaxed elastic stress k_U 2 sum_b D_qb u_b
@@ -178,13 +263,24 @@ void FreeFieldColumn::memoryForce(double h, std::vector<double> &f) {
   if (L == 0) return;
   MemoryUpdate upd[8];
   for (size_t l = 0; l < L; ++l) upd[l] = memoryUpdate(memory_omega_[l], h);
-  const int n1 = p_ + 1;
+  const int n1 = p_ + 1, ns = dim_ + 1;
   double    total[kMaxColumnDegree + 1];
-  for (int e = 0; e < elementCount(); ++e)
+  for (int e = 0; e < elementCount(); ++e) {
+    // A hysteretic element's memory is driven by its Iwan stress (the lateral one too).
+    const double *sig = hysteretic() && soil_[e] ? &soil_stress_[(size_t)e * n1 * ns] : nullptr;
+    if (sig)
+      for (int q = 0; q <= p_; ++q) {
+        const size_t j = (size_t)e * n1 + q;
+        for (size_t l = 0; l < L; ++l) {
+          double &z = lateral_zeta_[j * L + l];
+          z         = upd[l].decay * z + memory_weight_[e * p_ * L + l] * (upd[l].end * sig[q * ns + dim_] + upd[l].start * lateral_old_[j]);
+        }
+        lateral_old_[j] = sig[q * ns + dim_];
+      }
     for (int c = 0; c < dim_; ++c) {
       for (int q = 0; q <= p_; ++q) {
         const int    j      = (e * dim_ + c) * n1 + q;
-        const double spring = k_[e * dim_ + c] * scaledGradient(u_, e, c, q);
+        const double spring = sig ? sig[q * ns + c] : k_[e * dim_ + c] * scaledGradient(u_, e, c, q);
         total[q]            = 0;
         for (size_t l = 0; l < L; ++l) {
           const double y = memory_weight_[e * p_ * L + l];
@@ -200,6 +296,7 @@ void FreeFieldColumn::memoryForce(double h, std::vector<double> &f) {
         f[(e * p_ + a) * dim_ + c] -= pull;
       }
     }
+  }
 }
 
 // a* already holds M^{-1}(f_in - K u - beta K v_half); solve the centred nodal damping
@@ -221,6 +318,7 @@ void FreeFieldColumn::start(double t0, double v_in0) {
   std::fill(v_half_.begin(), v_half_.end(), 0.0);
   std::fill(zeta_.begin(), zeta_.end(), 0.0);
   std::fill(spring_old_.begin(), spring_old_.end(), 0.0);
+  for (std::vector<double> *x : {&soil_state_, &soil_stress_, &lateral_zeta_, &lateral_old_}) std::fill(x->begin(), x->end(), 0.0);
   t_ = t0;
   // a* = M^{-1} f_in (u = v = 0).
   std::fill(a_star_.begin(), a_star_.end(), 0.0);
@@ -235,7 +333,8 @@ void FreeFieldColumn::step(double h, double v_in_new) {
     v_half_[k] = v_[k] + 0.5 * h * a_[k];
     u_[k] += h * v_half_[k];
   }
-  internalForce(u_, a_star_);
+  internalForce(u_, a_star_, true);
+  if (hysteretic()) soilForce(a_star_);
   memoryForce(h, a_star_);
   if (beta_ > 0) {
     internalForce(v_half_, work_);
@@ -266,6 +365,22 @@ void FreeFieldColumn::stress(int segment, int node, double *sigma) const {
   };
   for (int k = 0; k < dim_ * dim_; ++k) sigma[k] = 0.0;
   auto grad = [&](const std::vector<double> &x, int c) { return scaledGradient(x, e, c, q) / L; };
+  if (hysteretic() && soil_[e]) {
+    // The Iwan stress of the last step, the viscous stress of the linear (unrelaxed) moduli as
+    // the main mesh's beta K_U v_{n+1/2}, less the memory of each component.
+    const double *sg = &soil_stress_[((size_t)e * (p_ + 1) + q) * (dim_ + 1)];
+    for (int c = 0; c < z; ++c) {
+      const double tau = sg[c] + beta_ * lm.mu * grad(v_half_, c) - memory(c);
+      sigma[c * dim_ + z] = tau;
+      sigma[z * dim_ + c] = tau;
+    }
+    const double vzz = beta_ * grad(v_half_, z);
+    double       lateral_memory = 0;
+    for (size_t l = 0; l < nm; ++l) lateral_memory += lateral_zeta_[((size_t)e * (p_ + 1) + q) * nm + l];
+    sigma[z * dim_ + z] = sg[z] + (lm.lambda + 2 * lm.mu) * vzz - memory(z);
+    for (int c = 0; c < z; ++c) sigma[c * dim_ + c] = sg[dim_] + lm.lambda * vzz - lateral_memory;
+    return;
+  }
   for (int c = 0; c < z; ++c) {
     const double tau = lm.mu * (grad(u_, c) + beta_ * grad(v_half_, c)) - memory(c);
     sigma[c * dim_ + z] = tau;
@@ -307,16 +422,18 @@ double FreeFieldColumn::stableStep() const { return centralDifferenceStableStep(
 
 std::vector<double> FreeFieldColumn::state() const {
   std::vector<double> s{t_, started_ ? 1.0 : 0.0};
-  for (const std::vector<double> *x : {&u_, &v_, &a_, &v_half_, &zeta_, &spring_old_}) s.insert(s.end(), x->begin(), x->end());
+  for (const std::vector<double> *x : {&u_, &v_, &a_, &v_half_, &zeta_, &spring_old_, &soil_state_, &soil_stress_, &lateral_zeta_, &lateral_old_})
+    s.insert(s.end(), x->begin(), x->end());
   return s;
 }
 
 bool FreeFieldColumn::setState(const std::vector<double> &s) {
-  if (s.size() != 2 + 4 * u_.size() + zeta_.size() + spring_old_.size()) return false;
+  if (s.size() != 2 + 4 * u_.size() + zeta_.size() + spring_old_.size() + soil_state_.size() + soil_stress_.size() + lateral_zeta_.size() + lateral_old_.size())
+    return false;
   t_       = s[0];
   started_ = s[1] != 0.0;
   size_t o = 2;
-  for (std::vector<double> *x : {&u_, &v_, &a_, &v_half_, &zeta_, &spring_old_}) {
+  for (std::vector<double> *x : {&u_, &v_, &a_, &v_half_, &zeta_, &spring_old_, &soil_state_, &soil_stress_, &lateral_zeta_, &lateral_old_}) {
     std::copy(s.begin() + o, s.begin() + o + x->size(), x->begin());
     o += x->size();
   }

@@ -224,10 +224,7 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   if (m->hysteresis) {
     PetscCall(VecDuplicate(m->mass, &m->f_hysteretic));
     PetscCall(VecZeroEntries(m->f_hysteretic));
-    // Not yet: the free-field columns and the DRM's free field are linear, and the DRM's layer
-    // forces are K u of its cells.
-    PetscCheck(!m->free_field, comm, PETSC_ERR_USER_INPUT,
-               "-bc_<side>_type freefield with a hysteretic region (-material_<r>_model hysteretic): not supported yet; allowed: absorbing, tied or fixed sides");
+    // Not yet: the DRM's free field is linear, and its layer forces are K u of its cells.
     PetscCheck(!m->drm, comm, PETSC_ERR_USER_INPUT,
                "-input_method drm with a hysteretic region (-material_<r>_model hysteretic): not supported yet; allowed: -input_method base");
   }

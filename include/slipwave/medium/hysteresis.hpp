@@ -62,6 +62,10 @@ struct Hysteresis {
   bool                          has_trial = false;
 };
 
+// The Iwan model of a region on its element moduli (fe.lame: the unrelaxed ones in a damped
+// region), the one its cells use (and the free-field columns beside them); null if the region
+// is not hysteretic.
+PetscErrorCode HystereticElementModel(const RegionMaterialInfo &m, std::shared_ptr<const physics::HystereticSoilModel> *model);
 // *out is null when no region is hysteretic.
 PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector<RegionMaterialInfo> &materials, Hysteresis **out);
 PetscErrorCode HysteresisDestroy(Hysteresis **h);

@@ -40,12 +40,29 @@
 // and the other components vanish. The column returns it per segment (constant there, as in
 // the main mesh's cells), plus the stiffness-proportional viscous stress beta D:eps(v_{n+1/2}),
 // because the main mesh applies beta K v_{n+1/2} as an internal force as well.
+//
+// Hysteretic segments (setHysteresis): the element's stress at each of its GLL points (both
+// ends at p = 1, where the strain is constant) is the Iwan model of its region
+// (physics/hysteretic_soil.hpp) fed the full strain of the height-only motion, eps_xz = u_x'/2
+// (eps_yz = u_y'/2 in 3D) and eps_zz = u_z', the function the main mesh's cells evaluate at
+// their points; its sigma_xz, sigma_yz, sigma_zz give the nodal forces f_a = sum_q w_q D_qa
+// sigma_q (the elastic chains' K u for a linear stress), and its sigma_xx (the deviator
+// couples it to sigma_zz once a surface yields) is the lateral stress the side receives. The
+// horizontal normal stresses are equal (sigma_xx = sigma_yy in 3D: every deviatoric strain of
+// the motion, hence every plastic strain, has e_xx = e_yy and e_xy = 0), so one is kept. The
+// state advances in step() (the column is copied as the trial by its caller, which keeps the
+// committed one: the main mesh's trial/commit rule). The stable step stays the elastic one:
+// the Iwan tangent modulus is at most Gmax. With constant-Q the memory is driven by the Iwan
+// stress at each point (as the main mesh drives its memory by the force of the soil's stress),
+// one more set of memory variables for the lateral stress.
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "slipwave/physics/constant_q.hpp"
 #include "slipwave/physics/elastic_material.hpp"
+#include "slipwave/physics/hysteretic_soil.hpp"
 
 namespace slipwave::physics {
 
@@ -75,6 +92,11 @@ public:
   // d zeta_l/dt = w_l (Y_l k_U Δu - zeta_l), updated exactly (memoryUpdate) once per step.
   // All damped segments share the relaxation frequencies. Call after setup.
   std::string setAttenuation(const std::vector<ConstantQModel> &models, const std::vector<double> &factor);
+  // Hysteretic soil per segment: models[e] is the segment's Iwan model on its element moduli
+  // (the unrelaxed ones where damped; null: elastic), the same model the main mesh's cells of
+  // its region use. The segments of an element share it. Call after setAttenuation, if any.
+  std::string setHysteresis(const std::vector<std::shared_ptr<const HystereticSoilModel>> &models);
+  bool        hysteretic() const { return !soil_offset_.empty(); }
 
   // State at rest at time t0; a_0 from the input velocity v_in(t0).
   void start(double t0, double v_in0);
@@ -104,12 +126,17 @@ public:
   double omegaMax() const;
   double stableStep() const;
 
-  // Full state for checkpoints: t, u, v, a, v_half, memory variables and last spring forces.
+  // Full state for checkpoints: t, u, v, a, v_half, memory variables and last spring forces,
+  // then (hysteretic columns only) the Iwan states, their last stresses and the lateral memory.
   std::vector<double> state() const;
   bool                setState(const std::vector<double> &s);
 
 private:
-  void internalForce(const std::vector<double> &x, std::vector<double> &f) const; // K x
+  // K x over the elements (skip_soil: the elastic ones only).
+  void internalForce(const std::vector<double> &x, std::vector<double> &f, bool skip_soil = false) const;
+  // Advances the Iwan states of the hysteretic elements to u_, keeps their stresses and adds
+  // the force of those stresses.
+  void soilForce(std::vector<double> &f);
   void nodalDamping(double s, double v_in);                                        // from a_star_ and v_
 
   int                          dim_ = 2;
@@ -131,6 +158,14 @@ private:
   // Per element, component and GLL point q (j = (e * dim + c) * (p+1) + q): the memory
   // variables zeta_[j * L + l] and the last unrelaxed elastic stress spring_old_[j].
   std::vector<double>          zeta_, spring_old_;
+  // Hysteretic elements: per element its model (null: elastic) and the offset of its points'
+  // states in soil_state_ (-1: elastic); per element and GLL point (j = e * (p+1) + q) the Iwan
+  // stress of the last step, soil_stress_[j * (dim+1) + c]: sigma_{c z} for c < dim, then
+  // sigma_xx; with constant-Q the memory of sigma_xx, lateral_zeta_[j * L + l], and its last
+  // drive lateral_old_[j].
+  std::vector<std::shared_ptr<const HystereticSoilModel>> soil_;
+  std::vector<long>            soil_offset_;
+  std::vector<double>          soil_state_, soil_stress_, lateral_zeta_, lateral_old_;
   int    elementCount() const { return segmentCount() / p_; }
   double elementLength(int e) const { return z_[(e + 1) * p_] - z_[e * p_]; }
   // 2 sum_b D_qb x_b at point q of element e, component c: the derivative times the length.
