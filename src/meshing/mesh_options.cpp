@@ -1,9 +1,11 @@
 #include "slipwave/meshing/mesh_options.hpp"
 
 #include "slipwave/meshing/box_refinement.hpp"
+#include "slipwave/meshing/region_box_fit.hpp"
 #include "slipwave/numerics/gll_basis.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace slipwave::meshing {
 namespace {
@@ -94,6 +96,43 @@ PetscErrorCode readRegionBoxes(MPI_Comm comm, PetscInt dim, const std::vector<st
   PetscFunctionReturn(0);
 }
 
+std::string joinBounds(const std::vector<double> &b) {
+  std::string out;
+  for (size_t k = 0; k < b.size(); ++k) {
+    char v[32];
+    std::snprintf(v, sizeof v, "%s%.6g", k ? "," : "", b[k]);
+    out += v;
+  }
+  return out;
+}
+
+// Each region box must be one the box mesh can represent (region_box_fit.hpp): refused before
+// the mesh is built, naming the box the cells would give.
+PetscErrorCode checkRegionBoxesFit(MPI_Comm comm, PetscInt dim, const BoxSpec &box, const std::vector<std::string> &regions,
+                                   const std::vector<std::vector<PetscReal>> &bounds) {
+  PetscFunctionBeginUser;
+  for (size_t r = 0; r < regions.size(); ++r) {
+    if (bounds[r].empty()) continue;
+    const std::vector<double> given(bounds[r].begin(), bounds[r].end());
+    const RegionBoxFit        fit = RegionBoxOnMesh((int)dim, box, given);
+    if (fit.fits) continue;
+    char        tolerance[32]; // PETSc's own %g would print 1 as "1."
+    std::snprintf(tolerance, sizeof tolerance, "%g", 100 * kRegionBoxFitTolerance);
+    std::string faces, grid;
+    for (PetscInt d = 0; d < dim; ++d) {
+      char line[96];
+      std::snprintf(line, sizeof line, "%s%c = %.6g + k*%.6g", d ? ", " : "", "xyz"[d], (double)box.lower[d], (double)((box.upper[d] - box.lower[d]) / box.faces[d]));
+      grid += line;
+      faces += (d ? "," : "") + std::to_string(box.faces[d]);
+    }
+    SETERRQ(comm, PETSC_ERR_USER_INPUT,
+            "-region_%s_box = %s does not fit the mesh (-mesh_box_faces %s): cells join a region by their centroid, so region '%s' would be the box %s; allowed: "
+            "box faces on grid lines (%s, within %s %% of a cell) or on or beyond the mesh's sides (change the box or -mesh_box_faces)",
+            regions[r].c_str(), joinBounds(given).c_str(), faces.c_str(), regions[r].c_str(), joinBounds(fit.meshed).c_str(), grid.c_str(), tolerance);
+  }
+  PetscFunctionReturn(0);
+}
+
 // -interfaces a,b with -interface_<name>_regions soil_region,structure_region and an
 // optional -interface_<name>_faces <face label> (Gmsh physical group). `regions`: the
 // regions left once the void ones are removed.
@@ -171,6 +210,7 @@ PetscErrorCode MeshOptionsRead(MPI_Comm comm, PetscInt *dim, MeshOptions *o) {
   if (!from_file) {
     PetscCall(readBoxOptions(comm, *dim, &o->box));
     PetscCall(readRegionBoxes(comm, *dim, o->regions, &o->region_boxes));
+    PetscCall(checkRegionBoxesFit(comm, *dim, o->box, o->regions, o->region_boxes));
     for (const std::string &v : o->voids)
       PetscCheck(std::find(o->regions.begin(), o->regions.end(), v) != o->regions.end(), comm, PETSC_ERR_USER_INPUT,
                  "-void_regions names '%s', which is not in -regions; allowed: region names listed in -regions", v.c_str());

@@ -13,7 +13,7 @@
 # beta = 2 xi / (w1 + w2) (Rayleigh damping xi at f1 and f2).
 set -eu
 . tests/tools/lib.sh
-box="-mesh_box_faces 20,10 -mesh_box_upper 40,20 -regions soil,rock -region_rock_box 0,40,0,5 -material_soil_rho 1900 -material_soil_vp 500
+box="-mesh_box_faces 20,10 -mesh_box_upper 40,20 -regions soil,rock -region_rock_box 0,40,0,6 -material_soil_rho 1900 -material_soil_vp 500
  -material_soil_vs 200 -material_rock_rho 2400 -material_rock_vp 1600 -material_rock_vs 800 -bc_bottom_type absorbing -ts_max_time 1 -dry_run"
 $SW $box > "$WORK/elastic.log"
 $SW $box -material_rock_damping_ratio 0.05 > "$WORK/q10.log"
