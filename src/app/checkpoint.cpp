@@ -151,6 +151,28 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
   PetscFunctionReturn(0);
 }
 
+namespace {
+
+// The header and the scene text at the start of a checkpoint: a checkpoint of another scene
+// is refused, naming the options that differ.
+PetscErrorCode readSceneHeader(MPI_Comm comm, const std::string &path, PetscViewer viewer, PetscInt header[kHeader]) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerBinaryRead(viewer, header, kHeader, nullptr, PETSC_INT));
+  PetscCheck(header[0] == kMagic && header[1] == kVersion, comm, PETSC_ERR_USER_INPUT, "-restart = %s is not a slipwave checkpoint (version %" PetscInt_FMT ")",
+             path.c_str(), kVersion);
+  PetscInt scene_length;
+  PetscCall(PetscViewerBinaryRead(viewer, &scene_length, 1, nullptr, PETSC_INT));
+  std::string there(scene_length, '\0'), here;
+  PetscCall(PetscViewerBinaryRead(viewer, there.data(), scene_length, nullptr, PETSC_CHAR));
+  PetscCall(SceneOptionsText(&here));
+  const std::string differ = SceneOptionsDifference(there, here);
+  PetscCheck(differ.empty(), comm, PETSC_ERR_USER_INPUT, "-restart = %s was written with another scene: %s; allowed: the scene options of the run that wrote it (output, duration and progress options may change)",
+             path.c_str(), differ.c_str());
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
 std::string CheckpointFolder(const std::string &path) {
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   return parent.empty() ? "." : parent.string();
@@ -164,6 +186,14 @@ PetscErrorCode CheckpointVerify(MPI_Comm comm, const std::string &path) {
   if (rank == 0) std::snprintf(problem, sizeof problem, "%s", CheckpointSealProblem(path).c_str());
   PetscCallMPI(MPI_Bcast(problem, sizeof problem, MPI_CHAR, 0, comm));
   PetscCheck(!problem[0], comm, PETSC_ERR_FILE_OPEN, "-restart = %s: %s; allowed: a complete checkpoint written by -checkpoint_interval", path.c_str(), problem);
+  // The scene before the mesh and the stations are built: another mesh would otherwise stop
+  // on whatever differs first (a station outside it), not on the checkpoint.
+  PetscViewer viewer;
+  PetscInt    header[kHeader];
+  PetscCall(PetscViewerBinaryOpen(comm, path.c_str(), FILE_MODE_READ, &viewer));
+  PetscCall(PetscViewerBinarySetSkipInfo(viewer, PETSC_TRUE));
+  PetscCall(readSceneHeader(comm, path, viewer, header));
+  PetscCall(PetscViewerDestroy(&viewer));
   PetscFunctionReturn(0);
 }
 
@@ -176,17 +206,7 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(PetscViewerBinaryOpen(comm, path.c_str(), FILE_MODE_READ, &viewer));
   PetscCall(PetscViewerBinarySetSkipInfo(viewer, PETSC_TRUE));
-  PetscCall(PetscViewerBinaryRead(viewer, header, kHeader, nullptr, PETSC_INT));
-  PetscCheck(header[0] == kMagic && header[1] == kVersion, comm, PETSC_ERR_USER_INPUT, "-restart = %s is not a slipwave checkpoint (version %" PetscInt_FMT ")",
-             path.c_str(), kVersion);
-  PetscInt scene_length;
-  PetscCall(PetscViewerBinaryRead(viewer, &scene_length, 1, nullptr, PETSC_INT));
-  std::string there(scene_length, '\0'), here;
-  PetscCall(PetscViewerBinaryRead(viewer, there.data(), scene_length, nullptr, PETSC_CHAR));
-  PetscCall(SceneOptionsText(&here));
-  const std::string differ = SceneOptionsDifference(there, here);
-  PetscCheck(differ.empty(), comm, PETSC_ERR_USER_INPUT, "-restart = %s was written with another scene: %s; allowed: the scene options of the run that wrote it (output, duration and progress options may change)",
-             path.c_str(), differ.c_str());
+  PetscCall(readSceneHeader(comm, path, viewer, header));
   PetscCheck(header[2] == size, comm, PETSC_ERR_USER_INPUT, "-restart = %s was written on %" PetscInt_FMT " ranks; allowed: restart on the same number of ranks (this run: %d)",
              path.c_str(), header[2], size);
   PetscCheck(header[3] == s.model->dim && header[5] == (PetscInt)s.model->interfaces.size(), comm, PETSC_ERR_USER_INPUT,

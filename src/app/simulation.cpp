@@ -127,15 +127,25 @@ PetscErrorCode flushSeries(Run *r, bool last) {
   PetscFunctionReturn(0);
 }
 
-// A SIGTERM stops the run here, between steps, with everything sampled so far on disk.
+// A SIGTERM or SIGINT stops the run here, between steps, with everything sampled so far on
+// disk, and says how the run can continue.
 PetscErrorCode stopIfRequested(Run *r, PetscInt step, PetscReal t) {
-  bool requested;
+  int signal;
   PetscFunctionBeginUser;
-  PetscCall(StopRequested(r->model.comm, step, &requested));
-  if (!requested) PetscFunctionReturn(0);
+  PetscCall(StopRequested(r->model.comm, step, &signal));
+  if (!signal) PetscFunctionReturn(0);
   PetscCall(flushSeries(r, true));
-  SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT, "stopped by SIGTERM after step %" PetscInt_FMT ", t = %g s; stations hold every step up to it, energy.csv every -energy_interval-th, the fields every output time up to it (%s)",
-          step, (double)t, r->opt.output_dir);
+  const PetscInt every = r->opt.checkpoint_interval;
+  char           resume[PETSC_MAX_PATH_LEN + 256];
+  if (every > 0 && step >= every)
+    std::snprintf(resume, sizeof resume, "to resume from the last checkpoint (step %ld): -restart %s/checkpoint.bin", (long)(step / every * every), r->opt.output_dir);
+  else
+    std::snprintf(resume, sizeof resume, "%s", every > 0 ? "no checkpoint yet (-checkpoint_interval steps not reached)" : "to be able to resume, run with -checkpoint_interval <steps>, then -restart <output_dir>/checkpoint.bin");
+  char time_text[32]; // PETSc's own %g would print 0 as "0."
+  std::snprintf(time_text, sizeof time_text, "%g", (double)t);
+  SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT,
+          "stopped by %s after step %" PetscInt_FMT ", t = %s s; stations hold every step up to it, energy.csv every -energy_interval-th, the fields every output time up to it (%s); %s",
+          StopSignalName(signal), step, time_text, r->opt.output_dir, resume);
 }
 
 PetscErrorCode checkpointIfDue(Run *r, TS ts, PetscInt step) {

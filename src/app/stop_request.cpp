@@ -7,9 +7,16 @@
 namespace slipwave::app {
 namespace {
 
-volatile std::sig_atomic_t g_requested = 0;
+volatile std::sig_atomic_t g_requested = 0; // the signal received, 0: none
 
-extern "C" void noteRequest(int) { g_requested = 1; }
+// A second Ctrl-C stops at once, as a user pressing it again expects.
+extern "C" void noteRequest(int signal) {
+  if (signal == SIGINT && g_requested == SIGINT) {
+    std::signal(SIGINT, SIG_DFL);
+    std::raise(SIGINT);
+  }
+  g_requested = signal;
+}
 
 // When the ranks next agree: the step, and rank 0's clock at the last agreement.
 struct NextAgreement {
@@ -27,14 +34,17 @@ PetscErrorCode StopRequestInstall() {
   action.sa_handler = noteRequest;
   sigemptyset(&action.sa_mask);
   PetscCheck(sigaction(SIGTERM, &action, nullptr) == 0, PETSC_COMM_SELF, PETSC_ERR_SYS, "cannot install the SIGTERM handler");
+  PetscCheck(sigaction(SIGINT, &action, nullptr) == 0, PETSC_COMM_SELF, PETSC_ERR_SYS, "cannot install the SIGINT handler");
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode StopRequested(MPI_Comm comm, PetscInt step, bool *requested) {
+const char *StopSignalName(int signal) { return signal == SIGINT ? "SIGINT (Ctrl-C)" : "SIGTERM"; }
+
+PetscErrorCode StopRequested(MPI_Comm comm, PetscInt step, int *requested) {
   PetscMPIInt    rank;
   PetscLogDouble now;
   PetscFunctionBeginUser;
-  *requested = false;
+  *requested = 0;
   if (step < g_next.step) PetscFunctionReturn(0);
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(PetscTime(&now));
@@ -46,7 +56,7 @@ PetscErrorCode StopRequested(MPI_Comm comm, PetscInt step, bool *requested) {
     agreed[1] = (long)std::clamp(std::floor(kStopAgreementSeconds * steps_per_second), 1.0, (double)kStopAgreementMaxSteps);
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, agreed, 2, MPI_LONG, MPI_MAX, comm));
-  *requested       = agreed[0] != 0;
+  *requested       = (int)agreed[0];
   g_next.step      = step + agreed[1];
   g_next.last_step = step;
   g_next.last_wall = now;

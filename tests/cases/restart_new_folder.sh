@@ -9,8 +9,8 @@
 #   with all 9 frames (t = 0, 0.1, ..., 0.8) also once A's HDF5 files are removed, the frames,
 #   energy.csv and the station files equal C's bit for bit (the continued state is
 #   bit-identical, restart.sh).
-# - A changed material, or an added scene option, is refused in one line naming the option and
-#   both values.
+# - A changed material, an added scene option, or another mesh, is refused in one line naming
+#   the option and both values.
 # - A checkpoint cut short, or with one byte changed, is refused in one line (its seal).
 set -eu
 . tests/tools/lib.sh
@@ -60,6 +60,10 @@ refused scene "-restart = .*/A/checkpoint.bin was written with another scene: -m
   $O -material_soil_vs 180 -restart "$WORK/A/checkpoint.bin" -output_dir "$WORK/S"
 refused added "-restart = .*/A/checkpoint.bin was written with another scene: -station_side not given there, soil here; allowed: the scene options" \
   $O -station_side soil -restart "$WORK/A/checkpoint.bin" -output_dir "$WORK/S2"
+# Another mesh is named as the checkpoint's mismatch before the mesh is built (not as a station
+# outside the smaller mesh).
+refused mesh "-restart = .*/A/checkpoint.bin was written with another scene: -mesh_box_upper 61,40 there, 61,30 here; allowed: the scene options" \
+  $O -mesh_box_upper 61,30 -restart "$WORK/A/checkpoint.bin" -output_dir "$WORK/S3"
 size=$(stat -c %s "$WORK/A/checkpoint.bin")
 head -c $((size / 2)) "$WORK/A/checkpoint.bin" > "$WORK/cut.bin"
 refused truncated "-restart = .*/cut.bin: no checkpoint seal at its end \(cut short, or not a slipwave checkpoint\); allowed: a complete checkpoint" \

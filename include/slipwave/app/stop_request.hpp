@@ -1,4 +1,4 @@
-// SIGTERM (a batch system's time limit, kill, Ctrl-C is SIGINT and is left to PETSc): instead of
+// SIGTERM (a batch system's time limit, kill) and SIGINT (Ctrl-C; a second Ctrl-C stops at once): instead of
 // dying mid-write, the run notes the request, and the monitor stops at the end of a step on
 // every rank together, after flushing the stations and energy.csv, with one line.
 // The ranks agree on it with one MPI_Allreduce, not at every step (on 2 ranks of a small 2D box
@@ -13,11 +13,15 @@ namespace slipwave::app {
 inline constexpr double   kStopAgreementSeconds  = 0.25;
 inline constexpr PetscInt kStopAgreementMaxSteps = 100000; // bounds the wait when steps slow down
 
-// Replaces PETSc's SIGTERM handler (which aborts at once) with one that only notes the request.
+// Replaces PETSc's SIGTERM and SIGINT handlers (which abort at once) with one that only notes
+// the request.
 PetscErrorCode StopRequestInstall();
-// Collective (every rank calls it at every step, steps increasing): whether any rank has
-// received SIGTERM, known at the steps where the ranks agree (the first call is one; rank 0
-// picks the next from the step rate it measured); false in between.
-PetscErrorCode StopRequested(MPI_Comm comm, PetscInt step, bool *requested);
+// Collective (every rank calls it at every step, steps increasing): the signal any rank has
+// received (SIGTERM or SIGINT; the larger number where ranks got both), known at the steps
+// where the ranks agree (the first call is one; rank 0 picks the next from the step rate it
+// measured); 0 in between and without a signal.
+PetscErrorCode StopRequested(MPI_Comm comm, PetscInt step, int *signal);
+// "SIGTERM" or "SIGINT (Ctrl-C)", for the message that ends the run.
+const char *StopSignalName(int signal);
 
 } // namespace slipwave::app
