@@ -49,7 +49,7 @@ PetscErrorCode RecordFilesCheck(MPI_Comm comm) {
     if (file == given.end() || file->second.empty()) continue; // the module says what is missing
     RecordFile f{file->second, isLoad(given, prefix)};
     f.format = choiceIndex(given, prefix + "record_format", kRecordFormats, 2, -1);
-    f.units  = choiceIndex(given, prefix + "record_units", kRecordUnits, 3, 0);
+    f.units  = choiceIndex(given, prefix + "record_units", kRecordUnits, kRecordUnitCount, 0);
     if (f.format == -2 || f.units == -2) continue;
     const auto baseline = given.find(prefix + "baseline_correction");
     f.baseline = !f.load && !(baseline != given.end() && falseWord(baseline->second));

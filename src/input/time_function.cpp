@@ -8,6 +8,8 @@
 #include <variant>
 
 #include "slipwave/core/option_choice.hpp"
+#include "slipwave/core/warnings.hpp"
+#include "slipwave/physics/plausible_values.hpp"
 #include "slipwave/input/ground_motion_record.hpp"
 #include "slipwave/physics/source_time_function.hpp"
 
@@ -75,7 +77,7 @@ PetscErrorCode readRecordCollective(MPI_Comm comm, const std::string &path, bool
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) *status = at2 ? readPeerAt2(path, record) : readAccelerationCsv(path, record, unit);
+  if (rank == 0) *status = at2 ? readPeerAt2(path, record, unit) : readAccelerationCsv(path, record, unit);
   int ok = status->ok ? 1 : 0;
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
   status->ok = ok;
@@ -91,9 +93,9 @@ PetscErrorCode readRecordCollective(MPI_Comm comm, const std::string &path, bool
   record->time.resize(n), record->acceleration.resize(n);
   PetscCallMPI(MPI_Bcast(record->time.data(), (int)n, MPI_DOUBLE, 0, comm));
   PetscCallMPI(MPI_Bcast(record->acceleration.data(), (int)n, MPI_DOUBLE, 0, comm));
-  int g_unit = record->file_unit == AccelerationUnit::G;
-  PetscCallMPI(MPI_Bcast(&g_unit, 1, MPI_INT, 0, comm));
-  record->file_unit = g_unit ? AccelerationUnit::G : AccelerationUnit::MetresPerSecondSquared;
+  int file_unit = (int)record->file_unit;
+  PetscCallMPI(MPI_Bcast(&file_unit, 1, MPI_INT, 0, comm));
+  record->file_unit = (AccelerationUnit)file_unit;
   PetscFunctionReturn(0);
 }
 
@@ -126,7 +128,7 @@ PetscErrorCode RecordFileRead(MPI_Comm comm, const std::string &prefix, const Re
   ReadStatus         status;
   PetscFunctionBeginUser;
   if (f.load) {
-    PetscCall(readRecordCollective(comm, f.path, false, AccelerationUnit::MetresPerSecondSquared, record, &status));
+    PetscCall(readRecordCollective(comm, f.path, false, AccelerationUnit::Factor, record, &status));
     PetscCheck(status.ok, comm, PETSC_ERR_FILE_OPEN, "%srecord (CSV): %s; allowed: a CSV file of lines \"time,factor\", optional header, at least 2 samples, times increasing",
                p.c_str(), status.message.c_str());
     PetscFunctionReturn(0);
@@ -141,15 +143,13 @@ PetscErrorCode RecordFileRead(MPI_Comm comm, const std::string &prefix, const Re
                p.c_str());
     at2 = ext == "at2";
   }
-  const AccelerationUnit unit = f.units == 1   ? AccelerationUnit::G
-                                : f.units == 0 ? AccelerationUnit::FromHeader
-                                               : AccelerationUnit::MetresPerSecondSquared;
-  PetscCheck(!at2 || unit != AccelerationUnit::MetresPerSecondSquared, comm, PETSC_ERR_USER_INPUT,
-             "%srecord_units = %s does not apply to a PEER .AT2 record (its values are in g); allowed: auto or g", p.c_str(), kRecordUnits[f.units]);
+  const AccelerationUnit units[kRecordUnitCount] = {AccelerationUnit::FromHeader, AccelerationUnit::G, AccelerationUnit::MetresPerSecondSquared,
+                                                    AccelerationUnit::CentimetresPerSecondSquared};
+  const AccelerationUnit unit = units[f.units];
   PetscCall(readRecordCollective(comm, f.path, at2, unit, record, &status));
-  const std::string allowed = at2 ? "a PEER NGA .AT2 file: 3 header lines, a 4th with NPTS and DT, then NPTS accelerations in g"
-                                  : "a CSV file of lines \"time,acceleration\" [s; m/s^2, or g when the header's acceleration column says g or with " + p +
-                                      "record_units g], optional header, at least 2 samples, times increasing";
+  const std::string allowed = at2 ? "a PEER NGA .AT2 file: 3 header lines, a 4th with NPTS and DT, then NPTS accelerations in g (or the unit its header names)"
+                                  : "a CSV file of lines \"time,acceleration\" [s; m/s^2, or the unit the header's acceleration column names, or " + p +
+                                      "record_units], optional header, at least 2 samples, times increasing";
   PetscCheck(status.ok, comm, PETSC_ERR_FILE_OPEN, "%srecord (%s): %s; allowed: %s", p.c_str(), at2 ? "PEER .AT2" : "CSV", status.message.c_str(), allowed.c_str());
   PetscCheck(!f.baseline || record->time.size() >= kBaselineMinSamples, comm, PETSC_ERR_USER_INPUT,
              "%srecord = %s has %zu samples; allowed: at least %zu for the baseline correction (or %sbaseline_correction false)", p.c_str(), file, record->time.size(),
@@ -229,7 +229,7 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
   PetscCall(core::OptionsChoice(PetscOptionsObject, (q + "record_format").c_str(), "format of the record: csv or at2 (default: from the file extension)", kRecordFormats, 2,
                                 &format, &has_format));
   PetscCall(core::OptionsChoice(PetscOptionsObject, (q + "record_units").c_str(),
-                                "unit of a CSV record's acceleration: auto (from the header's acceleration column: g if it says g, else m/s^2), g, m/s^2", kRecordUnits, 3,
+                                "unit of the record's acceleration: auto (the one its header names: a CSV's acceleration column, an .AT2's UNITS OF; else m/s^2 for a CSV, g for an .AT2), g, m/s^2, cm/s^2; a header naming another unit is refused", kRecordUnits, kRecordUnitCount,
                                 &units, nullptr));
   PetscCall(PetscOptionsReal((q + "record_scale").c_str(), "factor on the record's acceleration [-] (not with -record_pga)", "TimeFunction::Read", scale, &scale,
                              &has_scale));
@@ -266,6 +266,12 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
   // incident wave that produces it, so the incident wave is half of it.
   const double incident_share = outcrop ? 0.5 : 1.0;
   for (double &a : record.acceleration) a *= factor * incident_share;
+  const std::string implausible = physics::PgaImplausible(std::fabs(factor) * record_peak / kStandardGravity);
+  if (!implausible.empty() && role != HistoryRole::Load) {
+    char scale_read[64];
+    std::snprintf(scale_read, sizeof scale_read, ", scale factor %g)", factor);
+    PetscCall(core::WarningPrint(comm, p + "record: " + implausible + " (" + file + " read in " + AccelerationUnitName(record.file_unit) + scale_read));
+  }
   physics::TabulatedHistory history = velocityHistory(record);
   double pgv = 0; // of the motion the record describes (as the PGA), not of the incident wave
   for (double v : history.values) pgv = std::max(pgv, std::fabs(v) / incident_share);
@@ -275,7 +281,7 @@ PetscErrorCode TimeFunction::readRecord(MPI_Comm comm, const std::string &prefix
                                 : "the incident wave itself (a rock outcrop would move twice as much)";
   char buf[PETSC_MAX_PATH_LEN + 512];
   std::snprintf(buf, sizeof buf, "record %s (%s in %s, %zu samples, %g to %g s)%s; PGA %.4g g (scale factor %.4g on the record's %.4g g); PGV %.4g m/s; %s", file,
-                at2 ? "AT2" : "CSV", record.file_unit == AccelerationUnit::G ? "g" : "m/s^2", n, record.time.front(), record.time.back(),
+                at2 ? "AT2" : "CSV", AccelerationUnitName(record.file_unit), n, record.time.front(), record.time.back(),
                 baseline ? ", baseline-corrected" : "", std::fabs(factor) * record_peak / kStandardGravity, factor, record_peak / kStandardGravity, pgv,
                 what);
   impl_->record_acceleration  = record.acceleration;

@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "slipwave/core/option_choice.hpp"
+#include "slipwave/core/warnings.hpp"
+#include "slipwave/physics/plausible_values.hpp"
 #include "slipwave/medium/backbone_table.hpp"
 
 namespace slipwave::medium {
@@ -240,6 +242,9 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
       problem = physics::elasticMaterialProblem(m);
     }
     PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "material of region '%s' (-material_%s_...): %s", r, r, problem.c_str());
+    const std::string speed = physics::ShearSpeedImplausible(m.vs), density = physics::DensityImplausible(m.rho), name = "-material_" + region + "_";
+    if (!speed.empty()) PetscCall(core::WarningPrint(comm, (moduli ? name + "E and " + name + "nu give vs = " : name + "vs = ") + speed));
+    if (!density.empty()) PetscCall(core::WarningPrint(comm, name + "rho = " + density));
     PetscCheck(damping_ratio >= 0 && damping_ratio < 0.5, comm, PETSC_ERR_USER_INPUT, "-material_%s_damping_ratio = %g; allowed: 0 <= xi < 0.5 (0: elastic)", r,
                (double)damping_ratio);
     PetscCheck(!has_reference || (reference_frequency > 0 && damping_ratio > 0), comm, PETSC_ERR_USER_INPUT,

@@ -76,7 +76,7 @@ int main() {
   unit::check(mentions(s, "at least 2 samples, found 1"), "single sample rejected: " + s.message);
 
   // Units of a CSV: from the header's acceleration column, or asked for; g converted with
-  // g = 9.80665 m/s^2; a contradiction or a unit neither g nor m/s^2 is an error.
+  // g = 9.80665 m/s^2; a contradiction or a unit word not read is an error.
   s = readAccelerationCsv(writeFile("g.csv", "time_s,acceleration_g\n0,0.5\n0.02,-1\n"), &r);
   unit::check(s.ok && r.file_unit == AccelerationUnit::G, "header acceleration_g: read in g " + s.message);
   unit::near(r.acceleration[1], -9.80665, 1e-15, 0, "header acceleration_g: -1 g = -9.80665 m/s^2");
@@ -93,10 +93,31 @@ int main() {
   unit::check(s.ok && r.acceleration[1] == 2 * 9.80665, "no header, asked for g: converted " + s.message);
   s = readAccelerationCsv(writeFile("clash.csv", "time_s,acceleration_g\n0,1\n1,2\n"), &r, AccelerationUnit::MetresPerSecondSquared);
   unit::check(mentions(s, "clash.csv:1: the header's acceleration column \"acceleration_g\" is in g, not in m/s^2 as asked"), "g header vs m/s^2 asked: " + s.message);
-  s = readAccelerationCsv(writeFile("cm.csv", "t,acc (cm/s^2)\n0,1\n1,2\n"), &r);
-  unit::check(mentions(s, "cm.csv:1: the header's acceleration column \"acc (cm/s^2)\" names a unit that is neither g nor m/s^2"), "cm/s^2 header: " + s.message);
-  s = readAccelerationCsv(writeFile("gal.csv", "t,acc gal\n0,1\n1,2\n"), &r);
-  unit::check(mentions(s, "neither g nor m/s^2"), "gal header: " + s.message);
+  // A header naming cm/s^2 (in any of its spellings: the "acceleration_cm_s2" was read
+  // as m/s^2, a PGA 100 times too large) is read in cm/s^2: 1 cm/s^2 = 0.01 m/s^2.
+  for (const char *head : {"t,acc (cm/s^2)", "time_s,acceleration_cm_s2", "time,acceleration_cm/s^2", "t,acc gal", "t,a [cm/s/s]", "time,ground_acceleration_cmps2"}) {
+    s = readAccelerationCsv(writeFile("cm.csv", std::string(head) + "\n0,1\n1,250\n"), &r);
+    unit::check(s.ok && r.file_unit == AccelerationUnit::CentimetresPerSecondSquared && r.acceleration[1] == 2.5,
+                std::string("header '") + head + "': cm/s^2, 250 cm/s^2 = 2.5 m/s^2 " + s.message);
+  }
+  for (const char *head : {"time_s,acceleration_m_s2", "t,acceleration m/s/s"}) {
+    s = readAccelerationCsv(writeFile("si2.csv", std::string(head) + "\n0,1\n1,2\n"), &r);
+    unit::check(s.ok && r.file_unit == AccelerationUnit::MetresPerSecondSquared && r.acceleration[1] == 2, std::string("header '") + head + "': m/s^2 " + s.message);
+  }
+  s = readAccelerationCsv(writeFile("ft.csv", "time_s,acceleration_ft_s2\n0,1\n1,2\n"), &r);
+  unit::check(mentions(s, "ft.csv:1: the header's acceleration column \"acceleration_ft_s2\" names the unit \"ft_s2\", which is not one slipwave reads (g; m/s^2"),
+              "unknown unit word named with the allowed ones: " + s.message);
+  s = readAccelerationCsv(writeFile("cm_vs_g.csv", "time_s,acceleration_cm_s2\n0,1\n1,2\n"), &r, AccelerationUnit::G);
+  unit::check(mentions(s, "the header's acceleration column \"acceleration_cm_s2\" is in cm/s^2, not in g as asked"), "cm/s^2 header vs g asked: " + s.message);
+  s = readAccelerationCsv(writeFile("factor.csv", "time,load_factor\n0,1\n1,2\n"), &r, AccelerationUnit::Factor);
+  unit::check(s.ok && r.acceleration[1] == 2, "a load factor's header is not read for a unit " + s.message);
+  // Absurd values: beyond 1e6 m/s^2 after conversion, refused with their line.
+  s = readAccelerationCsv(writeFile("huge.csv", "time,acceleration\n0,1\n0.01,1e200\n"), &r);
+  unit::check(mentions(s, "huge.csv:3: acceleration 1e200 m/s^2 is absurd (more than 1e6 m/s^2"), "1e200 m/s^2 refused at line 3: " + s.message);
+  s = readAccelerationCsv(writeFile("huge_g.csv", "time,acceleration_g\n0,1\n0.01,2e5\n"), &r);
+  unit::check(mentions(s, "huge_g.csv:3: acceleration 2e5 g is absurd"), "2e5 g (1.96e6 m/s^2) refused: " + s.message);
+  s = readAccelerationCsv(writeFile("big_ok.csv", "time,acceleration\n0,1\n0.01,9.9e5\n"), &r);
+  unit::check(s.ok, "9.9e5 m/s^2 (below the limit) read " + s.message);
 
   // AT2, keyed header form; values in g, 3 per line, last line short.
   const std::string head = "PEER NGA STRONG MOTION DATABASE RECORD\nTest event, station, 090\n"
@@ -119,6 +140,18 @@ int main() {
   unit::check(mentions(s, "nohdr.AT2:4: cannot find NPTS and DT"), "AT2 header without NPTS at line 4: " + s.message);
   s = readPeerAt2(writeFile("trunc.AT2", "only one line\n"), &r);
   unit::check(mentions(s, "trunc.AT2:2: file ends inside the 4 header lines"), "truncated AT2 header: " + s.message);
+  // The third line's "UNITS OF": G read as g (above); CM/S/S honoured; an unknown unit refused;
+  // a unit other than the one asked for refused.
+  const std::string cm_head = "PEER\nevent\nACCELERATION TIME SERIES IN UNITS OF CM/S/S\nNPTS= 2, DT= .01 SEC\n100 -50\n";
+  s = readPeerAt2(writeFile("cm.AT2", cm_head), &r);
+  unit::check(s.ok && r.file_unit == AccelerationUnit::CentimetresPerSecondSquared && r.acceleration[0] == 1 && r.acceleration[1] == -0.5,
+              "AT2 UNITS OF CM/S/S: 100 cm/s^2 = 1 m/s^2 " + s.message);
+  s = readPeerAt2(writeFile("cm.AT2", cm_head), &r, AccelerationUnit::G);
+  unit::check(mentions(s, "cm.AT2: its header gives the values in cm/s^2, not in g as asked"), "AT2 cm/s^2 header vs g asked: " + s.message);
+  s = readPeerAt2(writeFile("in.AT2", "PEER\nevent\nIN UNITS OF INCHES\nNPTS= 2, DT= .01 SEC\n1 2\n"), &r);
+  unit::check(mentions(s, "in.AT2:3: the header says \"UNITS OF INCHES\", a unit slipwave does not read"), "AT2 unknown unit: " + s.message);
+  s = readPeerAt2(writeFile("huge.AT2", head + "NPTS= 2, DT= .01 SEC\n0.1 1e200\n"), &r);
+  unit::check(mentions(s, "huge.AT2:5: acceleration 1e200 g is absurd"), "AT2 1e200 g refused at line 5: " + s.message);
 
   // Baseline: a0 = any record with its drift removed; adding c0 + c1 t back and correcting
   // again must give a0 (the correction is exact for the discrete integrals), and the

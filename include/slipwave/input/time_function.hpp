@@ -31,7 +31,8 @@ namespace slipwave::input {
 
 // The choices of -<prefix>record_format and -<prefix>record_units, in index order.
 inline const char *const kRecordFormats[] = {"csv", "at2"};
-inline const char *const kRecordUnits[]   = {"auto", "g", "m/s^2"};
+inline const char *const kRecordUnits[]   = {"auto", "g", "m/s^2", "cm/s^2"};
+inline constexpr int     kRecordUnitCount = 4;
 
 // The file of -<prefix>stf record and how its options say to read it.
 struct RecordFile {
