@@ -20,6 +20,7 @@ int main(int argc, char **argv) {
   slipwave::core::HelpStopHolding();
   PetscBool has_help = PETSC_FALSE;
   ierr = slipwave::core::ErrorsPushUserInputHandler("slipwave");
+  if (!ierr) ierr = slipwave::core::OptionFilePathsResolve(argc, argv);
   if (!ierr) ierr = slipwave::core::OptionsApplyRenames(PETSC_COMM_WORLD);
   if (!ierr) ierr = slipwave::core::OptionsValidate(PETSC_COMM_WORLD);
   if (!ierr) ierr = PetscOptionsHasHelp(nullptr, &has_help);

@@ -1,10 +1,14 @@
 #include "slipwave/core/errors.hpp"
 
+#include "slipwave/core/option_files.hpp"
+
 #include <cctype>
 #include <cstdio>
 #include <cstring>
 #include <sstream>
 #include <string>
+
+#include <unistd.h>
 
 namespace slipwave::core {
 namespace {
@@ -36,24 +40,51 @@ std::string withOptionName(const char *mess) {
     char             *all   = nullptr;
     if (PetscOptionsGetAll(nullptr, &all)) return text;
     std::istringstream       tokens(all ? all : "");
-    std::string              token, name, names;
+    std::string              token, names;
     auto isName = [](const std::string &t) { return t.size() > 1 && t[0] == '-' && std::isalpha((unsigned char)t[1]); };
     while (tokens >> token) {
-      if (isName(token)) name = token;
-      else if (!name.empty()) {
-        // The value itself, or one element of a comma-separated array value.
-        bool hit = token == value;
-        std::istringstream elements(token);
-        for (std::string e; !hit && std::getline(elements, e, ',');) hit = e == value;
-        if (hit) names += (names.empty() ? "" : " or ") + name + " = " + token;
-        name.clear();
-      }
+      if (!isName(token)) continue;
+      // The whole value (it may hold blanks: "200 m/s" in a YAML file), or one element of a
+      // comma-separated array value.
+      const char *held = nullptr;
+      PetscBool   set  = PETSC_FALSE;
+      if (PetscOptionsFindPair(nullptr, nullptr, token.c_str(), &held, &set) || !set || !held) continue;
+      const std::string v = held;
+      bool hit = v == value;
+      std::istringstream elements(v);
+      for (std::string e; !hit && std::getline(elements, e, ',');) hit = e == value;
+      if (hit && names.find(token + " ") == std::string::npos) names += (names.empty() ? "" : " or ") + token + " = " + (v.find(' ') != std::string::npos ? "\"" + v + "\"" : v);
     }
     PetscFree(all);
     if (names.empty()) return text;
     return names + ": '" + value + "' is not " + k.allowed + "; allowed: " + k.allowed;
   }
   return text;
+}
+
+// The file and line of the first option the message names, when an option file gives it
+// ("default.yaml:23: -material_soil_vs = ..."): the user edits that line.
+std::string withOrigin(const std::string &text) {
+  for (size_t i = 0; i + 1 < text.size(); ++i) {
+    if (text[i] != '-' || !std::isalpha((unsigned char)text[i + 1]) || (i > 0 && text[i - 1] != ' ' && text[i - 1] != '(')) continue;
+    size_t end = i + 1;
+    while (end < text.size() && (std::isalnum((unsigned char)text[end]) || text[end] == '_')) ++end;
+    const std::string origin = OptionOrigin(text.substr(i, end - i));
+    if (!origin.empty()) return origin + ": " + text;
+  }
+  return text;
+}
+
+// A file not found under a relative path: say which folder it was looked for in (the working
+// folder; paths from an option file are already made relative to it, option_files.hpp).
+std::string withFolder(const std::string &text) {
+  const size_t at = text.find(": cannot open the file");
+  if (at == std::string::npos) return text;
+  const size_t      start = text.find_last_of(' ', at);
+  const std::string path  = text.substr(start == std::string::npos ? 0 : start + 1, at - (start == std::string::npos ? 0 : start + 1));
+  char              cwd[PETSC_MAX_PATH_LEN];
+  if (path.empty() || path[0] == '/' || !getcwd(cwd, sizeof cwd)) return text;
+  return text.substr(0, at) + ": cannot open the file (looked for it in " + cwd + ")" + text.substr(at + std::strlen(": cannot open the file"));
 }
 
 PetscErrorCode userInputHandler(MPI_Comm comm, int line, const char *func, const char *file, PetscErrorCode code,
@@ -66,7 +97,7 @@ PetscErrorCode userInputHandler(MPI_Comm comm, int line, const char *func, const
     PetscMPIInt rank = 0;
     if (comm != PETSC_COMM_SELF) MPI_Comm_rank(comm, &rank);
     if (rank == 0) {
-      std::fprintf(stderr, "%s: error: %s\n", g_program, mess ? withOptionName(mess).c_str() : "(no message)");
+      std::fprintf(stderr, "%s: error: %s\n", g_program, mess ? withOrigin(withFolder(withOptionName(mess))).c_str() : "(no message)");
       std::fflush(stderr);
     }
   }

@@ -8,10 +8,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <sstream>
 #include <vector>
+
+#include <petscsys.h>
 
 namespace slipwave::core {
 namespace {
@@ -22,6 +26,30 @@ const char *const kRunsProgram[] = {"start_in_debugger", "on_error_attach_debugg
                                     "debug_terminal",    "display",                  "on_error_emacs",    "x_virtual",      "popen_machine",  "mpi_debugger"};
 
 constexpr int kMaxDepth = 8; // option files including option files
+
+// Where each option of the option files was given (name without the dash; the last file read
+// that gives it), for messages and for paths relative to the file.
+struct Origin {
+  std::string file, value;
+  int         line = 0;
+};
+std::map<std::string, Origin> g_origins;
+
+// One file's options so far (name -> line): a second occurrence is an error, as the file's
+// author cannot mean both values (PETSc would silently take the last).
+using SeenOptions = std::map<std::string, int>;
+
+std::string noteOption(const std::string &where, const std::string &file, int line, std::string name, const std::string &value, SeenOptions *seen) {
+  while (!name.empty() && name[0] == '-') name.erase(0, 1);
+  const auto before = seen->find(name);
+  if (before != seen->end())
+    return where + ":" + std::to_string(line) + ": " + name + " is given a second time (first at line " + std::to_string(before->second) +
+           "); allowed: each option once per file";
+  (*seen)[name] = line;
+  g_origins[name] = Origin{file, value, line};
+  return "";
+}
+
 
 bool runsProgram(std::string name) {
   while (!name.empty() && name[0] == '-') name.erase(0, 1);
@@ -34,6 +62,13 @@ bool runsProgram(std::string name) {
 bool endsWith(const std::string &s, const char *tail) {
   const size_t n = std::strlen(tail);
   return s.size() >= n && s.compare(s.size() - n, n, tail) == 0;
+}
+
+// Options whose value is an input file: a relative path in an option file is taken from the
+// file's folder. Output folders (-output_dir) stay relative to the working folder.
+bool namesInputFile(const std::string &name) {
+  if (name == "options_file" || name == "options_file_yaml") return false;
+  return endsWith(name, "_file") || endsWith(name, "_record") || name == "restart";
 }
 
 // PETSc options that write a file named in their value, which may lie outside the output
@@ -84,9 +119,10 @@ std::vector<std::string> tokens(const std::string &line) {
 
 std::string checkFile(const std::string &option, const std::string &path, int depth);
 
-std::string checkText(const std::string &where, const std::string &text, int depth) {
+std::string checkText(const std::string &where, const std::string &path, const std::string &text, int depth) {
   std::istringstream in(text);
   int                number = 0;
+  SeenOptions        seen;
   for (std::string line; std::getline(in, line);) {
     ++number;
     const size_t comment = line.find('#'); // PETSc 3.18 knows no other comment mark
@@ -103,6 +139,10 @@ std::string checkText(const std::string &where, const std::string &text, int dep
     if (t.size() > 2) return at + ": '" + t[2] + "' after the value of " + t[0] + "; " + grammar;
     if (runsProgram(t[0])) return refusedProgram(at, t[0]);
     if (t.size() == 2 && writesFile(t[0], t[1])) return refusedFile(at, t[0], t[1]);
+    if (t[0] != "-options_file" && t[0] != "-options_file_yaml") {
+      const std::string twice = noteOption(where, path, number, t[0], t.size() == 2 ? t[1] : "", &seen);
+      if (!twice.empty()) return twice;
+    }
     if (t[0] == "-options_file" || t[0] == "-options_file_yaml") {
       if (t.size() < 2) return at + ": " + t[0] + " needs a file name; allowed: " + t[0] + " <file>";
       const std::string problem = checkFile(at + ": " + t[0], t[1], depth + 1);
@@ -113,7 +153,7 @@ std::string checkText(const std::string &where, const std::string &text, int dep
 }
 
 // Walks a YAML document as PETSc flattens it: nested keys join with '_'.
-std::string checkYamlNode(yaml_document_t *doc, yaml_node_t *node, const std::string &prefix, const std::string &where) {
+std::string checkYamlNode(yaml_document_t *doc, yaml_node_t *node, const std::string &prefix, const std::string &where, const std::string &path, SeenOptions *seen) {
   if (!node || node->type != YAML_MAPPING_NODE) return "";
   for (yaml_node_pair_t *p = node->data.mapping.pairs.start; p < node->data.mapping.pairs.top; ++p) {
     yaml_node_t *key = yaml_document_get_node(doc, p->key);
@@ -125,13 +165,17 @@ std::string checkYamlNode(yaml_document_t *doc, yaml_node_t *node, const std::st
     yaml_node_t *value = yaml_document_get_node(doc, p->value);
     if (value && value->type == YAML_SCALAR_NODE && writesFile(full, (const char *)value->data.scalar.value))
       return refusedFile(at, "-" + full, (const char *)value->data.scalar.value);
-    const std::string inner = checkYamlNode(doc, value, full, where);
+    if (value && value->type != YAML_MAPPING_NODE) {
+      const std::string twice = noteOption(where, path, key->start_mark.line + 1, full, value->type == YAML_SCALAR_NODE ? (const char *)value->data.scalar.value : "", seen);
+      if (!twice.empty()) return twice;
+    }
+    const std::string inner = checkYamlNode(doc, value, full, where, path, seen);
     if (!inner.empty()) return inner;
   }
   return "";
 }
 
-std::string checkYaml(const std::string &where, const std::string &text) {
+std::string checkYaml(const std::string &where, const std::string &path, const std::string &text) {
   yaml_parser_t   parser;
   yaml_document_t doc;
   if (!yaml_parser_initialize(&parser)) return where + ": cannot start the YAML parser";
@@ -141,7 +185,8 @@ std::string checkYaml(const std::string &where, const std::string &text) {
     problem = where + ":" + std::to_string(parser.problem_mark.line + 1) + ": not valid YAML (" + (parser.problem ? parser.problem : "parse error") +
               "); allowed: a YAML mapping of option names to values";
   } else {
-    problem = checkYamlNode(&doc, yaml_document_get_root_node(&doc), "", where);
+    SeenOptions seen;
+    problem = checkYamlNode(&doc, yaml_document_get_root_node(&doc), "", where, path, &seen);
     yaml_document_delete(&doc);
   }
   yaml_parser_delete(&parser);
@@ -167,7 +212,7 @@ std::string checkFile(const std::string &option, const std::string &path, int de
     }
   }
   const bool yaml = endsWith(path, ".yaml") || endsWith(path, ".yml") || option.find("_yaml") != std::string::npos;
-  return yaml ? checkYaml(where, text) : checkText(where, text, depth);
+  return yaml ? checkYaml(where, path, text) : checkText(where, path, text, depth);
 }
 
 // The rc files PETSc reads by itself: only the options that run programs matter there.
@@ -211,6 +256,33 @@ std::string OptionFilesCheck(int argc, const char *const *argv) {
     if (!problem.empty()) return problem;
   }
   return "";
+}
+
+std::string OptionOrigin(const std::string &option) {
+  std::string name = option;
+  while (!name.empty() && name[0] == '-') name.erase(0, 1);
+  const auto origin = g_origins.find(name);
+  if (origin == g_origins.end()) return "";
+  const char *value = nullptr;
+  PetscBool   set   = PETSC_FALSE;
+  if (PetscOptionsFindPair(nullptr, nullptr, ("-" + name).c_str(), &value, &set) || !set) return "";
+  if (origin->second.value != (value ? value : "")) return ""; // given again later, on the command line or in another file
+  return origin->second.file + ":" + std::to_string(origin->second.line);
+}
+
+int OptionFilePathsResolve(int argc, const char *const *argv) {
+  for (auto &[name, origin] : g_origins) {
+    if (!namesInputFile(name) || origin.value.empty() || origin.value[0] == '/') continue;
+    const size_t slash = origin.file.find_last_of('/');
+    if (slash == std::string::npos) continue; // the file is in the working folder
+    bool on_command_line = false;
+    for (int i = 1; i < argc; ++i) on_command_line = on_command_line || ("-" + name) == argv[i];
+    if (on_command_line || OptionOrigin(name).empty()) continue;
+    const std::string resolved = std::filesystem::path(origin.file.substr(0, slash + 1) + origin.value).lexically_normal().string();
+    if (PetscOptionsSetValue(nullptr, ("-" + name).c_str(), resolved.c_str())) return 1;
+    origin.value = resolved;
+  }
+  return 0;
 }
 
 bool OptionFilesAcceptable(int argc, const char *const *argv, const char *program) {

@@ -286,6 +286,12 @@ PetscErrorCode checkCountForDimension(MPI_Comm comm, const std::string &option, 
 
 } // namespace
 
+std::vector<std::string> OptionRulePatterns() {
+  std::vector<std::string> out;
+  for (const Rule &r : kRules) out.push_back(r.pattern);
+  return out;
+}
+
 bool IsSafeFileName(const std::string &name) {
   if (name.empty() || name[0] == '.' || name.find("..") != std::string::npos) return false;
   for (char ch : name)

@@ -11,6 +11,7 @@
 #include <petscsys.h>
 
 #include <string>
+#include <vector>
 
 namespace slipwave::core {
 
@@ -21,6 +22,10 @@ PetscErrorCode OptionsValidate(MPI_Comm comm);
 // the mesh's dimension is known, a third value in 2D stops the run instead of being ignored.
 // box_mesh: the mesh is the built-in box (false: the -mesh_box_* options are not checked).
 PetscErrorCode OptionsValidateForDimension(MPI_Comm comm, PetscInt dim, bool box_mesh);
+
+// The option names the table covers, as fnmatch patterns ("-material_*_rho": * is a region,
+// interface or boundary name), for suggestions on a misspelled option.
+std::vector<std::string> OptionRulePatterns();
 
 // Prints the rule table (option, entries, allowed values) for -help.
 PetscErrorCode OptionsPrintRules(MPI_Comm comm);
