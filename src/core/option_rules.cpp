@@ -261,6 +261,10 @@ PetscErrorCode checkOne(MPI_Comm comm, const std::string &option, const char *va
       const bool bad = rule->kind == Kind::Names ? !IsSafeFileName(e) : !numberAllowed(*rule, e);
       PetscCheck(!bad, comm, PETSC_ERR_USER_INPUT, "%s = %s; allowed: %s", option.c_str(), value.c_str(), rule->allowed);
     }
+    // Names become file and dataset names: two stations called alike would meet in one file.
+    for (int a = 0; rule->kind == Kind::Names && a < n; ++a)
+      for (int b = a + 1; b < n; ++b)
+        PetscCheck(parts[a] != parts[b], comm, PETSC_ERR_USER_INPUT, "%s = %s: '%s' is listed twice; allowed: distinct names", option.c_str(), value.c_str(), parts[a].c_str());
     break;
   case Kind::File:
   case Kind::FileIfThere: {

@@ -164,14 +164,24 @@ PetscErrorCode createFromGmsh(MPI_Comm comm, const char *file, DM *dm, const std
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  int readable = 1;
+  int  readable = 1;
+  char version[32] = ""; // the format of a file PETSc's reader does not take: "1.0", "3.0"
   if (rank == 0) {
     FILE *fp = std::fopen(file, "r");
     readable = fp != nullptr;
+    char first[64] = "", second[64] = "";
+    if (fp && std::fscanf(fp, "%63s %63s", first, second) == 2) {
+      if (!std::strcmp(first, "$NOD")) std::snprintf(version, sizeof version, "1.0");
+      else if (!std::strcmp(first, "$MeshFormat") && second[0] != '2' && second[0] != '4') std::snprintf(version, sizeof version, "%.20s", second);
+    }
     if (fp) std::fclose(fp);
   }
   PetscCallMPI(MPI_Bcast(&readable, 1, MPI_INT, 0, comm));
   PetscCheck(readable, comm, PETSC_ERR_FILE_OPEN, "-mesh_file = %s: cannot open the file; allowed: a readable Gmsh .msh file (format 2.2 or 4.1)", file);
+  PetscCallMPI(MPI_Bcast(version, sizeof version, MPI_CHAR, 0, comm));
+  PetscCheck(!version[0], comm, PETSC_ERR_USER_INPUT,
+             "-mesh_file = %s is in Gmsh format %s, which is not read; allowed: Gmsh format 2.2 or 4.1 (convert it: gmsh %s -save -format msh41 -o new.msh)", file, version,
+             file);
   PetscCall(MemoryCheckGmshFile(comm, file, refine, whole_on_rank0));
   PetscBool has;
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-dm_plex_gmsh_use_regions", &has));

@@ -43,6 +43,8 @@ printf -- '-options_file %s/debugger.opts\n' "$tmp" > "$tmp/nested.opts"
 printf -- '-options_file %s/loop.opts\n' "$tmp" > "$tmp/loop.opts"
 printf -- '-log_view :../escaped.txt\n' > "$tmp/log_view.opts"
 printf 'dry_run: [\n' > "$tmp/broken.yaml"
+printf '$NOD\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$ENDNOD\n$ELM\n1\n1 2 1 1 3 1 2 3\n$ENDELM\n' > "$tmp/v1.msh"
+printf '$MeshFormat\n3.0 0 8\n$EndMeshFormat\n' > "$tmp/v3.msh"
 # A unit after a number, keys given twice (flat, nested, in a text file), a misspelled key.
 printf '# the soil, in a file\nmaterial_soil_vs: 200 m/s\n' > "$tmp/units.yaml"
 printf 'material_soil_vs: 200\nmaterial_soil_vp: 400\nmaterial_soil_vs: 250\n' > "$tmp/dup.yaml"
