@@ -43,6 +43,12 @@ int main() {
               "comments, alias, a quoted value with a space and a nested file pass");
   unit::check(check(write("good.yaml", "mesh:\n  box_faces: 4,4\nmaterial_soil_rho: 2000\n")).empty(), "a YAML mapping passes");
   unit::check(contains(check(write("two.opts", "-a 1 2\n")), "two.opts:1: '2' after the value of -a"), "a second value on a line is refused");
+  // An option given twice in one file: an error naming both lines (PETSc keeps the last silently).
+  unit::check(contains(check(write("twice.yaml", "a: 1\nb: 2\na: 3\n")), "twice.yaml:3: a is given a second time (first at line 1)"), "a YAML key given twice");
+  unit::check(contains(check(write("nested.yaml", "material_soil_vs: 1\nmaterial:\n  soil_vs: 2\n")), "nested.yaml:3: material_soil_vs is given a second time (first at line 1)"),
+              "a flat and a nested YAML key that flatten alike");
+  unit::check(contains(check(write("twice.opts", "-a 1\n# b\n-a 2\n")), "twice.opts:3: a is given a second time (first at line 1)"), "an option given twice in a text file");
+  unit::check(check(write("once.yaml", "mesh:\n  box_faces: 4,4\nmesh_box_upper: 1,1\n")).empty(), "distinct flattened keys pass");
   unit::check(contains(check(write("alias.opts", "alias -x\n")), "alias.opts:1: alias needs two names"), "alias with one name is refused");
   unit::check(contains(check(write("word.opts", "\n\nfoo\n")), "word.opts:3: 'foo' is not an option name"), "a line not starting with -name is refused, with its line");
   unit::check(contains(check(write("bang.opts", "! not a comment for PETSc\n")), "bang.opts:1: '!' is not an option name"), "'!' does not start a comment");
