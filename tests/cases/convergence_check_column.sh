@@ -69,10 +69,10 @@ for key, ((e1, b1), (e2, b2)) in bands.items():
 sys.exit(0 if ok else 1)
 PY
 # A region box that the coarse level's cells would cut: one line, the option named. The
-# default scene 120 m wide (its grid lines at even x on the 2 m level, the block's edges at
+# default scene (its linear variant) 120 m wide (its grid lines at even x on the 2 m level, the block's edges at
 # x = +-3 inside cells; the scene itself is 122 m wide so that they fit).
 narrow="-mesh_box_faces 120,60 -mesh_box_lower -60,-20 -mesh_box_upper 60,40 -region_rock_box -60,60,-20,0 -region_soil_box -60,60,0,30 -region_air_box -60,60,30,40"
-if $PY scripts/convergence_check.py config/scenes/default.yaml --out "$WORK/misfit" --companion coarser -- $narrow 2> "$WORK/misfit.txt"; then
+if $PY scripts/convergence_check.py config/scenes/default_linear.yaml --out "$WORK/misfit" --companion coarser -- $narrow 2> "$WORK/misfit.txt"; then
   echo "FAIL: a region box across the coarse cells was accepted"; exit 1
 fi
 cat "$WORK/misfit.txt"
