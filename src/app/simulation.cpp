@@ -58,6 +58,7 @@ struct Run {
   PetscLogDouble          wall_start = 0, wall_last_progress = 0;
   PetscMPIInt             rank = 0;
   bool                    resumed = false; // TSSolve repeats the monitor of the restart step: skip it
+  PetscReal               t_before = NAN;  // the time of the step before (stations' sampling)
   PetscInt                restart_step = 0;
 };
 
@@ -133,7 +134,7 @@ PetscErrorCode stopIfRequested(Run *r, PetscInt step, PetscReal t) {
   PetscCall(StopRequested(r->model.comm, step, &requested));
   if (!requested) PetscFunctionReturn(0);
   PetscCall(flushSeries(r, true));
-  SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT, "stopped by SIGTERM after step %" PetscInt_FMT ", t = %g s; stations hold every step up to it, energy.csv every -energy_interval-th, the fields every output time up to it (%s)",
+  SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT, "stopped by SIGTERM after step %" PetscInt_FMT ", t = %g s; stations hold every sample up to it, energy.csv every -energy_interval-th, the fields every output time up to it (%s)",
           step, (double)t, r->opt.output_dir);
 }
 
@@ -161,13 +162,23 @@ PetscErrorCode printProgressIfDue(Run *r, PetscInt step, PetscReal t, PetscReal 
   PetscFunctionReturn(0);
 }
 
+// At the stations' sample times: the stations' rows.
+PetscErrorCode sampleSeries(Run *r, PetscReal t, Vec u, Vec v, Vec a) {
+  PetscFunctionBeginUser;
+  PetscCall(r->stations.Sample(r->model.dm, t, u, v, a));
+  if (r->model.pore) PetscCall(r->stations.SamplePressure(r->model.pore->pdm, r->model.pore->p_total, r->model.pore->p));
+  PetscCall(r->stations.SampleStress(r->model.bulk, r->model.initial_stress, r->model.hysteresis));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   auto     *r = static_cast<Run *>(ctx);
   Vec       v, a;
   PetscReal h;
   PetscFunctionBeginUser;
   if (r->resumed) {
-    r->resumed = false;
+    r->resumed  = false;
+    r->t_before = t;
     PetscFunctionReturn(0);
   }
   PetscCall(TS2GetSolution(ts, &u, &v));
@@ -178,12 +189,9 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   const bool evaluate = last || step % r->opt.energy_interval == 0 || r->frames.Due(step, t, last);
   PetscCall(problem::EnergyLedgerUpdate(&r->model, ts, h, evaluate, &r->ledger));
   if (r->ledger.evaluated) PetscCall(DivergenceGuard(r->model, r->ledger, r->opt.energy_growth_limit, r->step, h, step, t, u, v, a));
-  PetscCall(r->stations.Sample(r->model.dm, t, u, v, a));
-  if (r->model.pore) {
-    PetscCall(porous::PorePressureTotal(r->model.pore));
-    PetscCall(r->stations.SamplePressure(r->model.pore->pdm, r->model.pore->p_total, r->model.pore->p));
-  }
-  PetscCall(r->stations.SampleStress(r->model.bulk, r->model.initial_stress, r->model.hysteresis));
+  if (r->model.pore) PetscCall(porous::PorePressureTotal(r->model.pore)); // for the stations and the frames
+  if (r->stations.due(r->t_before, t)) PetscCall(sampleSeries(r, t, u, v, a));
+  r->t_before = t;
   if (r->ledger.evaluated) PetscCall(appendEnergyRow(r, step, t));
   bool due;
   PetscCall(r->frames.WriteIfDue(r->model, step, t, last, u, v, a, &due));

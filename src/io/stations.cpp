@@ -138,8 +138,11 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const meshi
                                     nullptr));
   PetscCall(core::OptionsChoice(PetscOptionsObject, "-station_side", "side recorded by a station on an interface (split nodes): structure or soil", sides, 2, &side,
                                 nullptr));
+  PetscCall(PetscOptionsReal("-station_interval", "time between station samples [s], >= 0 (0: every step); each sample is the first step at or after a multiple of it, unfiltered",
+                             "Stations::Setup", interval_, &interval_, nullptr));
   PetscCall(PetscOptionsBool("-station_stress", "also record the stress [Pa] and strain [-] of the cell holding each station", "Stations::Setup", stress_, &stress_, nullptr));
   PetscOptionsEnd();
+  PetscCheck(interval_ >= 0 && std::isfinite(interval_), comm, PETSC_ERR_USER_INPUT, "-station_interval = %g; allowed: a time >= 0 s (0: every step)", (double)interval_);
   if (has_file) PetscCall(readStationFile(comm, file, dim_, &names_, &coords_));
   if (has_coords) {
     PetscCheck(nx % dim_ == 0, comm, PETSC_ERR_USER_INPUT, "-station_coordinates has %" PetscInt_FMT " values; allowed: a multiple of %" PetscInt_FMT, nx, dim_);
@@ -247,6 +250,13 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const meshi
   if (!names_.empty())
     for (Vec &w : work_) PetscCall(DMCreateLocalVector(dm, &w));
   PetscFunctionReturn(0);
+}
+
+bool Stations::due(double t_before, double t) const {
+  if (interval_ == 0 || std::isnan(t_before)) return true;
+  // The sample times k I; a step ending within 1e-6 I short of one (round-off in t) is at it.
+  const auto index = [this](double x) { return std::floor(x / interval_ + 1e-6); };
+  return index(t) > index(t_before);
 }
 
 PetscErrorCode Stations::Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a) {
@@ -430,7 +440,7 @@ PetscErrorCode Stations::Flush(MPI_Comm comm, const std::string &dir, bool last)
     else if (rank == 0) PetscCallMPI(MPI_Recv(fresh[s].data(), count, MPI_DOUBLE, owner, (int)s, comm, MPI_STATUS_IGNORE));
   }
   const bool first = flushed_rows_ == 0;
-  flushed_rows_ += fresh[0].size() / row; // every station samples every step: the same count
+  flushed_rows_ += fresh[0].size() / row; // every station samples at the same steps: the same count
   if (rank != 0) PetscFunctionReturn(0);
   if (first) {
     std::error_code error;

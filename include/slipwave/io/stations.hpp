@@ -1,6 +1,8 @@
 // Stations: points given by coordinates (-station_coordinates x1,y1,x2,y2,... with
 // -station_names, or -station_file with rows name,x,y[,z]) where u, v, a are interpolated
-// with the cell's shape functions every step (spectral elements of degree p > 1: with the
+// with the cell's shape functions at the sample times (-station_interval I, default 0.005 s:
+// the first step at or after each multiple k I, the values of that step, not filtered; 0:
+// every step) (spectral elements of degree p > 1: with the
 // basis of the element holding the point, on its (p+1)^dim GLL nodes). At every output time (Flush) rank 0 appends the
 // rows sampled since the last flush to DIR/stations/<name>.csv and to DIR/stations.h5
 // (extendible datasets, file closed after each append), so a killed run keeps every row up to
@@ -41,6 +43,10 @@ public:
   // One line per station on an interface: where it is and which side it records.
   const std::vector<std::string> &ambiguities() const { return ambiguities_; }
   bool           empty() const { return names_.empty(); }
+  // Whether the step that reached t takes a sample (t_before: the time of the step before,
+  // NaN at the first step, which always does).
+  bool           due(double t_before, double t) const;
+  double         interval() const { return interval_; }
   // Samples the global u, v, a at time t.
   PetscErrorCode Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a);
   // Saturated scenes, after each Sample: the pore pressure (global vectors, one dof per vertex
@@ -89,6 +95,7 @@ private:
   Vec                      pressure_local_[2] = {nullptr, nullptr};
   bool                     has_pressure_ = false;
   PetscBool                stress_       = PETSC_FALSE; // -station_stress
+  PetscReal                interval_     = 0.005;       // -station_interval [s]
 };
 
 } // namespace slipwave::io
