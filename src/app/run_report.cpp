@@ -134,7 +134,7 @@ std::string hystereticRegionsJson(const std::vector<medium::RegionMaterialInfo> 
 
 } // namespace
 
-void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt) {
+void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt, const std::string &answers) {
   const Resolution  res  = resolvedFrequency(model);
   const std::string path = output_dir + "/run_info.json";
   if (FILE *f = std::fopen(path.c_str(), "w")) {
@@ -142,6 +142,7 @@ void WriteRunInfo(const problem::Elastodynamics &model, const std::string &outpu
                  res.frequency, nodesPerWavelengthNeeded(model.bulk.degree()), res.region.c_str(), res.size, model.bulk.minCellSize());
     if (model.bulk.degree() > 1) std::fprintf(f, " \"element_degree\": %d, \"element_size_m\": %.6g,\n", (int)model.bulk.degree(), model.bulk.minElementSize());
     if (model.hysteresis) std::fprintf(f, " \"hysteretic_regions\": [%s],\n", hystereticRegionsJson(model.materials).c_str());
+    if (!answers.empty()) std::fprintf(f, " \"answers\": %s,\n", answers.c_str());
     std::fprintf(f, " \"input_top_frequency_hz\": %.6g, \"time_step_s\": %.10g}\n", model.bc.input.active() ? model.bc.input.topFrequency() : 0.0, dt);
     std::fclose(f);
   }

@@ -1,7 +1,9 @@
 #include "slipwave/app/simulation.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <vector>
 
 #include "slipwave/app/checkpoint.hpp"
 #include "slipwave/app/divergence_guard.hpp"
@@ -9,6 +11,8 @@
 #include "slipwave/app/initial_conditions.hpp"
 #include "slipwave/app/output_dir.hpp"
 #include "slipwave/app/output_frames.hpp"
+#include "slipwave/app/rigid_histories.hpp"
+#include "slipwave/app/run_answers.hpp"
 #include "slipwave/app/run_report.hpp"
 #include "slipwave/app/setup_cost.hpp"
 #include "slipwave/app/stop_request.hpp"
@@ -20,6 +24,7 @@
 #include "slipwave/problem/elastodynamics.hpp"
 #include "slipwave/problem/energy_ledger.hpp"
 #include "slipwave/problem/geostatic.hpp"
+#include "slipwave/problem/rigid_bodies.hpp"
 #include "slipwave/problem/stable_step.hpp"
 #include "slipwave/time/central_difference.hpp"
 
@@ -51,6 +56,9 @@ struct Run {
   problem::EnergyLedger     ledger;
   problem::GeostaticOptions geostatic;
   io::Stations            stations;
+  RigidHistories          rigid_histories;
+  RunAnswers              answers;
+  std::vector<double>     motion;           // the rigid bodies' motion at this step (RigidBodiesMotion)
   RegionVelocities        region_velocity;
   OutputFrames            frames;
   EnergyCsv               energy_csv;
@@ -58,8 +66,9 @@ struct Run {
   PetscLogDouble          wall_start = 0, wall_last_progress = 0;
   PetscMPIInt             rank = 0;
   bool                    resumed = false; // TSSolve repeats the monitor of the restart step: skip it
-  PetscReal               t_before = NAN;  // the time of the step before (stations' sampling)
+  PetscReal               t_first  = NAN;  // the first step's time in this process (the progress line's speed)
   PetscInt                restart_step = 0;
+  PetscReal               dt = 0;           // the time step chosen (run_info.json)
 };
 
 CheckpointState checkpointState(Run *r, TS ts) {
@@ -124,6 +133,7 @@ PetscErrorCode flushSeries(Run *r, bool last) {
   PetscFunctionBeginUser;
   r->energy_csv.Flush();
   PetscCall(r->stations.Flush(r->model.comm, r->opt.output_dir, last));
+  PetscCall(r->rigid_histories.Flush());
   PetscFunctionReturn(0);
 }
 
@@ -152,11 +162,20 @@ PetscErrorCode printProgressIfDue(Run *r, PetscInt step, PetscReal t, PetscReal 
   PetscLogDouble now;
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&now));
+  if (std::isnan(r->t_first)) r->t_first = t;
   if (step == 0 || last || now - r->wall_last_progress >= r->opt.progress_interval) {
-    const double elapsed = now - r->wall_start;
-    const double eta     = t > 0 ? elapsed * (r->max_time - t) / t : 0;
-    PetscCall(PetscPrintf(r->model.comm, "step %6" PetscInt_FMT "  t = %.4e s  dt = %.3e s  wall %7.1f s  ETA %7.1f s  energy kin %.3e strain %.3e  balance %.1e\n",
-                          step, (double)t, (double)h, elapsed, eta, r->ledger.kinetic, r->ledger.strain, r->ledger.relativeError()));
+    // The remaining time at the speed measured in this process so far (simulated s per wall s).
+    const double elapsed = now - r->wall_start, done = t - r->t_first;
+    char         eta[32] = "      -";
+    if (done > 0) std::snprintf(eta, sizeof eta, "%7.1f", elapsed * (r->max_time - t) / done);
+    std::string states;
+    for (const InterfaceCounts &c : r->answers.counts()) {
+      char cell[96];
+      std::snprintf(cell, sizeof cell, "%s%.0f/%.0f/%.0f", states.empty() ? "  stick/slip/open " : " ", c.stick, c.slip, c.open);
+      states += cell;
+    }
+    PetscCall(PetscPrintf(r->model.comm, "step %6" PetscInt_FMT "  t = %.4e s (%5.1f %%)  dt = %.3e s  wall %7.1f s  ETA %s s%s  energy kin %.3e strain %.3e  balance %.1e\n", step,
+                          (double)t, 100 * t / r->max_time, (double)h, elapsed, eta, states.c_str(), r->ledger.kinetic, r->ledger.strain, r->ledger.relativeError()));
     r->wall_last_progress = now;
   }
   PetscFunctionReturn(0);
@@ -168,6 +187,7 @@ PetscErrorCode sampleSeries(Run *r, PetscReal t, Vec u, Vec v, Vec a) {
   PetscCall(r->stations.Sample(r->model.dm, t, u, v, a));
   if (r->model.pore) PetscCall(r->stations.SamplePressure(r->model.pore->pdm, r->model.pore->p_total, r->model.pore->p));
   PetscCall(r->stations.SampleStress(r->model.bulk, r->model.initial_stress, r->model.hysteresis));
+  if (r->model.rigid) r->rigid_histories.Sample(t, r->motion);
   PetscFunctionReturn(0);
 }
 
@@ -177,8 +197,7 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   PetscReal h;
   PetscFunctionBeginUser;
   if (r->resumed) {
-    r->resumed  = false;
-    r->t_before = t;
+    r->resumed = false;
     PetscFunctionReturn(0);
   }
   PetscCall(TS2GetSolution(ts, &u, &v));
@@ -190,8 +209,10 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   PetscCall(problem::EnergyLedgerUpdate(&r->model, ts, h, evaluate, &r->ledger));
   if (r->ledger.evaluated) PetscCall(DivergenceGuard(r->model, r->ledger, r->opt.energy_growth_limit, r->step, h, step, t, u, v, a));
   if (r->model.pore) PetscCall(porous::PorePressureTotal(r->model.pore)); // for the stations and the frames
-  if (r->stations.due(r->t_before, t)) PetscCall(sampleSeries(r, t, u, v, a));
-  r->t_before = t;
+  if (r->model.rigid) PetscCall(problem::RigidBodiesMotion(r->model.rigid, r->model.mass, u, &r->motion));
+  // Every step (the interfaces' counts of the progress line too); after a restart not (see run_answers.hpp).
+  if (r->answers.active() && !r->opt.restart[0]) PetscCall(r->answers.Update(r->model, r->stations, t, u, a, r->motion));
+  if (r->stations.due(step)) PetscCall(sampleSeries(r, t, u, v, a));
   if (r->ledger.evaluated) PetscCall(appendEnergyRow(r, step, t));
   bool due;
   PetscCall(r->frames.WriteIfDue(r->model, step, t, last, u, v, a, &due));
@@ -220,6 +241,7 @@ PetscErrorCode setUp(MPI_Comm comm, Run *r) {
   PetscCall(problem::ElastodynamicsCreate(comm, &r->model));
   PetscCall(problem::StableStepCompute(&r->model, &r->step));
   PetscCall(r->stations.Setup(r->model.dm, r->model.bulk, r->model.mesh));
+  PetscCall(r->answers.Setup(r->model, r->stations));
   PetscCall(RegionVelocitiesRead(comm, r->model.dim, r->model.materials, &r->region_velocity));
   PetscCall(problem::GeostaticOptionsRead(comm, &r->geostatic));
   PetscFunctionReturn(0);
@@ -262,7 +284,11 @@ PetscErrorCode setInitialState(Run *r, TS ts, Vec u, Vec v) {
     problem::GeostaticReport g;
     PetscReal              dt_geo;
     PetscCall(TSGetTimeStep(ts, &dt_geo));
-    PetscCall(problem::GeostaticStage(&r->model, r->geostatic, dt_geo, &g));
+    Vec u_geo;
+    PetscCall(VecDuplicate(u, &u_geo));
+    PetscCall(problem::GeostaticStage(&r->model, r->geostatic, dt_geo, &g, u_geo));
+    PetscCall(r->answers.SetGeostatic(r->model, r->stations, u_geo));
+    PetscCall(VecDestroy(&u_geo));
     PetscCall(PetscPrintf(r->model.comm, "%s\n", problem::GeostaticReportLine(r->geostatic, g).c_str()));
   }
   PetscCall(InitialVelocitySet(r->model.dm, r->model.bulk, r->model.bc.free_mask, r->opt.initial_velocity, r->region_velocity, v));
@@ -281,8 +307,12 @@ PetscErrorCode openOutputs(Run *r, TS ts) {
     r->energy_csv.SetFluid(r->model.pore != nullptr);
     r->energy_csv.SetHysteretic(r->model.hysteresis != nullptr);
     PetscCall(r->energy_csv.Open(r->opt.output_dir, restarted ? CheckpointFolder(r->opt.restart) + "/energy.csv" : "", r->restart_step));
+    r->dt = dt;
     WriteRunInfo(r->model, r->opt.output_dir, dt);
   }
+  PetscReal t;
+  PetscCall(TSGetTime(ts, &t));
+  PetscCall(r->rigid_histories.Open(r->model.rigid, r->rank, r->opt.output_dir, restarted ? CheckpointFolder(r->opt.restart) : "", t));
   // Default: 50 frames over the run.
   const PetscReal interval = r->opt.output_interval > 0 ? r->opt.output_interval : r->max_time / 50;
   PetscCall(r->frames.Open(r->model, r->opt.output_dir, interval, r->opt.fields, restarted ? CheckpointFolder(r->opt.restart) : ""));
@@ -293,6 +323,7 @@ PetscErrorCode closeOutputs(Run *r) {
   PetscFunctionBeginUser;
   r->energy_csv.Close();
   PetscCall(r->stations.Flush(r->model.comm, r->opt.output_dir, true));
+  PetscCall(r->rigid_histories.Flush());
   PetscCall(r->frames.Close());
   PetscFunctionReturn(0);
 }
@@ -319,7 +350,15 @@ PetscErrorCode solve(Run *r, TS ts) {
   PetscCall(TSGetStepNumber(ts, &steps));
   PetscCall(closeOutputs(r));
   // Listed from the folder itself: it held none of these files before the run (output_dir.hpp).
-  PetscCall(ReportEnd(r->model, r->ledger, OutputDirRunFiles(r->opt.output_dir), steps, wall_end - r->wall_start, r->opt.output_dir));
+  // The steps this process ran (after a restart, not those before it).
+  PetscCall(ReportEnd(r->model, r->ledger, OutputDirRunFiles(r->opt.output_dir), steps - r->restart_step, wall_end - r->wall_start, r->opt.output_dir));
+  if (r->opt.restart[0] && r->answers.active())
+    PetscCall(PetscPrintf(r->model.comm, "answers: not stated after a restart (they accumulate from the first step); scripts/scene_metrics.py %s reads them from the output\n", r->opt.output_dir));
+  else if (r->answers.active()) {
+    std::string answers;
+    PetscCall(r->answers.Finish(r->model, &answers));
+    if (r->rank == 0) WriteRunInfo(r->model, r->opt.output_dir, r->dt, answers);
+  }
   PetscCall(VecDestroy(&u));
   PetscCall(VecDestroy(&v));
   PetscFunctionReturn(0);
@@ -344,6 +383,7 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
   PetscCall(createTimeStepper(r, &ts));
   PetscCall(OptionsErrorIfUnused(comm));
   PetscCall(TSGetTimeStep(ts, &dt));
+  r->stations.setTimeStep(dt);
   PetscCall(ReportSetup(r->model, r->step, r->stations, dt, r->max_time, r->opt.output_dir));
   PetscCall(ReportSetupCost(comm, setup_start, r->model.mesh.build_seconds));
   PetscCall(PetscLogStagePop());

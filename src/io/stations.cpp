@@ -138,7 +138,7 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const meshi
                                     nullptr));
   PetscCall(core::OptionsChoice(PetscOptionsObject, "-station_side", "side recorded by a station on an interface (split nodes): structure or soil", sides, 2, &side,
                                 nullptr));
-  PetscCall(PetscOptionsReal("-station_interval", "time between station samples [s], >= 0 (0: every step); each sample is the first step at or after a multiple of it, unfiltered",
+  PetscCall(PetscOptionsReal("-station_interval", "time between station samples [s], >= 0 (0: every step); rounded to a whole number of steps, the step's values, unfiltered",
                              "Stations::Setup", interval_, &interval_, nullptr));
   PetscCall(PetscOptionsBool("-station_stress", "also record the stress [Pa] and strain [-] of the cell holding each station", "Stations::Setup", stress_, &stress_, nullptr));
   PetscOptionsEnd();
@@ -252,12 +252,7 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const meshi
   PetscFunctionReturn(0);
 }
 
-bool Stations::due(double t_before, double t) const {
-  if (interval_ == 0 || std::isnan(t_before)) return true;
-  // The sample times k I; a step ending within 1e-6 I short of one (round-off in t) is at it.
-  const auto index = [this](double x) { return std::floor(x / interval_ + 1e-6); };
-  return index(t) > index(t_before);
-}
+void Stations::setTimeStep(double dt) { every_ = interval_ > 0 ? std::max<long>(1, std::lround(interval_ / dt)) : 1; }
 
 PetscErrorCode Stations::Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a) {
   PetscFunctionBeginUser;
@@ -279,6 +274,28 @@ PetscErrorCode Stations::Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a) {
       }
   }
   for (int k = 0; k < 3; ++k) PetscCall(VecRestoreArrayRead(work_[k], &arr[k]));
+  PetscCall(PetscLogEventEnd(core::event_stations, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Stations::Values(DM dm, Vec u, Vec a, const std::vector<Probe> &wanted, std::vector<double> *values) {
+  PetscFunctionBeginUser;
+  values->assign(wanted.size(), 0.0);
+  if (wanted.empty()) PetscFunctionReturn(0);
+  PetscCall(PetscLogEventBegin(core::event_stations, 0, 0, 0, 0));
+  const PetscScalar *arr[3] = {nullptr, nullptr, nullptr};
+  for (int k : {0, 2}) {
+    PetscCall(DMGlobalToLocal(dm, k == 0 ? u : a, INSERT_VALUES, work_[k]));
+    PetscCall(VecGetArrayRead(work_[k], &arr[k]));
+  }
+  for (size_t w = 0; w < wanted.size(); ++w)
+    for (const Local &l : local_)
+      if (l.station == wanted[w].station) {
+        double s = 0;
+        for (size_t n = 0; n < l.offsets.size(); ++n) s += l.shape[n] * PetscRealPart(arr[wanted[w].field][l.offsets[n] + wanted[w].component]);
+        (*values)[w] = s;
+      }
+  for (int k : {0, 2}) PetscCall(VecRestoreArrayRead(work_[k], &arr[k]));
   PetscCall(PetscLogEventEnd(core::event_stations, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }

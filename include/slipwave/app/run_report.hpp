@@ -19,8 +19,9 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
                            const std::string &output_dir);
 
 // Rank 0: OUTPUT_DIR/run_info.json (resolved frequency, h_min, input top frequency, dt; with
-// hysteretic soil, each region's backbone and the parameters it was built from).
-void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt);
+// hysteretic soil, each region's backbone and the parameters it was built from); answers: a
+// JSON object for its "answers" (app/run_answers.hpp; written again at the end of the run).
+void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt, const std::string &answers = "");
 
 // The interfaces' final states, the contact dashpots' work, steps and wall time, the energy
 // balance error and where the output is: files, the names of the run's files in it.
