@@ -38,6 +38,7 @@ struct RunOptions {
   PetscReal progress_interval              = 5.0; // wall seconds
   PetscReal energy_growth_limit            = 2.0;
   PetscBool dry_run                        = PETSC_FALSE;
+  PetscBool report_verbose                 = PETSC_FALSE;
   PetscBool fields                         = PETSC_TRUE;
   PetscBool overwrite                      = PETSC_FALSE;
   PetscReal initial_velocity[3]            = {0, 0, 0};
@@ -91,6 +92,8 @@ PetscErrorCode readRunOptions(MPI_Comm comm, RunOptions *o) {
                              o->energy_growth_limit, &o->energy_growth_limit, nullptr));
   PetscCall(PetscOptionsBool("-dry_run", "print the setup report (stable step, what governs it, points per wavelength) and stop", "SimulationRun", o->dry_run,
                              &o->dry_run, nullptr));
+  PetscCall(PetscOptionsBool("-report_verbose", "the setup report in full (boundaries, loads, damping fits, rigid bodies, interface penalties, set-up cost); without it a compact summary",
+                             "SimulationRun", o->report_verbose, &o->report_verbose, nullptr));
   PetscCall(PetscOptionsInt("-checkpoint_interval", "write the full state to OUTPUT_DIR/checkpoint.bin every N steps [steps], >= 0 (0: never)", "SimulationRun",
                             o->checkpoint_interval, &o->checkpoint_interval, nullptr));
   PetscCall(PetscOptionsString("-restart", "continue from this checkpoint file (same scene options and number of ranks)", "SimulationRun", o->restart, o->restart,
@@ -297,6 +300,9 @@ PetscErrorCode setInitialState(Run *r, TS ts, Vec u, Vec v) {
   PetscFunctionReturn(0);
 }
 
+// Between output frames [s]: -output_interval, by default 50 frames over the run.
+PetscReal outputInterval(const Run *r) { return r->opt.output_interval > 0 ? r->opt.output_interval : r->max_time / 50; }
+
 // OUTPUT_DIR with energy.csv and run_info.json (rank 0), and the output frames.
 PetscErrorCode openOutputs(Run *r, TS ts) {
   const bool restarted = r->opt.restart[0];
@@ -313,9 +319,7 @@ PetscErrorCode openOutputs(Run *r, TS ts) {
   PetscReal t;
   PetscCall(TSGetTime(ts, &t));
   PetscCall(r->rigid_histories.Open(r->model.rigid, r->rank, r->opt.output_dir, restarted ? CheckpointFolder(r->opt.restart) : "", t));
-  // Default: 50 frames over the run.
-  const PetscReal interval = r->opt.output_interval > 0 ? r->opt.output_interval : r->max_time / 50;
-  PetscCall(r->frames.Open(r->model, r->opt.output_dir, interval, r->opt.fields, restarted ? CheckpointFolder(r->opt.restart) : ""));
+  PetscCall(r->frames.Open(r->model, r->opt.output_dir, outputInterval(r), r->opt.fields, restarted ? CheckpointFolder(r->opt.restart) : ""));
   PetscFunctionReturn(0);
 }
 
@@ -384,8 +388,8 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
   PetscCall(OptionsErrorIfUnused(comm));
   PetscCall(TSGetTimeStep(ts, &dt));
   r->stations.setTimeStep(dt);
-  PetscCall(ReportSetup(r->model, r->step, r->stations, dt, r->max_time, r->opt.output_dir));
-  PetscCall(ReportSetupCost(comm, setup_start, r->model.mesh.build_seconds));
+  PetscCall(ReportSetup(r->model, r->step, r->stations, dt, r->max_time, r->opt.output_dir, outputInterval(r), r->opt.report_verbose));
+  if (r->opt.report_verbose) PetscCall(ReportSetupCost(comm, setup_start, r->model.mesh.build_seconds));
   PetscCall(PetscLogStagePop());
   PetscCall(PetscOptionsHasHelp(nullptr, &help));
   if (r->opt.dry_run || help) PetscCall(PetscPrintf(comm, "%s: stopping before the first step\n", help ? "-help" : "dry run"));
