@@ -154,7 +154,9 @@ PetscErrorCode stopIfRequested(Run *r, PetscInt step, PetscReal t) {
 PetscErrorCode checkpointIfDue(Run *r, TS ts, PetscInt step) {
   PetscFunctionBeginUser;
   if (r->opt.checkpoint_interval > 0 && step > 0 && step % r->opt.checkpoint_interval == 0) {
+    // The histories a restart copies from this folder hold every row up to the checkpoint.
     r->energy_csv.Flush();
+    PetscCall(r->rigid_histories.Flush());
     PetscCall(CheckpointWrite(std::string(r->opt.output_dir) + "/checkpoint.bin", checkpointState(r, ts)));
   }
   PetscFunctionReturn(0);

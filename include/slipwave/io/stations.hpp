@@ -47,6 +47,8 @@ public:
   void           setTimeStep(double dt);
   bool           due(PetscInt step) const { return step % every_ == 0; }
   long           samplingSteps() const { return every_; }
+  // Rows per station from step 0 to step (a checkpoint's records).
+  PetscInt       samplesUpTo(PetscInt step) const { return step / (PetscInt)every_ + 1; }
   // Samples the global u, v, a at time t.
   PetscErrorCode Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a);
   // Every step if asked (the run's answers, app/run_answers): for each (station, field,
