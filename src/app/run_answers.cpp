@@ -172,11 +172,16 @@ PetscErrorCode RunAnswers::Update(const problem::Elastodynamics &model, io::Stat
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode RunAnswers::Finish(const problem::Elastodynamics &model, std::string *json) {
+PetscErrorCode RunAnswers::Finish(const problem::Elastodynamics &model, bool restarted, const std::string &output_dir, std::string *json) {
   MPI_Comm comm = model.comm;
   PetscFunctionBeginUser;
   json->clear();
   if (!active_) PetscFunctionReturn(0);
+  if (restarted) {
+    PetscCall(PetscPrintf(comm, "answers: not stated after a restart (they accumulate from the first step); scripts/scene_metrics.py %s reads them from the output\n",
+                          output_dir.c_str()));
+    PetscFunctionReturn(0);
+  }
   const auto &iface = model.interfaces[interface_];
   // The slip path: the largest over the pairs of each pair's accumulated slip.
   std::vector<double> fields;

@@ -215,8 +215,8 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   if (r->ledger.evaluated) PetscCall(DivergenceGuard(r->model, r->ledger, r->opt.energy_growth_limit, r->step, h, step, t, u, v, a));
   if (r->model.pore) PetscCall(porous::PorePressureTotal(r->model.pore)); // for the stations and the frames
   if (r->model.rigid) PetscCall(problem::RigidBodiesMotion(r->model.rigid, r->model.mass, u, &r->motion));
-  // Every step (the interfaces' counts of the progress line too); after a restart not (see run_answers.hpp).
-  if (r->answers.active() && !r->opt.restart[0]) PetscCall(r->answers.Update(r->model, r->stations, t, u, a, r->motion));
+  // Every step (the interfaces' counts of the progress line too).
+  if (r->answers.active()) PetscCall(r->answers.Update(r->model, r->stations, t, u, a, r->motion));
   if (r->stations.due(step)) PetscCall(sampleSeries(r, t, u, v, a));
   if (r->ledger.evaluated) PetscCall(appendEnergyRow(r, step, t));
   bool due;
@@ -358,12 +358,10 @@ PetscErrorCode solve(Run *r, TS ts) {
   // Listed from the folder itself: it held none of these files before the run (output_dir.hpp).
   // The steps this process ran (after a restart, not those before it).
   PetscCall(ReportEnd(r->model, r->ledger, OutputDirRunFiles(r->opt.output_dir), steps - r->restart_step, wall_end - r->wall_start, r->opt.output_dir));
-  if (r->opt.restart[0] && r->answers.active())
-    PetscCall(PetscPrintf(r->model.comm, "answers: not stated after a restart (they accumulate from the first step); scripts/scene_metrics.py %s reads them from the output\n", r->opt.output_dir));
-  else if (r->answers.active()) {
+  if (r->answers.active()) {
     std::string answers;
-    PetscCall(r->answers.Finish(r->model, &answers));
-    if (r->rank == 0) WriteRunInfo(r->model, r->opt.output_dir, r->dt, answers);
+    PetscCall(r->answers.Finish(r->model, r->opt.restart[0] != 0, r->opt.output_dir, &answers));
+    if (r->rank == 0 && !answers.empty()) WriteRunInfo(r->model, r->opt.output_dir, r->dt, answers);
   }
   PetscCall(VecDestroy(&u));
   PetscCall(VecDestroy(&v));

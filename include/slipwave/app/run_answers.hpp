@@ -51,8 +51,9 @@ public:
   PetscErrorCode Update(const problem::Elastodynamics &model, io::Stations &stations, double t, Vec u, Vec a, const std::vector<double> &motion);
   // The status counts of every interface at the last Update.
   const std::vector<InterfaceCounts> &counts() const { return counts_; }
-  // Collective: the table (rank 0 prints) and the JSON object for run_info.json.
-  PetscErrorCode Finish(const problem::Elastodynamics &model, std::string *json);
+  // Collective: the table (rank 0 prints) and the JSON object for run_info.json; after a
+  // restart (restarted) a line that says why there is none, and json stays empty.
+  PetscErrorCode Finish(const problem::Elastodynamics &model, bool restarted, const std::string &output_dir, std::string *json);
 
 private:
   bool                     active_ = false;
