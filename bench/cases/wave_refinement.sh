@@ -36,7 +36,7 @@ for ppw in 10 20 40 80; do
   log="$out.log"
   t0=$(date +%s%N)
   "$SW" $SOIL $WAVE -mesh_box_faces 1,"$ny" -mesh_box_upper "$w",$H -constrain_components y -ts_max_time 1.2 \
-    -station_coordinates "$($PY -c "print($w/2)")",$H -station_names top -output_fields 0 -progress_interval 100 -output_dir "$out" > "$log"
+    -station_coordinates "$($PY -c "print($w/2)")",$H -station_names top -station_interval 0 -output_fields 0 -progress_interval 100 -output_dir "$out" > "$log"
   column_rows+=("$ppw $ny $log $out/stations/top.csv $(( ($(date +%s%N) - t0) / 1000 ))")
 done
 $PY - "$CSV" "$H" "$VS" "$F0" "$T0" "$A" "${column_rows[@]}" <<'PY'

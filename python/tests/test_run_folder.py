@@ -154,9 +154,13 @@ class Energy(unittest.TestCase):
 class RunInfo(unittest.TestCase):
     def test_fields(self):
         info = RunFolder(RUN).run_info()
-        # run_report.cpp WriteRunInfo; degree 1 writes no element_degree.
+        # run_report.cpp WriteRunInfo; degree 1 writes no element_degree; the run has an
+        # interface, so its answers (app/run_answers.hpp) are there, each a value and a unit.
         self.assertEqual(set(info), {"resolved_frequency_hz", "points_per_wavelength", "slowest_region", "resolving_element_size_m", "h_min_m", "input_top_frequency_hz",
-                                     "time_step_s"})
+                                     "time_step_s", "answers"})
+        self.assertIn("net_slip", info["answers"])
+        for key, answer in info["answers"].items():
+            self.assertEqual(set(answer), {"value", "unit"}, key)
         self.assertEqual(info["time_step_s"], DT)  # -ts_dt, printed with 10 digits
         self.assertEqual(info["h_min_m"], 1.0)  # 20 m / 20 cells
         self.assertEqual(info["resolving_element_size_m"], 1.0)  # the soil's largest cell: every cell's

@@ -244,7 +244,7 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
   PetscCall(problem::ElastodynamicsDrainOpenGaps(s.model));
   // Every station has one row per step taken so far (steps 0 .. step).
   if (s.model->pore) s.stations->expectPressure();
-  const PetscInt      samples = (header[4] + 1) * s.stations->rowWidth() * (PetscInt)s.stations->localStations();
+  const PetscInt      samples = s.stations->samplesUpTo(header[4]) * s.stations->rowWidth() * (PetscInt)s.stations->localStations();
   std::vector<double> records;
   PetscCall(loadLocalArray(comm, samples, viewer, &records));
   s.stations->loadRecords(records.data(), records.size());

@@ -20,7 +20,7 @@ namespace {
 constexpr size_t kMaxDirLength = 3800;
 
 // True for a name slipwave writes into the output folder (see the writers: energy_csv.cpp,
-// run_report.cpp, input_motion_csv.cpp, checkpoint.cpp, stations.cpp, field_writer.cpp).
+// run_report.cpp, input_motion_csv.cpp, checkpoint.cpp, stations.cpp, field_writer.cpp, rigid_histories.cpp).
 bool isRunFile(const std::string &name) {
   static const char *const exact[] = {"energy.csv", "run_info.json", "input_motion.csv", "checkpoint.bin", "checkpoint.bin.tmp", "volume.h5", "volume.xmf", "volume",
                                       ".volume.h5.partial", ".volume.xmf.partial", "stations.h5", ".stations.h5.spare", ".stations.h5.partial", "stations"};
@@ -29,6 +29,8 @@ bool isRunFile(const std::string &name) {
   auto ends = [&](const char *tail) { const std::string t = tail; return name.size() > t.size() && name.compare(name.size() - t.size(), t.size(), t) == 0; };
   // interface_<name>.h5/.xmf, its frame folder interface_<name> and their partial names.
   const bool frames = name.find('.') == std::string::npos;
+  // rigid_<region>.csv: the rigid bodies' histories (rigid_histories.cpp).
+  if (name.rfind("rigid_", 0) == 0 && ends(".csv")) return true;
   return (name.rfind("interface_", 0) == 0 && (ends(".h5") || ends(".xmf") || frames)) ||
          (name.rfind(".interface_", 0) == 0 && (ends(".xmf.partial") || ends(".h5.partial")));
 }

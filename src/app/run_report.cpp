@@ -84,7 +84,11 @@ Resolution resolvedFrequency(const problem::Elastodynamics &model) {
   return res;
 }
 
-PetscErrorCode reportInterfaces(const problem::Elastodynamics &model) {
+// Of a multi-line report, the lines that stay in the compact report: those indented once
+// (a region's or a feature's headline; the deeper ones are its details).
+bool isHeadline(const std::string &line) { return line.rfind("  ", 0) == 0 && line.rfind("   ", 0) != 0; }
+
+PetscErrorCode reportInterfaces(const problem::Elastodynamics &model, bool verbose) {
   MPI_Comm comm = model.comm;
   PetscFunctionBeginUser;
   for (size_t k = 0; k < model.interfaces.size(); ++k) {
@@ -93,6 +97,7 @@ PetscErrorCode reportInterfaces(const problem::Elastodynamics &model) {
     PetscCall(PetscPrintf(comm, "  interface %s between %s (soil side) and %s: %" PetscInt_FMT " node pairs; phi %.4g deg, psi %.4g deg, c %.4g Pa, e_ini %.4g m\n",
                           iface.spec().name.c_str(), iface.spec().soil_region.c_str(), iface.spec().structure_region.c_str(), iface.pairs().n_global,
                           p.phi * 180 / PETSC_PI, p.psi * 180 / PETSC_PI, p.c, p.e_ini));
+    if (!verbose) continue;
     PetscInt cut;
     PetscCall(iface.CountCutPairs(model.mass, &cut));
     PetscCall(PetscPrintf(comm, "    %s; %" PetscInt_FMT " pairs have their two nodes on different ranks\n", model.penalty_notes[k].c_str(), cut));
@@ -159,7 +164,7 @@ std::string hystereticRegionsJson(const std::vector<medium::RegionMaterialInfo> 
 
 } // namespace
 
-void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt) {
+void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt, const std::string &answers) {
   const Resolution  res  = resolvedFrequency(model);
   const std::string path = output_dir + "/run_info.json";
   if (FILE *f = std::fopen(path.c_str(), "w")) {
@@ -167,13 +172,14 @@ void WriteRunInfo(const problem::Elastodynamics &model, const std::string &outpu
                  res.frequency, nodesPerWavelengthNeeded(model.bulk.degree()), res.region.c_str(), res.size, model.bulk.minCellSize());
     if (model.bulk.degree() > 1) std::fprintf(f, " \"element_degree\": %d, \"element_size_m\": %.6g,\n", (int)model.bulk.degree(), model.bulk.minElementSize());
     if (model.hysteresis) std::fprintf(f, " \"hysteretic_regions\": [%s],\n", hystereticRegionsJson(model.materials).c_str());
+    if (!answers.empty()) std::fprintf(f, " \"answers\": %s,\n", answers.c_str());
     std::fprintf(f, " \"input_top_frequency_hz\": %.6g, \"time_step_s\": %.10g}\n", problem::SceneTopFrequency(model).hz, dt);
     std::fclose(f);
   }
 }
 
 PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::StableStep &limit, const io::Stations &stations, PetscReal dt, PetscReal max_time,
-                           const std::string &output_dir) {
+                           const std::string &output_dir, PetscReal output_interval, bool verbose) {
   MPI_Comm    comm = model.comm;
   PetscMPIInt size;
   PetscInt    n_nodes, ncell_local = model.bulk.cellCount(), ncell;
@@ -181,8 +187,8 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(VecGetSize(model.mass, &n_nodes));
   PetscCallMPI(MPI_Allreduce(&ncell_local, &ncell, 1, MPIU_INT, MPI_SUM, comm));
-  PetscCall(PetscPrintf(comm, "slipwave: explicit elastodynamics, %" PetscInt_FMT "D %s, %d rank%s (partitioner %s)\n", model.dim, model.dim == 2 ? "plane strain" : "", size,
-                        size > 1 ? "s" : "", model.mesh.partitioner.c_str()));
+  PetscCall(PetscPrintf(comm, "slipwave: explicit elastodynamics, %" PetscInt_FMT "D %s, %d rank%s (partitioner %s)%s\n", model.dim, model.dim == 2 ? "plane strain" : "", size,
+                        size > 1 ? "s" : "", model.mesh.partitioner.c_str(), verbose ? "" : "; -report_verbose for the details"));
   const PetscInt p = model.bulk.degree();
   if (p == 1)
     PetscCall(PetscPrintf(comm, "  mesh: %s, %" PetscInt_FMT " cells, %" PetscInt_FMT " nodes, %" PetscInt_FMT " distinct element matrices on rank 0\n",
@@ -229,25 +235,30 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
                           res.frequency, nodesPerWavelengthNeeded(p), p, res.region.c_str(), res.size));
   std::string bcs;
   for (size_t i = 0; i < model.bc.names.size(); ++i) bcs += " " + model.bc.names[i] + "=" + input::boundaryTypeName(model.bc.types[i]);
-  PetscCall(PetscPrintf(comm, "  boundaries:%s\n", bcs.c_str()));
+  if (verbose) PetscCall(PetscPrintf(comm, "  boundaries:%s\n", bcs.c_str()));
   for (const std::string &w : model.bc.warnings) PetscCall(PetscPrintf(comm, "  warning: %s\n", w.c_str()));
-  for (const std::string &l : model.bc.load_notes) PetscCall(PetscPrintf(comm, "  load: %s\n", l.c_str()));
+  if (verbose)
+    for (const std::string &l : model.bc.load_notes) PetscCall(PetscPrintf(comm, "  load: %s\n", l.c_str()));
   if (model.bc.input_wave != input::InputWave::None)
     PetscCall(PetscPrintf(comm, "  input: %s wave through '%s', %s\n", input::inputWaveName(model.bc.input_wave), model.bc.input_boundary.c_str(), model.bc.input.describe().c_str()));
-  for (const std::string &line : input::DrmReport(model.drm)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+  for (const std::string &line : input::DrmReport(model.drm))
+    if (verbose || isHeadline(line)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   if (model.damping_ratio > 0)
     PetscCall(PetscPrintf(comm, "  Rayleigh damping %.3g %% at %g and %g Hz: alpha %.4g 1/s, beta %.4g s\n", 100 * model.damping_ratio, model.damping_f1, model.damping_f2,
                           model.rayleigh.alpha, model.rayleigh.beta));
-  if (model.rayleigh.beta > 0)
+  if (verbose && model.rayleigh.beta > 0)
     PetscCall(PetscPrintf(comm, "    its stiffness-proportional part lowers the stable step from %.4e s (undamped) to %.4e s (-%.1f %%)\n", limit.dt_without_stiffness_damping,
                           limit.dt_bulk, 100 * (1 - limit.dt_bulk / limit.dt_without_stiffness_damping)));
-  for (const std::string &line : medium::AttenuationReport(model.attenuation, model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
-  PetscCall(PetscPrintf(comm, "%s", problem::RigidBodiesDescribe(model.rigid).c_str()));
+  for (const std::string &line : medium::AttenuationReport(model.attenuation, model.materials))
+    if (verbose || isHeadline(line)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+  if (verbose) PetscCall(PetscPrintf(comm, "%s", problem::RigidBodiesDescribe(model.rigid).c_str()));
   for (const std::string &line : medium::HysteresisReport(model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
-  PetscCall(reportInterfaces(model));
+  PetscCall(reportInterfaces(model, verbose));
   if (model.pore)
-    for (const std::string &line : porous::PorePressureReport(model.pore, model.materials, limit.dt_drained, limit.dt_bulk, limit.dt_limit, dt)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
-  for (const std::string &line : stations.ambiguities()) PetscCall(PetscPrintf(comm, "  %s\n", line.c_str()));
+    for (const std::string &line : porous::PorePressureReport(model.pore, model.materials, limit.dt_drained, limit.dt_bulk, limit.dt_limit, dt))
+      if (verbose || isHeadline(line)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+  if (verbose)
+    for (const std::string &line : stations.ambiguities()) PetscCall(PetscPrintf(comm, "  %s\n", line.c_str()));
   if (limit.dt_cfl < 1e300)
     PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", limit.dt_limit, limit.governing.c_str(), limit.dt_cfl));
   else PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s)\n", limit.dt_limit, limit.governing.c_str()));
@@ -256,7 +267,11 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
     PetscCall(PetscPrintf(comm, "  warning: the interface penalty lowers the stable step from %.4e s (bulk alone) to %.4e s (-%.1f %%)\n", limit.dt_without_interfaces,
                           limit.dt_bulk, 100 * (1 - limit.dt_bulk / limit.dt_without_interfaces)));
   PetscCall(PetscPrintf(comm, "  time step %.4e s = %.3f of the limit; %.0f steps to t = %g s\n", (double)dt, dt / limit.dt_limit, std::ceil(max_time / dt), (double)max_time));
-  PetscCall(PetscPrintf(comm, "  output: %s/\n", output_dir.c_str()));
+  char sampling[160] = "";
+  if (!stations.empty())
+    std::snprintf(sampling, sizeof sampling, "; %zu stations every %ld step%s (%.4g s, -station_interval)", stations.names().size(), stations.samplingSteps(),
+                  stations.samplingSteps() > 1 ? "s" : "", stations.samplingSteps() * (double)dt);
+  PetscCall(PetscPrintf(comm, "  output: %s/, frames every %g s%s\n", output_dir.c_str(), (double)output_interval, sampling));
   PetscCall(reportCost(model, std::ceil(max_time / dt)));
   PetscFunctionReturn(0);
 }

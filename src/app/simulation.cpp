@@ -1,7 +1,9 @@
 #include "slipwave/app/simulation.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <vector>
 
 #include "slipwave/app/checkpoint.hpp"
 #include "slipwave/app/divergence_guard.hpp"
@@ -9,6 +11,8 @@
 #include "slipwave/app/initial_conditions.hpp"
 #include "slipwave/app/output_dir.hpp"
 #include "slipwave/app/output_frames.hpp"
+#include "slipwave/app/rigid_histories.hpp"
+#include "slipwave/app/run_answers.hpp"
 #include "slipwave/app/run_report.hpp"
 #include "slipwave/app/setup_cost.hpp"
 #include "slipwave/app/stop_request.hpp"
@@ -21,6 +25,7 @@
 #include "slipwave/problem/elastodynamics.hpp"
 #include "slipwave/problem/energy_ledger.hpp"
 #include "slipwave/problem/geostatic.hpp"
+#include "slipwave/problem/rigid_bodies.hpp"
 #include "slipwave/problem/stable_step.hpp"
 #include "slipwave/time/central_difference.hpp"
 
@@ -34,6 +39,7 @@ struct RunOptions {
   PetscReal progress_interval              = 5.0; // wall seconds
   PetscReal energy_growth_limit            = 2.0;
   PetscBool dry_run                        = PETSC_FALSE;
+  PetscBool report_verbose                 = PETSC_FALSE;
   PetscBool fields                         = PETSC_TRUE;
   PetscBool overwrite                      = PETSC_FALSE;
   PetscReal initial_velocity[3]            = {0, 0, 0};
@@ -52,6 +58,9 @@ struct Run {
   problem::EnergyLedger     ledger;
   problem::GeostaticOptions geostatic;
   io::Stations            stations;
+  RigidHistories          rigid_histories;
+  RunAnswers              answers;
+  std::vector<double>     motion;           // the rigid bodies' motion at this step (RigidBodiesMotion)
   RegionVelocities        region_velocity;
   OutputFrames            frames;
   EnergyCsv               energy_csv;
@@ -59,7 +68,9 @@ struct Run {
   PetscLogDouble          wall_start = 0, wall_last_progress = 0;
   PetscMPIInt             rank = 0;
   bool                    resumed = false; // TSSolve repeats the monitor of the restart step: skip it
+  PetscReal               t_first  = NAN;  // the first step's time in this process (the progress line's speed)
   PetscInt                restart_step = 0;
+  PetscReal               dt = 0;           // the time step chosen (run_info.json)
 };
 
 CheckpointState checkpointState(Run *r, TS ts) {
@@ -82,6 +93,8 @@ PetscErrorCode readRunOptions(MPI_Comm comm, RunOptions *o) {
                              o->energy_growth_limit, &o->energy_growth_limit, nullptr));
   PetscCall(PetscOptionsBool("-dry_run", "print the setup report (stable step, what governs it, points per wavelength) and stop", "SimulationRun", o->dry_run,
                              &o->dry_run, nullptr));
+  PetscCall(PetscOptionsBool("-report_verbose", "the setup report in full (boundaries, loads, damping fits, rigid bodies, interface penalties, set-up cost); without it a compact summary",
+                             "SimulationRun", o->report_verbose, &o->report_verbose, nullptr));
   PetscCall(PetscOptionsInt("-checkpoint_interval", "write the full state to OUTPUT_DIR/checkpoint.bin every N steps [steps], >= 0 (0: never)", "SimulationRun",
                             o->checkpoint_interval, &o->checkpoint_interval, nullptr));
   PetscCall(PetscOptionsString("-restart", "continue from this checkpoint file (same scene options and number of ranks)", "SimulationRun", o->restart, o->restart,
@@ -124,6 +137,7 @@ PetscErrorCode flushSeries(Run *r, bool last) {
   PetscFunctionBeginUser;
   r->energy_csv.Flush();
   PetscCall(r->stations.Flush(r->model.comm, r->opt.output_dir, last));
+  PetscCall(r->rigid_histories.Flush());
   PetscFunctionReturn(0);
 }
 
@@ -144,14 +158,16 @@ PetscErrorCode stopIfRequested(Run *r, PetscInt step, PetscReal t) {
   char time_text[32]; // PETSc's own %g would print 0 as "0."
   std::snprintf(time_text, sizeof time_text, "%g", (double)t);
   SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT,
-          "stopped by %s after step %" PetscInt_FMT ", t = %s s; stations hold every step up to it, energy.csv every -energy_interval-th, the fields every output time up to it (%s); %s",
+          "stopped by %s after step %" PetscInt_FMT ", t = %s s; stations hold every sample up to it, energy.csv every -energy_interval-th, the fields every output time up to it (%s); %s",
           StopSignalName(signal), step, time_text, r->opt.output_dir, resume);
 }
 
 PetscErrorCode checkpointIfDue(Run *r, TS ts, PetscInt step) {
   PetscFunctionBeginUser;
   if (r->opt.checkpoint_interval > 0 && step > 0 && step % r->opt.checkpoint_interval == 0) {
+    // The histories a restart copies from this folder hold every row up to the checkpoint.
     r->energy_csv.Flush();
+    PetscCall(r->rigid_histories.Flush());
     PetscCall(CheckpointWrite(std::string(r->opt.output_dir) + "/checkpoint.bin", checkpointState(r, ts)));
   }
   PetscFunctionReturn(0);
@@ -162,13 +178,32 @@ PetscErrorCode printProgressIfDue(Run *r, PetscInt step, PetscReal t, PetscReal 
   PetscLogDouble now;
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&now));
+  if (std::isnan(r->t_first)) r->t_first = t;
   if (step == 0 || last || now - r->wall_last_progress >= r->opt.progress_interval) {
-    const double elapsed = now - r->wall_start;
-    const double eta     = t > 0 ? elapsed * (r->max_time - t) / t : 0;
-    PetscCall(PetscPrintf(r->model.comm, "step %6" PetscInt_FMT "  t = %.4e s  dt = %.3e s  wall %7.1f s  ETA %7.1f s  energy kin %.3e strain %.3e  balance %.1e\n",
-                          step, (double)t, (double)h, elapsed, eta, r->ledger.kinetic, r->ledger.strain, r->ledger.relativeError()));
+    // The remaining time at the speed measured in this process so far (simulated s per wall s).
+    const double elapsed = now - r->wall_start, done = t - r->t_first;
+    char         eta[32] = "      -";
+    if (done > 0) std::snprintf(eta, sizeof eta, "%7.1f", elapsed * (r->max_time - t) / done);
+    std::string states;
+    for (const InterfaceCounts &c : r->answers.counts()) {
+      char cell[96];
+      std::snprintf(cell, sizeof cell, "%s%.0f/%.0f/%.0f", states.empty() ? "  stick/slip/open " : " ", c.stick, c.slip, c.open);
+      states += cell;
+    }
+    PetscCall(PetscPrintf(r->model.comm, "step %6" PetscInt_FMT "  t = %.4e s (%5.1f %%)  dt = %.3e s  wall %7.1f s  ETA %s s%s  energy kin %.3e strain %.3e  balance %.1e\n", step,
+                          (double)t, 100 * t / r->max_time, (double)h, elapsed, eta, states.c_str(), r->ledger.kinetic, r->ledger.strain, r->ledger.relativeError()));
     r->wall_last_progress = now;
   }
+  PetscFunctionReturn(0);
+}
+
+// At the stations' sample times: the stations' rows.
+PetscErrorCode sampleSeries(Run *r, PetscReal t, Vec u, Vec v, Vec a) {
+  PetscFunctionBeginUser;
+  PetscCall(r->stations.Sample(r->model.dm, t, u, v, a));
+  if (r->model.pore) PetscCall(r->stations.SamplePressure(r->model.pore->pdm, r->model.pore->p_total, r->model.pore->p));
+  PetscCall(r->stations.SampleStress(r->model.bulk, r->model.initial_stress, r->model.hysteresis));
+  if (r->model.rigid) r->rigid_histories.Sample(t, r->motion);
   PetscFunctionReturn(0);
 }
 
@@ -189,12 +224,11 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   const bool evaluate = last || step % r->opt.energy_interval == 0 || r->frames.Due(step, t, last);
   PetscCall(problem::EnergyLedgerUpdate(&r->model, ts, h, evaluate, &r->ledger));
   if (r->ledger.evaluated) PetscCall(DivergenceGuard(r->model, r->ledger, r->opt.energy_growth_limit, r->step, h, step, t, u, v, a));
-  PetscCall(r->stations.Sample(r->model.dm, t, u, v, a));
-  if (r->model.pore) {
-    PetscCall(porous::PorePressureTotal(r->model.pore));
-    PetscCall(r->stations.SamplePressure(r->model.pore->pdm, r->model.pore->p_total, r->model.pore->p));
-  }
-  PetscCall(r->stations.SampleStress(r->model.bulk, r->model.initial_stress, r->model.hysteresis));
+  if (r->model.pore) PetscCall(porous::PorePressureTotal(r->model.pore)); // for the stations and the frames
+  if (r->model.rigid) PetscCall(problem::RigidBodiesMotion(r->model.rigid, r->model.mass, u, &r->motion));
+  // Every step (the interfaces' counts of the progress line too).
+  if (r->answers.active()) PetscCall(r->answers.Update(r->model, r->stations, t, u, a, r->motion));
+  if (r->stations.due(step)) PetscCall(sampleSeries(r, t, u, v, a));
   if (r->ledger.evaluated) PetscCall(appendEnergyRow(r, step, t));
   bool due;
   PetscCall(r->frames.WriteIfDue(r->model, step, t, last, u, v, a, &due));
@@ -223,6 +257,7 @@ PetscErrorCode setUp(MPI_Comm comm, Run *r) {
   PetscCall(problem::ElastodynamicsCreate(comm, &r->model));
   PetscCall(problem::StableStepCompute(&r->model, &r->step));
   PetscCall(r->stations.Setup(r->model.dm, r->model.bulk, r->model.mesh));
+  PetscCall(r->answers.Setup(r->model, r->stations));
   PetscCall(RegionVelocitiesRead(comm, r->model.dim, r->model.materials, &r->region_velocity));
   PetscCall(problem::GeostaticOptionsRead(comm, &r->geostatic));
   PetscFunctionReturn(0);
@@ -265,7 +300,11 @@ PetscErrorCode setInitialState(Run *r, TS ts, Vec u, Vec v) {
     problem::GeostaticReport g;
     PetscReal              dt_geo;
     PetscCall(TSGetTimeStep(ts, &dt_geo));
-    PetscCall(problem::GeostaticStage(&r->model, r->geostatic, dt_geo, &g));
+    Vec u_geo;
+    PetscCall(VecDuplicate(u, &u_geo));
+    PetscCall(problem::GeostaticStage(&r->model, r->geostatic, dt_geo, &g, u_geo));
+    PetscCall(r->answers.SetGeostatic(r->model, r->stations, u_geo));
+    PetscCall(VecDestroy(&u_geo));
     PetscCall(PetscPrintf(r->model.comm, "%s\n", problem::GeostaticReportLine(r->geostatic, g).c_str()));
   }
   PetscCall(InitialVelocitySet(r->model.dm, r->model.bulk, r->model.bc.free_mask, r->opt.initial_velocity, r->region_velocity, v));
@@ -273,6 +312,9 @@ PetscErrorCode setInitialState(Run *r, TS ts, Vec u, Vec v) {
   PetscCall(time::CentralDifferenceComputeInitialAcceleration(ts));
   PetscFunctionReturn(0);
 }
+
+// Between output frames [s]: -output_interval, by default 50 frames over the run.
+PetscReal outputInterval(const Run *r) { return r->opt.output_interval > 0 ? r->opt.output_interval : r->max_time / 50; }
 
 // OUTPUT_DIR with energy.csv, run_info.json and input_motion.csv (rank 0), and the output frames.
 PetscErrorCode openOutputs(Run *r, TS ts) {
@@ -284,15 +326,17 @@ PetscErrorCode openOutputs(Run *r, TS ts) {
     r->energy_csv.SetFluid(r->model.pore != nullptr);
     r->energy_csv.SetHysteretic(r->model.hysteresis != nullptr);
     PetscCall(r->energy_csv.Open(r->opt.output_dir, restarted ? CheckpointFolder(r->opt.restart) + "/energy.csv" : "", r->restart_step));
+    r->dt = dt;
     WriteRunInfo(r->model, r->opt.output_dir, dt);
     const input::BoundaryConditions &bc = r->model.bc;
     // Rank 0 alone: a failure warns (an error here would leave the other ranks waiting).
     if (bc.input.active() && bc.input_wave != input::InputWave::None && !io::WriteInputMotion(r->opt.output_dir, bc.input, (int)bc.input_component, r->max_time))
       PetscCall(PetscPrintf(PETSC_COMM_SELF, "warning: cannot write %s/input_motion.csv: the plots will not show the input motion\n", r->opt.output_dir));
   }
-  // Default: 50 frames over the run.
-  const PetscReal interval = r->opt.output_interval > 0 ? r->opt.output_interval : r->max_time / 50;
-  PetscCall(r->frames.Open(r->model, r->opt.output_dir, interval, r->opt.fields, restarted ? CheckpointFolder(r->opt.restart) : ""));
+  PetscReal t;
+  PetscCall(TSGetTime(ts, &t));
+  PetscCall(r->rigid_histories.Open(r->model.rigid, r->rank, r->opt.output_dir, restarted ? CheckpointFolder(r->opt.restart) : "", t));
+  PetscCall(r->frames.Open(r->model, r->opt.output_dir, outputInterval(r), r->opt.fields, restarted ? CheckpointFolder(r->opt.restart) : ""));
   PetscFunctionReturn(0);
 }
 
@@ -300,6 +344,7 @@ PetscErrorCode closeOutputs(Run *r) {
   PetscFunctionBeginUser;
   r->energy_csv.Close();
   PetscCall(r->stations.Flush(r->model.comm, r->opt.output_dir, true));
+  PetscCall(r->rigid_histories.Flush());
   PetscCall(r->frames.Close());
   PetscFunctionReturn(0);
 }
@@ -326,7 +371,13 @@ PetscErrorCode solve(Run *r, TS ts) {
   PetscCall(TSGetStepNumber(ts, &steps));
   PetscCall(closeOutputs(r));
   // Listed from the folder itself: it held none of these files before the run (output_dir.hpp).
-  PetscCall(ReportEnd(r->model, r->ledger, OutputDirRunFiles(r->opt.output_dir), steps, wall_end - r->wall_start, r->opt.output_dir));
+  // The steps this process ran (after a restart, not those before it).
+  PetscCall(ReportEnd(r->model, r->ledger, OutputDirRunFiles(r->opt.output_dir), steps - r->restart_step, wall_end - r->wall_start, r->opt.output_dir));
+  if (r->answers.active()) {
+    std::string answers;
+    PetscCall(r->answers.Finish(r->model, r->opt.restart[0] != 0, r->opt.output_dir, &answers));
+    if (r->rank == 0 && !answers.empty()) WriteRunInfo(r->model, r->opt.output_dir, r->dt, answers);
+  }
   PetscCall(VecDestroy(&u));
   PetscCall(VecDestroy(&v));
   PetscFunctionReturn(0);
@@ -351,8 +402,9 @@ PetscErrorCode SimulationRun(MPI_Comm comm) {
   PetscCall(createTimeStepper(r, &ts));
   PetscCall(OptionsErrorIfUnused(comm));
   PetscCall(TSGetTimeStep(ts, &dt));
-  PetscCall(ReportSetup(r->model, r->step, r->stations, dt, r->max_time, r->opt.output_dir));
-  PetscCall(ReportSetupCost(comm, setup_start, r->model.mesh.build_seconds));
+  r->stations.setTimeStep(dt);
+  PetscCall(ReportSetup(r->model, r->step, r->stations, dt, r->max_time, r->opt.output_dir, outputInterval(r), r->opt.report_verbose));
+  if (r->opt.report_verbose) PetscCall(ReportSetupCost(comm, setup_start, r->model.mesh.build_seconds));
   PetscCall(PetscLogStagePop());
   PetscCall(PetscOptionsHasHelp(nullptr, &help));
   if (r->opt.dry_run || help) PetscCall(PetscPrintf(comm, "%s: stopping before the first step\n", help ? "-help" : "dry run"));

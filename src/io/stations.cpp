@@ -138,8 +138,11 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const meshi
                                     nullptr));
   PetscCall(core::OptionsChoice(PetscOptionsObject, "-station_side", "side recorded by a station on an interface (split nodes): structure or soil", sides, 2, &side,
                                 nullptr));
+  PetscCall(PetscOptionsReal("-station_interval", "time between station samples [s], >= 0 (0: every step); rounded to a whole number of steps, the step's values, unfiltered",
+                             "Stations::Setup", interval_, &interval_, nullptr));
   PetscCall(PetscOptionsBool("-station_stress", "also record the stress [Pa] and strain [-] of the cell holding each station", "Stations::Setup", stress_, &stress_, nullptr));
   PetscOptionsEnd();
+  PetscCheck(interval_ >= 0 && std::isfinite(interval_), comm, PETSC_ERR_USER_INPUT, "-station_interval = %g; allowed: a time >= 0 s (0: every step)", (double)interval_);
   if (has_file) PetscCall(readStationFile(comm, file, dim_, &names_, &coords_));
   if (has_coords) {
     PetscCheck(nx % dim_ == 0, comm, PETSC_ERR_USER_INPUT, "-station_coordinates has %" PetscInt_FMT " values; allowed: a multiple of %" PetscInt_FMT, nx, dim_);
@@ -249,6 +252,8 @@ PetscErrorCode Stations::Setup(DM dm, const fem::BulkOperator &bulk, const meshi
   PetscFunctionReturn(0);
 }
 
+void Stations::setTimeStep(double dt) { every_ = interval_ > 0 ? std::max<long>(1, std::lround(interval_ / dt)) : 1; }
+
 PetscErrorCode Stations::Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a) {
   PetscFunctionBeginUser;
   if (names_.empty()) PetscFunctionReturn(0);
@@ -269,6 +274,28 @@ PetscErrorCode Stations::Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a) {
       }
   }
   for (int k = 0; k < 3; ++k) PetscCall(VecRestoreArrayRead(work_[k], &arr[k]));
+  PetscCall(PetscLogEventEnd(core::event_stations, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Stations::Values(DM dm, Vec u, Vec a, const std::vector<Probe> &wanted, std::vector<double> *values) {
+  PetscFunctionBeginUser;
+  values->assign(wanted.size(), 0.0);
+  if (wanted.empty()) PetscFunctionReturn(0);
+  PetscCall(PetscLogEventBegin(core::event_stations, 0, 0, 0, 0));
+  const PetscScalar *arr[3] = {nullptr, nullptr, nullptr};
+  for (int k : {0, 2}) {
+    PetscCall(DMGlobalToLocal(dm, k == 0 ? u : a, INSERT_VALUES, work_[k]));
+    PetscCall(VecGetArrayRead(work_[k], &arr[k]));
+  }
+  for (size_t w = 0; w < wanted.size(); ++w)
+    for (const Local &l : local_)
+      if (l.station == wanted[w].station) {
+        double s = 0;
+        for (size_t n = 0; n < l.offsets.size(); ++n) s += l.shape[n] * PetscRealPart(arr[wanted[w].field][l.offsets[n] + wanted[w].component]);
+        (*values)[w] = s;
+      }
+  for (int k : {0, 2}) PetscCall(VecRestoreArrayRead(work_[k], &arr[k]));
   PetscCall(PetscLogEventEnd(core::event_stations, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -440,7 +467,7 @@ PetscErrorCode Stations::Flush(MPI_Comm comm, const std::string &dir, bool last)
     else if (rank == 0) PetscCallMPI(MPI_Recv(fresh[s].data(), count, MPI_DOUBLE, owner, (int)s, comm, MPI_STATUS_IGNORE));
   }
   const bool first = flushed_rows_ == 0;
-  flushed_rows_ += fresh[0].size() / row; // every station samples every step: the same count
+  flushed_rows_ += fresh[0].size() / row; // every station samples at the same steps: the same count
   if (rank != 0) PetscFunctionReturn(0);
   if (first) {
     std::error_code error;

@@ -55,6 +55,14 @@ void rigidPointAcceleration(double mass, const double Jinv[9], const double F[3]
   for (int a = 0; a < 3; ++a) out[a] = F[a] / mass + spin[a];
 }
 
+void rigidMotionOf(double mass, const double Jinv[9], const double P[3], const double L[3], double U[3], double theta[3]) {
+  for (int a = 0; a < 3; ++a) {
+    U[a]     = P[a] / mass;
+    theta[a] = 0;
+    for (int b = 0; b < 3; ++b) theta[a] += Jinv[a * 3 + b] * L[b];
+  }
+}
+
 double rigidDofCompliance(double mass, const double Jinv[9], const double r[3], int d) {
   const double e[3] = {d == 0 ? 1.0 : 0.0, d == 1 ? 1.0 : 0.0, d == 2 ? 1.0 : 0.0};
   double       t[3];

@@ -137,7 +137,7 @@ std::string GeostaticReportLine(const GeostaticOptions &o, const GeostaticReport
   return "geostatic stage: " + line + buf;
 }
 
-PetscErrorCode GeostaticStage(Elastodynamics *m, const GeostaticOptions &o, double dt, GeostaticReport *report) {
+PetscErrorCode GeostaticStage(Elastodynamics *m, const GeostaticOptions &o, double dt, GeostaticReport *report, Vec geostatic_u) {
   Vec            u, v, a, mask, run_mask;
   PetscLogDouble t0, t1;
   PetscFunctionBeginUser;
@@ -244,6 +244,7 @@ PetscErrorCode GeostaticStage(Elastodynamics *m, const GeostaticOptions &o, doub
     PetscCall(VecRestoreArray(m->bc.constant_force, &fc));
   }
   PetscCall(ElastodynamicsSetInitialStress(m, u));
+  if (geostatic_u) PetscCall(VecCopy(u, geostatic_u));
   for (auto &iface : m->interfaces) iface.ResetJumpReference();
 
   m->bc.free_mask  = run_mask;

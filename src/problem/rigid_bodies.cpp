@@ -131,6 +131,36 @@ PetscErrorCode RigidBodiesDestroy(RigidBodies **rigid) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode RigidBodiesMotion(const RigidBodies *rb, Vec mass, Vec u, std::vector<double> *motion) {
+  const PetscScalar *x, *m;
+  const PetscInt     dim = rb->dim;
+  std::vector<double> sums(6 * rb->bodies.size(), 0.0); // per body P = sum m u and L = sum r x m u
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(u, &x));
+  PetscCall(VecGetArrayRead(mass, &m));
+  for (size_t b = 0; b < rb->bodies.size(); ++b) {
+    const RigidBody &body = rb->bodies[b];
+    double          *P = &sums[6 * b], *L = P + 3;
+    for (size_t k = 0; k < body.dofs.size(); ++k) {
+      const PetscInt i     = body.dofs[k];
+      double         mu[3] = {0, 0, 0}, l[3];
+      for (PetscInt d = 0; d < dim; ++d) mu[d] = PetscRealPart(m[i + d]) * PetscRealPart(x[i + d]);
+      physics::cross(&body.arm[3 * k], mu, l);
+      for (int d = 0; d < 3; ++d) {
+        P[d] += mu[d];
+        L[d] += l[d];
+      }
+    }
+  }
+  PetscCall(VecRestoreArrayRead(mass, &m));
+  PetscCall(VecRestoreArrayRead(u, &x));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums.data(), (int)sums.size(), MPI_DOUBLE, MPI_SUM, rb->comm));
+  motion->assign(sums.size(), 0.0);
+  for (size_t b = 0; b < rb->bodies.size(); ++b)
+    physics::rigidMotionOf(rb->bodies[b].mass, rb->bodies[b].inverse_inertia, &sums[6 * b], &sums[6 * b + 3], &(*motion)[6 * b], &(*motion)[6 * b + 3]);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RigidBodiesProject(RigidBodies *rb, Vec mass, Vec a) {
   PetscScalar       *acc;
   const PetscScalar *m;

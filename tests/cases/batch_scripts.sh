@@ -15,7 +15,7 @@ set -eu
 ROOT=$PWD
 WORK="$ROOT/$WORK"  # absolute: the fake launchers log there
 EXTRA="-ts_max_time 0.05 -output_interval 0.01 -progress_interval 100"
-export SLIPWAVE_BIN="$ROOT/$SW"
+export SLIPWAVE_BIN="$ROOT/$SLIPWAVE_BINARY"
 cat >"$WORK/tiny.yaml" <<'EOF'
 # tiny scene of tests/cases/batch_scripts.sh: a stiff block on soil, 20 m x 6 m
 mesh_box_faces: 20,6

@@ -10,7 +10,7 @@
 # per S wavelength at 20 Hz, 2nd-order dispersion) and the record's linear interpolation.
 set -eu
 . tests/tools/lib.sh
-grep -vE "^(regions|region_block|material_block|interface|station)" config/scenes/default.yaml > "$WORK/site.yaml"
+grep -vE "^(regions|region_block|material_block|interface|station)" config/scenes/default_linear.yaml > "$WORK/site.yaml"
 $MPIEXEC -n 2 $SW -options_file "$WORK/site.yaml" -regions rock,soil,air -station_coordinates 0,30,40,30 -station_names centre,free_field \
   -output_fields 0 -progress_interval 1000 -output_dir "$WORK" | grep -vE "^step" | tee "$WORK/report.txt"
 $PY - "$WORK" <<'PY'

@@ -9,12 +9,12 @@
 set -eu
 . tests/tools/lib.sh
 . tests/tools/together.sh
-grep -v "^interface" config/scenes/default.yaml > "$WORK/unsplit.yaml"
+grep -v "^interface" config/scenes/default_linear.yaml > "$WORK/unsplit.yaml"
 O="-mesh_box_faces 61,30 -ts_max_time 3 -output_fields 0 -progress_interval 100 -ts_dt 1e-4"
 together $SW -options_file "$WORK/unsplit.yaml" $O -output_dir "$WORK/unsplit" > "$WORK/unsplit.log"
 tie="-interface_base_phi 0 -interface_base_c 1e12 -interface_base_tensile_strength 1e12 -interface_base_e_ini 1"
 for f in 30 300; do
-  together $SW -options_file config/scenes/default.yaml $O $tie -interface_base_penalty_rule mesh -interface_base_penalty_factor $f -output_dir "$WORK/tied$f" > "$WORK/tied$f.log"
+  together $SW -options_file config/scenes/default_linear.yaml $O $tie -interface_base_penalty_rule mesh -interface_base_penalty_factor $f -output_dir "$WORK/tied$f" > "$WORK/tied$f.log"
 done
 together_wait
 names=block_top,block_base_left,block_base_right,free_field,bedrock

@@ -19,6 +19,8 @@
 # Every output is checked with scripts/check_output.py; the y (and z) velocities stay 0.
 set -euo pipefail
 BUILD=${BUILD:-build}
+export SLIPWAVE_BINARY="$BUILD/slipwave"
+SW=tests/tools/slipwave_for_tests.sh # stations every step, the verbose report
 out="$BUILD/tests/gmsh_meshes"
 rm -rf "$out"; mkdir -p "$out"
 command -v gmsh >/dev/null || { echo "FAIL: gmsh is not installed"; exit 1; }
@@ -34,11 +36,11 @@ run() { # name, args...
   "$@" $common -output_dir "$out/$name" > "$out/$name.log" 2>&1 || { cat "$out/$name.log"; echo "FAIL: run $name"; exit 1; }
   grep -E "mesh:|boundaries:" "$out/$name.log"
 }
-run box   "$BUILD/slipwave" -mesh_box_faces 2,100 -mesh_box_upper 2,100 -constrain_components y -station_coordinates 1,100
-run quad  "$BUILD/slipwave" -mesh_file "$out/column_quad.msh" -constrain_components y -station_coordinates 1,100
-run tri   "$BUILD/slipwave" -mesh_file "$out/column_tri.msh" -constrain_components y -station_coordinates 2,100
-run tri_np2 mpiexec --oversubscribe $root_flag -n 2 "$BUILD/slipwave" -mesh_file "$out/column_tri.msh" -constrain_components y -station_coordinates 2,100
-run tet   "$BUILD/slipwave" -mesh_file "$out/column_tet.msh" -constrain_components y,z -station_coordinates 1,1,100
+run box   "$SW" -mesh_box_faces 2,100 -mesh_box_upper 2,100 -constrain_components y -station_coordinates 1,100
+run quad  "$SW" -mesh_file "$out/column_quad.msh" -constrain_components y -station_coordinates 1,100
+run tri   "$SW" -mesh_file "$out/column_tri.msh" -constrain_components y -station_coordinates 2,100
+run tri_np2 mpiexec --oversubscribe $root_flag -n 2 "$SW" -mesh_file "$out/column_tri.msh" -constrain_components y -station_coordinates 2,100
+run tet   "$SW" -mesh_file "$out/column_tet.msh" -constrain_components y,z -station_coordinates 1,1,100
 grep -q "boundaries: left=free right=free front=free back=free bottom=absorbing top=free" "$out/tet.log" || { echo "FAIL: tet boundaries"; exit 1; }
 for r in box quad tri tri_np2 tet; do
   /usr/bin/python3 scripts/check_output.py "$out/$r" --expect-fields displacement,velocity

@@ -18,7 +18,7 @@ done
 grep -q "mass density \[kg/m^3\]" "$WORK/help.txt" || { echo "-help lacks units"; missing=1; }
 WORK=$(cd "$WORK" && pwd)
 mkdir "$WORK/empty"
-sw_abs=$(cd "$(dirname "$SW")" && pwd)/slipwave
+sw_abs=$(cd "$(dirname "$SLIPWAVE_BINARY")" && pwd)/slipwave
 (cd "$WORK/empty" && "$sw_abs" -help > "$WORK/alone.txt" 2> "$WORK/alone.err") || { echo "-help alone: exit status $?"; cat "$WORK/alone.err"; missing=1; }
 [ ! -s "$WORK/alone.err" ] || { echo "-help alone wrote to stderr:"; cat "$WORK/alone.err"; missing=1; }
 [ -z "$(ls -A "$WORK/empty")" ] || { echo "-help alone wrote in the working folder: $(ls -A "$WORK/empty")"; missing=1; }

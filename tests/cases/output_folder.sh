@@ -12,7 +12,7 @@
 #   empty, stops in one line, exit non-zero (1, not an abort's 134), before the set-up.
 set -eu
 . tests/tools/lib.sh
-O="-options_file config/scenes/default.yaml -mesh_box_faces 61,30 -ts_max_time 0.1 -output_interval 0.05 -progress_interval 100"
+O="-options_file config/scenes/default_linear.yaml -mesh_box_faces 61,30 -ts_max_time 0.1 -output_interval 0.05 -progress_interval 100"
 $SW $O -output_fields false -output_dir "$WORK/a" > "$WORK/a.log"
 closing=$(grep "^output in" "$WORK/a.log")
 echo "$closing"

@@ -121,7 +121,7 @@ done
 #   stations.h5;
 # - volume.xmf and interface_base.xmf pass scripts/check_output.py (every reference resolves
 #   to a dataset of its declared shape, no NaN), listing at least the first frame.
-K="-options_file config/scenes/default.yaml -mesh_box_faces 61,30 -ts_max_time 15 -output_interval 0.005 -progress_interval 100"
+K="-options_file config/scenes/default_linear.yaml -mesh_box_faces 61,30 -ts_max_time 15 -output_interval 0.005 -progress_interval 100"
 for k in 1 2 3 4 5; do
   rm -f "$WORK/K/volume.xmf"
   delay=$($PY -c "import random; print(round(random.uniform(0, 3), 2))")

@@ -26,6 +26,8 @@
 # CSV and AT2 runs agree to the AT2 rounding (5e-8 relative): tolerance 1e-6.
 set -euo pipefail
 BUILD=${BUILD:-build}
+export SLIPWAVE_BINARY="$BUILD/slipwave"
+SW=tests/tools/slipwave_for_tests.sh # stations every step, the verbose report
 out="$BUILD/tests/record_input"
 rm -rf "$out"; mkdir -p "$out"
 /usr/bin/python3 - "$out" <<'PY'
@@ -46,14 +48,14 @@ PY
 column="-mesh_box_faces 1,100 -mesh_box_upper 1,100 -regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200
  -constrain_components y -ts_max_time 1.2 -station_coordinates 0.5,100,0.5,0 -station_names top,base -output_fields false"
 for f in burst.csv burst.at2; do
-  "$BUILD/slipwave" $column -bc_bottom_type absorbing -input_wave sv -input_boundary bottom -input_stf record -input_record "$out/$f" \
+  "$SW" $column -bc_bottom_type absorbing -input_wave sv -input_boundary bottom -input_stf record -input_record "$out/$f" \
     -input_record_motion incident -output_dir "$out/incident_${f#burst.}" > "$out/incident_${f#burst.}.log"
 done
-"$BUILD/slipwave" $column -bc_bottom_type absorbing -input_wave sv -input_boundary bottom -input_stf record -input_record "$out/burst.csv" \
+"$SW" $column -bc_bottom_type absorbing -input_wave sv -input_boundary bottom -input_stf record -input_record "$out/burst.csv" \
   -output_dir "$out/outcrop_csv" > "$out/outcrop_csv.log"
 grep -q "input: sv wave through 'bottom', record .*burst.csv (CSV in m/s^2, 1201 samples.*; the incident wave itself" "$out/incident_csv.log" || { echo "FAIL: report does not describe the record"; cat "$out/incident_csv.log"; exit 1; }
 grep -q "record .*burst.csv (CSV in m/s^2, 1201 samples.*; outcrop motion (a rock outcrop moves 2 x the incident wave): the incident wave is half of it" "$out/outcrop_csv.log" || { echo "FAIL: report does not say outcrop"; cat "$out/outcrop_csv.log"; exit 1; }
-"$BUILD/slipwave" $column -bc_bottom_type velocity -bc_bottom_components x -bc_bottom_stf record -bc_bottom_record "$out/burst.csv" \
+"$SW" $column -bc_bottom_type velocity -bc_bottom_components x -bc_bottom_stf record -bc_bottom_record "$out/burst.csv" \
   -output_dir "$out/prescribed" > "$out/prescribed.log"
 /usr/bin/python3 - "$out" <<'PY'
 import sys, numpy as np

@@ -6,7 +6,7 @@
 # and the same operations follow).
 set -eu
 . tests/tools/lib.sh
-O="-options_file config/scenes/default.yaml -mesh_box_faces 61,30 -ts_max_time 0.8 -output_interval 0.1 -progress_interval 100"
+O="-options_file config/scenes/default_linear.yaml -mesh_box_faces 61,30 -ts_max_time 0.8 -output_interval 0.1 -progress_interval 100"
 $SW $O -output_dir "$WORK/C" > "$WORK/C.log"
 steps=$(tail -1 "$WORK/C/energy.csv" | cut -d, -f1)
 half=$((steps / 2))

@@ -14,7 +14,8 @@
 #    M = 1e5 N m/m and force (3e5, 0) N/m: theta = M/J t^2/2 and U = F/m t^2/2 exactly (constant
 #    accelerations), J = sum m_i |r_i|^2 of the lumped masses (rho hx hy/4 per cell corner)
 #    about their centroid, computed here from the grid; a station at (2, 1) (r = (1, 0.5) from
-#    the centroid) moves U + theta x r (small rotations), to 1e-9.
+#    the centroid) moves U + theta x r (small rotations), to 1e-9; rigid_block.csv gives theta
+#    and U (its mass centre) themselves, to 1e-9.
 # 3. The sliding block of interface_newmark_block.sh with its block rigid: Newmark's permanent
 #    slip within the same 2 % (the elastic block's flexibility term is gone).
 set -eu
@@ -84,5 +85,10 @@ scale = np.max(np.abs(theta)) * np.hypot(rx, ry)
 check("free block: u_x = U - theta r_y, relative", np.max(np.abs(c["u_x"] - (U - theta * ry))) / np.max(np.abs(U)), 1e-9)
 check("free block: u_y = theta r_x, relative", np.max(np.abs(c["u_y"] - theta * rx)) / scale, 1e-9)
 check("free block energy balance error", balance(f"{work}/one.log"), 1e-10)
+r = read_csv(f"{work}/one/rigid_block.csv")
+theta_r, U_r = 1e5 / J * r["t"] ** 2 / 2, 3e5 / mass * r["t"] ** 2 / 2
+check("rigid_block.csv: theta_z = M/J t^2/2, relative", np.max(np.abs(r["theta_z"] - theta_r)) / np.max(np.abs(theta_r)), 1e-9)
+check("rigid_block.csv: u_x of the mass centre = F/m t^2/2, relative", np.max(np.abs(r["u_x"] - U_r)) / np.max(np.abs(U_r)), 1e-9)
+check("rigid_block.csv: u_y of the mass centre = 0, relative to u_x", np.max(np.abs(r["u_y"])) / np.max(np.abs(U_r)), 1e-9)
 sys.exit(0 if ok else 1)
 PY

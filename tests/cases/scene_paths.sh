@@ -14,7 +14,7 @@
 set -eu
 . tests/tools/lib.sh
 W=$(cd "$WORK" && pwd)
-sw=$(cd "$(dirname "$SW")" && pwd)/slipwave
+sw=$(cd "$(dirname "$SLIPWAVE_BINARY")" && pwd)/slipwave
 mkdir -p "$W/elsewhere/config/scenes" "$W/elsewhere/config/records" "$W/run"
 cp config/scenes/default.yaml "$W/elsewhere/config/scenes/"
 cp config/records/el_centro_1940_ns.csv "$W/elsewhere/config/records/"

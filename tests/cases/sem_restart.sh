@@ -6,7 +6,7 @@
 # same operations follow, so B must equal C byte for byte (energy.csv, every station file).
 set -eu
 . tests/tools/lib.sh
-O="-options_file config/scenes/default.yaml -mesh_box_faces 61,12 -element_degree 2 -ts_max_time 0.4 -output_fields 0 -progress_interval 1000"
+O="-options_file config/scenes/default_linear.yaml -mesh_box_faces 61,12 -element_degree 2 -ts_max_time 0.4 -output_fields 0 -progress_interval 1000"
 $SW $O -output_dir "$WORK/C" > "$WORK/C.log"
 steps=$(tail -1 "$WORK/C/energy.csv" | cut -d, -f1)
 half=$((steps / 2))

@@ -1,6 +1,8 @@
 # Shared by the scenario tests: paths, the MPI launcher, and a runner that keeps the log.
 BUILD=${BUILD:-build}
-SW="$BUILD/slipwave"
+export SLIPWAVE_BINARY="$BUILD/slipwave"
+# Stations every step and the verbose report unless a test says otherwise (tests/tools/slipwave_for_tests.sh).
+SW=tests/tools/slipwave_for_tests.sh
 PY=/usr/bin/python3
 CHECK="$PY tests/tools/checks.py"
 MPIEXEC="mpiexec --oversubscribe"

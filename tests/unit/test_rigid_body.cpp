@@ -93,6 +93,26 @@ int main() {
     unit::near(Mo2[d], Mo[d], 1e-13, 1e-13, "and the moment about the centroid, component " + std::to_string(d));
   }
 
+  // Motion of the body: a rigid displacement u_i = U + theta x r_i of the five points gives
+  // back U and theta (sum m_i r_i x (theta x r_i) = J theta exactly).
+  const double U0[3] = {0.01, -0.03, 0.002}, th0[3] = {1e-3, -4e-4, 2.5e-3};
+  double       P[3] = {0, 0, 0}, L[3] = {0, 0, 0}, U1[3], th1[3];
+  for (int i = 0; i < 5; ++i) {
+    double spin[3], mu[3], l[3];
+    cross(th0, r[i], spin);
+    for (int d = 0; d < 3; ++d) mu[d] = ms[i] * (U0[d] + spin[d]);
+    cross(r[i], mu, l);
+    for (int d = 0; d < 3; ++d) {
+      P[d] += mu[d];
+      L[d] += l[d];
+    }
+  }
+  rigidMotionOf(M, Jinv, P, L, U1, th1);
+  for (int d = 0; d < 3; ++d) {
+    unit::near(U1[d], U0[d], 1e-13, 1e-16, "rigid displacement field: the mass centre's displacement, component " + std::to_string(d));
+    unit::near(th1[d], th0[d], 1e-12, 1e-16, "and its rotation, component " + std::to_string(d));
+  }
+
   // Compliance: 2D, a unit x force at r = (0, b) from the centroid of the rectangle above
   // (mass 4 m) accelerates that point by 1/(4 m) + b^2 / J_zz.
   double J2inv[9];

@@ -14,13 +14,18 @@
 
 namespace slipwave::app {
 
-// dt: the time step chosen; max_time: -ts_max_time [s].
+// dt: the time step chosen; max_time: -ts_max_time [s]; output_interval: between frames [s].
+// Compact by default (mesh, materials and their damping, resolution, input, interfaces, the
+// step and what governs it, output, memory and the run-time estimate, every warning);
+// verbose (-report_verbose) adds the details: boundaries, loads, damping fits, rigid bodies,
+// interface penalties and dashpots, pore-pressure stepping, stations on interfaces.
 PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::StableStep &limit, const io::Stations &stations, PetscReal dt, PetscReal max_time,
-                           const std::string &output_dir);
+                           const std::string &output_dir, PetscReal output_interval, bool verbose);
 
 // Rank 0: OUTPUT_DIR/run_info.json (resolved frequency, h_min, input top frequency, dt; with
-// hysteretic soil, each region's backbone and the parameters it was built from).
-void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt);
+// hysteretic soil, each region's backbone and the parameters it was built from); answers: a
+// JSON object for its "answers" (app/run_answers.hpp; written again at the end of the run).
+void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt, const std::string &answers = "");
 
 // The interfaces' final states, the contact dashpots' work, steps and wall time, the energy
 // balance error and where the output is: files, the names of the run's files in it.

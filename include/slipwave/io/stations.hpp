@@ -1,6 +1,8 @@
 // Stations: points given by coordinates (-station_coordinates x1,y1,x2,y2,... with
 // -station_names, or -station_file with rows name,x,y[,z]) where u, v, a are interpolated
-// with the cell's shape functions every step (spectral elements of degree p > 1: with the
+// with the cell's shape functions every N-th step, N = -station_interval / dt rounded (at least
+// 1; default 0.005 s, 200 samples per second; 0: every step): uniform samples, each the
+// values of its step, not filtered (spectral elements of degree p > 1: with the
 // basis of the element holding the point, on its (p+1)^dim GLL nodes). At every output time (Flush) rank 0 appends the
 // rows sampled since the last flush to DIR/stations/<name>.csv and to DIR/stations.h5
 // (extendible datasets, file closed after each append), so a killed run keeps every row up to
@@ -41,8 +43,23 @@ public:
   // One line per station on an interface: where it is and which side it records.
   const std::vector<std::string> &ambiguities() const { return ambiguities_; }
   bool           empty() const { return names_.empty(); }
+  // The time step dt of the run sets the sampling: every N-th step, N = round(interval / dt).
+  void           setTimeStep(double dt);
+  bool           due(PetscInt step) const { return step % every_ == 0; }
+  long           samplingSteps() const { return every_; }
+  // Rows per station from step 0 to step (a checkpoint's records).
+  PetscInt       samplesUpTo(PetscInt step) const { return step / (PetscInt)every_ + 1; }
   // Samples the global u, v, a at time t.
   PetscErrorCode Sample(DM dm, PetscReal t, Vec u, Vec v, Vec a);
+  // Every step if asked (the run's answers, app/run_answers): for each (station, field,
+  // component) of wanted (field 0: u, 2: a), the value on the rank that owns the station and
+  // 0 on the others (a sum over the ranks gives it everywhere). Collective.
+  struct Probe {
+    int station, field, component;
+  };
+  PetscErrorCode Values(DM dm, Vec u, Vec a, const std::vector<Probe> &wanted, std::vector<double> *values);
+  // Station s's coordinates [m] (as many as the mesh has dimensions).
+  const double  *coordinates(size_t s) const { return &coords_[s * dim_]; }
   // Saturated scenes, after each Sample: the pore pressure (global vectors, one dof per vertex
   // on a clone of dm) joins the row as columns p (total: hydrostatic + excess) and p_excess
   // [Pa], compression positive.
@@ -89,6 +106,8 @@ private:
   Vec                      pressure_local_[2] = {nullptr, nullptr};
   bool                     has_pressure_ = false;
   PetscBool                stress_       = PETSC_FALSE; // -station_stress
+  PetscReal                interval_     = 0.005;       // -station_interval [s]
+  long                     every_        = 1;           // steps between samples
 };
 
 } // namespace slipwave::io

@@ -29,6 +29,13 @@ void rigidInertiaInverse(int dim, const double J[9], const bool rotates[3], doub
 // the resultant force F and the moment M about the centroid: A = F / mass, alpha = Jinv M.
 void rigidPointAcceleration(double mass, const double Jinv[9], const double F[3], const double M[3], const double r[3], double out[3]);
 
+// The rigid motion U + theta x r that a rigid body's point displacements u_i (masses m_i at
+// r_i from the centroid) carry: U = P / mass, the mass centre's displacement, and
+// theta = Jinv L, its small rotation [rad], from P = sum m_i u_i and L = sum r_i x m_i u_i.
+// Exact for a rigid displacement field (sum m_i r_i x (theta x r_i) = J theta); the same
+// projection as rigidPointAcceleration's, applied to displacements.
+void rigidMotionOf(double mass, const double Jinv[9], const double P[3], const double L[3], double U[3], double theta[3]);
+
 // 1 / m_eff of a unit force along axis d at r: how much acceleration a force there gives the
 // point itself along d, 1/mass + (r x e_d)^T Jinv (r x e_d) (mass HUGE_VAL: d is fixed). A spring k on that dof adds
 // k / m_eff to the trace of M_r^-1 K_r of the body's reduced system, an upper bound on its

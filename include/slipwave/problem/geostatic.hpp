@@ -56,6 +56,8 @@ PetscErrorCode GeostaticOptionsRead(MPI_Comm comm, GeostaticOptions *options);
 PetscErrorCode GeostaticOptionsDestroy(GeostaticOptions *options);
 // One report line (no newline) for the run log.
 std::string GeostaticReportLine(const GeostaticOptions &options, const GeostaticReport &report);
-PetscErrorCode GeostaticStage(Elastodynamics *model, const GeostaticOptions &options, double dt, GeostaticReport *report);
+// geostatic_u: if not null, a global vector that receives the geostatic displacement (the
+// settlement under gravity) before the dynamic stage's displacements start again from zero.
+PetscErrorCode GeostaticStage(Elastodynamics *model, const GeostaticOptions &options, double dt, GeostaticReport *report, Vec geostatic_u = nullptr);
 
 } // namespace slipwave::problem

@@ -54,6 +54,10 @@ PetscErrorCode RigidBodiesCreate(DM dm, const fem::BulkOperator &bulk, const std
 PetscErrorCode RigidBodiesDestroy(RigidBodies **rigid);
 // a (global) on the bodies' nodes := the rigid-body acceleration of the resultant of m a there.
 PetscErrorCode RigidBodiesProject(RigidBodies *rigid, Vec mass, Vec a);
+// Collective: each body's motion from the displacement u (global), 6 values per body: the
+// mass centre's displacement U (3) and the small rotation theta (3, about x, y, z) [m, rad]
+// (physics::rigidMotionOf; exact for the rigid field the bodies move with).
+PetscErrorCode RigidBodiesMotion(const RigidBodies *rigid, Vec mass, Vec u, std::vector<double> *motion);
 // For the stable step: rows (global, K <= diag(rows)) on the bodies' dofs hold the springs
 // that support them (interfaces, welded neighbours); *omega2 = the largest, over the bodies,
 // of sum_i rows_i / m_eff,i (physics::rigidDofCompliance), a bound on the body's frequencies
