@@ -214,6 +214,11 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
     else if (fmax > 0)
       PetscCall(PetscPrintf(comm, "  %5.1f GLL nodes per S wavelength at %.2f Hz (degree %" PetscInt_FMT ", element size %.3g m)", nodesPerWavelength(model, k, m.elastic.vs, fmax),
                             fmax, p, model.bulk.regionElementSize(k)));
+    // The compact report names the region's soil model here; its fitted bodies and curves
+    // are details (-report_verbose).
+    if (!verbose && m.model == medium::MaterialModel::Hysteretic)
+      PetscCall(PetscPrintf(comm, "; hysteretic (%s)", medium::kBackboneNames[(int)m.hysteretic.choice]));
+    if (!verbose && m.damping_ratio > 0) PetscCall(PetscPrintf(comm, "; constant-Q %.3g %%", 100 * m.damping_ratio));
     PetscCall(PetscPrintf(comm, "\n"));
   }
   for (size_t r = 0; r < model.materials.size(); ++r) {
@@ -249,10 +254,11 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
   if (verbose && model.rayleigh.beta > 0)
     PetscCall(PetscPrintf(comm, "    its stiffness-proportional part lowers the stable step from %.4e s (undamped) to %.4e s (-%.1f %%)\n", limit.dt_without_stiffness_damping,
                           limit.dt_bulk, 100 * (1 - limit.dt_bulk / limit.dt_without_stiffness_damping)));
-  for (const std::string &line : medium::AttenuationReport(model.attenuation, model.materials))
-    if (verbose || isHeadline(line)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+  if (verbose)
+    for (const std::string &line : medium::AttenuationReport(model.attenuation, model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   if (verbose) PetscCall(PetscPrintf(comm, "%s", problem::RigidBodiesDescribe(model.rigid).c_str()));
-  for (const std::string &line : medium::HysteresisReport(model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+  if (verbose)
+    for (const std::string &line : medium::HysteresisReport(model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   PetscCall(reportInterfaces(model, verbose));
   if (model.pore)
     for (const std::string &line : porous::PorePressureReport(model.pore, model.materials, limit.dt_drained, limit.dt_bulk, limit.dt_limit, dt))

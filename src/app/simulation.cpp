@@ -330,7 +330,14 @@ PetscErrorCode openOutputs(Run *r, TS ts) {
     WriteRunInfo(r->model, r->opt.output_dir, dt);
     const input::BoundaryConditions &bc = r->model.bc;
     // Rank 0 alone: a failure warns (an error here would leave the other ranks waiting).
-    if (bc.input.active() && bc.input_wave != input::InputWave::None && !io::WriteInputMotion(r->opt.output_dir, bc.input, (int)bc.input_component, r->max_time))
+    // Up to where the run ends: -ts_max_time, or sooner -ts_max_steps steps of dt (a run
+    // stopped by its step count may name no end time at all).
+    PetscInt  max_steps;
+    PetscReal t_start;
+    PetscCall(TSGetMaxSteps(ts, &max_steps));
+    PetscCall(TSGetTime(ts, &t_start));
+    const double t_end = std::min((double)r->max_time, max_steps > 0 && max_steps < PETSC_MAX_INT ? (double)t_start + (double)max_steps * dt : 1e300);
+    if (bc.input.active() && bc.input_wave != input::InputWave::None && !io::WriteInputMotion(r->opt.output_dir, bc.input, (int)bc.input_component, t_end))
       PetscCall(PetscPrintf(PETSC_COMM_SELF, "warning: cannot write %s/input_motion.csv: the plots will not show the input motion\n", r->opt.output_dir));
   }
   PetscReal t;

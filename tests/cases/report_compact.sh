@@ -1,5 +1,5 @@
 # The setup report reads in seconds: on the default scene the compact report (the default)
-# is at most 15 lines from its header to the first line after it (mesh, the 3 regions,
+# is at most 15 lines from its header to the first line after it (mesh, the regions with their soil models,
 # resolution, input, damping, interface, stable step, its warning, time step, output with
 # the sampling, memory and run-time estimate) and holds those; -report_verbose adds the
 # details (boundaries, rigid body, interface penalty, station on the interface, set-up
