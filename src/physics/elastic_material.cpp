@@ -1,21 +1,17 @@
 #include "slipwave/physics/elastic_material.hpp"
 
+#include "slipwave/physics/message_format.hpp"
+
 #include <cmath>
 #include <cstdio>
 
 namespace slipwave::physics {
 namespace {
 
-std::string format(const char *fmt, double a, double b = 0, double c = 0) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, fmt, a, b, c);
-  return buf;
-}
-
 // Every test below is written so that NaN fails it.
 std::string densityProblem(double rho) {
   if (rho > 0 && std::isfinite(rho)) return "";
-  return format("density rho = %g kg/m^3 is not allowed; it must be a finite number > 0", rho);
+  return formatMessage("density rho = %g kg/m^3 is not allowed; it must be a finite number > 0", rho);
 }
 
 } // namespace
@@ -46,9 +42,9 @@ double pWaveModulus(const ElasticMaterial &m) { return m.rho * m.vp * m.vp; }
 std::string elasticMaterialProblem(const ElasticMaterial &m) {
   if (std::string p = densityProblem(m.rho); !p.empty()) return p;
   if (!(m.vs > 0 && std::isfinite(m.vs)))
-    return format("S-wave speed vs = %g m/s is not allowed; it must be a finite number > 0", m.vs);
+    return formatMessage("S-wave speed vs = %g m/s is not allowed; it must be a finite number > 0", m.vs);
   if (!(m.vp >= std::sqrt(2.0) * m.vs && std::isfinite(m.vp)))
-    return format("P-wave speed vp = %g m/s is not allowed with vs = %g m/s; it must be finite and at least "
+    return formatMessage("P-wave speed vp = %g m/s is not allowed with vs = %g m/s; it must be finite and at least "
                   "sqrt(2)*vs = %g m/s (Poisson's ratio >= 0)",
                   m.vp, m.vs, std::sqrt(2.0) * m.vs);
   return "";
@@ -57,9 +53,9 @@ std::string elasticMaterialProblem(const ElasticMaterial &m) {
 std::string youngPoissonProblem(double young, double poisson, double rho) {
   if (std::string p = densityProblem(rho); !p.empty()) return p;
   if (!(young > 0 && std::isfinite(young)))
-    return format("Young's modulus E = %g Pa is not allowed; it must be a finite number > 0", young);
+    return formatMessage("Young's modulus E = %g Pa is not allowed; it must be a finite number > 0", young);
   if (!(poisson >= 0 && poisson < 0.5))
-    return format("Poisson's ratio nu = %g is not allowed; it must satisfy 0 <= nu < 0.5", poisson);
+    return formatMessage("Poisson's ratio nu = %g is not allowed; it must satisfy 0 <= nu < 0.5", poisson);
   return "";
 }
 
