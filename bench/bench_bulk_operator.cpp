@@ -184,7 +184,10 @@ PetscErrorCode validateMixed(PetscInt dim, double *diff) {
   setOption("-mesh_box_faces", dim == 2 ? "37,29" : "11,9,7");
   setOption("-mesh_box_upper", dim == 2 ? "100,100" : "100,100,100");
   setOption("-regions", "soil,rock");
-  setOption("-region_rock_box", dim == 2 ? "13,61,0,47" : "13,61,0,47,0,70");
+  // On grid lines (box regions must fit the mesh): cells 5..22 x 0..13 of 37 x 29 in 2D,
+  // 1..6 x 0..3 x 0..4 of 11 x 9 x 7 in 3D.
+  setOption("-region_rock_box", dim == 2 ? "13.513513513513514,62.16216216216216,0,48.275862068965516"
+                                         : "9.090909090909092,63.63636363636363,0,44.44444444444444,0,71.42857142857143");
   setOption("-material_rock_rho", "2500");
   setOption("-material_rock_vp", "1500");
   setOption("-material_rock_vs", "800");
