@@ -11,7 +11,7 @@
 set -eu
 . tests/tools/lib.sh
 grep -vE "^(regions|region_block|material_block|interface|station)" config/scenes/default_linear.yaml > "$WORK/site.yaml"
-$MPIEXEC -n 2 $SW -options_file "$WORK/site.yaml" -regions rock,soil,air -station_coordinates 0,30,40,30 -station_names centre,free_field \
+$MPIEXEC -n 2 $SW -options_file "$WORK/site.yaml" -input_record config/records/el_centro_1940_ns.csv -regions rock,soil,air -station_coordinates 0,30,40,30 -station_names centre,free_field \
   -output_fields 0 -progress_interval 1000 -output_dir "$WORK" | grep -vE "^step" | tee "$WORK/report.txt"
 $PY - "$WORK" <<'PY'
 import sys

@@ -11,7 +11,7 @@ set -eu
 . tests/tools/together.sh
 grep -v "^interface" config/scenes/default_linear.yaml > "$WORK/unsplit.yaml"
 O="-mesh_box_faces 61,30 -ts_max_time 3 -output_fields 0 -progress_interval 100 -ts_dt 1e-4"
-together $SW -options_file "$WORK/unsplit.yaml" $O -output_dir "$WORK/unsplit" > "$WORK/unsplit.log"
+together $SW -options_file "$WORK/unsplit.yaml" -input_record config/records/el_centro_1940_ns.csv $O -output_dir "$WORK/unsplit" > "$WORK/unsplit.log"
 tie="-interface_base_phi 0 -interface_base_c 1e12 -interface_base_tensile_strength 1e12 -interface_base_e_ini 1"
 for f in 30 300; do
   together $SW -options_file config/scenes/default_linear.yaml $O $tie -interface_base_penalty_rule mesh -interface_base_penalty_factor $f -output_dir "$WORK/tied$f" > "$WORK/tied$f.log"
