@@ -119,7 +119,8 @@ ReadStatus resolveUnit(const std::string &path, const std::string &header, Accel
 ReadStatus checkMagnitude(const std::string &path, int line, const std::string &text, double value, AccelerationUnit unit) {
   if (std::fabs(value * toMetresPerSecondSquared(unit)) <= kMaxRecordMagnitude) return {};
   std::ostringstream msg;
-  msg << "acceleration " << trim(text) << " " << AccelerationUnitName(unit) << " is absurd (more than 1e6 m/s^2, 1e5 g)";
+  if (unit == AccelerationUnit::Factor) msg << "factor " << trim(text) << " is absurd (more than 1e6)";
+  else msg << "acceleration " << trim(text) << " " << AccelerationUnitName(unit) << " is absurd (more than 1e6 m/s^2, 1e5 g)";
   return failure(path, line, msg.str());
 }
 
@@ -160,8 +161,8 @@ ReadStatus readAccelerationCsv(const std::string &path, GroundMotionRecord *reco
     }
     unit_known = true;
     if (!t_ok) return failure(path, line_no, "time \"" + trim(line.substr(0, comma)) + "\" is not a number");
-    if (!a_ok) return failure(path, line_no, "acceleration \"" + trim(line.substr(comma + 1)) + "\" is not a number");
-    const ReadStatus magnitude = checkMagnitude(path, line_no, line.substr(comma + 1), a, factor ? AccelerationUnit::MetresPerSecondSquared : unit);
+    if (!a_ok) return failure(path, line_no, std::string(factor ? "factor" : "acceleration") + " \"" + trim(line.substr(comma + 1)) + "\" is not a number");
+    const ReadStatus magnitude = checkMagnitude(path, line_no, line.substr(comma + 1), a, unit);
     if (!magnitude.ok) return magnitude;
     if (!record->time.empty() && !(t > record->time.back())) {
       std::ostringstream msg;
