@@ -11,7 +11,7 @@
 # (aspect 100, above the default limit 50) or folded (nodes 3 and 4 of it swapped).
 set -u
 . tests/tools/lib.sh
-bin="$(cd "$(dirname "$SW")" && pwd)/slipwave"
+bin="$(cd "$(dirname "$SLIPWAVE_BINARY")" && pwd)/slipwave"
 soil="-material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -ts_max_time 0.01 -output_fields false -dry_run -output_dir out"
 two_quads() { # $1 x of nodes 3 and 6, $2 the second element's nodes
   printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n2 1 "soil"\n$EndPhysicalNames\n'
