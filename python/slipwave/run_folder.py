@@ -35,7 +35,7 @@ ENERGY_UNIT = "J (per m in 2D)"
 
 # Units of the frames' fields (volume and interface), by field name.
 FIELD_UNITS = {
-    "displacement": "m", "velocity": "m/s", "acceleration": "m/s^2", "stress": "Pa", "region": "-",
+    "displacement": "m", "displacement_relative": "m", "velocity": "m/s", "acceleration": "m/s^2", "stress": "Pa", "region": "-",
     "pore_pressure": "Pa", "excess_pore_pressure": "Pa", "max_shear_strain": "-", "secant_modulus_ratio": "-",
     "opening": "m", "slip": "m", "sigma_N": "Pa", "sigma_T": "Pa", "plastic_opening": "m", "accumulated_slip": "m",
     "status": "-", "dissipation": "J/m^2", "sigma_N_effective": "Pa",

@@ -199,13 +199,13 @@ class Volume(unittest.TestCase):
         # volume_output.cpp: node vectors written as 3 columns, the stress as a full 3 x 3
         # (field_writer.cpp), region an index into -regions soil,block.
         v = self.v
-        self.assertEqual(v.field_names(0), ["displacement", "velocity", "acceleration", "stress", "region"])
+        self.assertEqual(v.field_names(0), ["displacement", "displacement_relative", "velocity", "acceleration", "stress", "region"])
         nodes, cells = len(v.geometry), len(v.topology)
-        for name in ("displacement", "velocity", "acceleration"):
+        for name in ("displacement", "displacement_relative", "velocity", "acceleration"):
             values = v.field(name, -1)
             self.assertEqual(values.shape, (nodes, 3))
             np.testing.assert_array_equal(values[:, 2], 0.0)
-            self.assertEqual(FIELD_UNITS[name], {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2"}[name])
+            self.assertEqual(FIELD_UNITS[name], {"displacement": "m", "displacement_relative": "m", "velocity": "m/s", "acceleration": "m/s^2"}[name])
         stress = v.field("stress", -1)
         self.assertEqual(stress.shape, (cells, 9))
         np.testing.assert_array_equal(stress[:, [1, 2, 5]], stress[:, [3, 6, 7]])  # xy = yx, xz = zx, yz = zy
@@ -244,8 +244,9 @@ class Interface(unittest.TestCase):
         self.assertEqual(self.f.topology.shape, (len(want) - 1, 2))  # an open chain
 
     def test_fields(self):
-        # interface_output.cpp kWidths and InterfaceAssembler::pairFieldNames (dry soil).
-        widths = {"opening": 1, "slip": 3, "sigma_N": 1, "sigma_T": 3, "plastic_opening": 1, "accumulated_slip": 1, "status": 1, "dissipation": 1}
+        # interface_output.cpp kWidths and InterfaceAssembler::pairFieldNames (dry soil), after
+        # the soil side's displacement (total and relative to the base: io/base_displacement).
+        widths = {"displacement": 3, "displacement_relative": 3, "opening": 1, "slip": 3, "sigma_N": 1, "sigma_T": 3, "plastic_opening": 1, "accumulated_slip": 1, "status": 1, "dissipation": 1}
         self.assertEqual(self.f.field_names(0), list(widths))
         stack = self.f.stacked()
         for name, w in widths.items():
