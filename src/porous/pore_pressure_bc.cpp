@@ -57,12 +57,14 @@ PetscErrorCode PorePressureReadFluidBoundaries(DM dm, DM pdm, const std::vector<
 PetscErrorCode PorePressureInterfaceFluid(PorePressure *pp, MPI_Comm comm, const std::string &name, const std::vector<PetscInt> &soil_dofs) {
   const std::string prefix = "interface_" + name + "_";
   const std::string title  = "Pore fluid at interface " + name;
-  const char *const kInterfaceFluid[] = {"noflow", "drained"};
+  const char *const kInterfaceFluid[] = {"noflow", "drained", "gap"};
   PetscInt          condition         = 0;
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
-  PetscCall(core::OptionsChoice(PetscOptionsObject, "-fluid", "pore fluid on the soil side of the interface: noflow (default), drained (excess pore pressure 0)",
-                                kInterfaceFluid, 2, &condition, nullptr));
+  PetscCall(core::OptionsChoice(PetscOptionsObject, "-fluid",
+                                "pore fluid on the soil side of the interface: noflow (default), drained (excess pore pressure 0), gap (noflow while in contact, "
+                                "drained where a pair opens: water or air fills the gap)",
+                                kInterfaceFluid, 3, &condition, nullptr));
   PetscOptionsEnd();
   Vec marker;
   PetscCall(VecDuplicate(pp->p, &marker));
@@ -73,10 +75,10 @@ PetscErrorCode PorePressureInterfaceFluid(PorePressure *pp, MPI_Comm comm, const
   if (condition == 1) {
     pp->drained.push_back("interface " + name);
     PetscCall(PorePressureDrainNodes(pp, marker));
-  } else {
+  } else if (condition == 2) {
     pp->sealed_interfaces.push_back(name);
   }
-  if (condition == 0 && pp->at_water_table) {
+  if (condition != 1 && pp->at_water_table) {
     // noflow: the structure seals the soil surface it rests on, so soil nodes that the water
     // table drained only because they lie on it (a footing on a water table at the surface)
     // keep their excess pore pressure. Fluid boundaries (-bc_<b>_fluid drained) still win.

@@ -2,7 +2,7 @@
 # A gap under a foundation on saturated soil drains (docs/saturated-soil.md, "Interfaces on
 # saturated soil"). The block of saturated_interface_threshold.sh (2 m x 0.5 m, rho 2400, on a
 # 0.5 m saturated base, k = 0, water table 0.25 m above the contact, so p_h = rho_f g 0.25 =
-# 2452.5 Pa there) on a noflow interface is pulled up by a vertical force on its region that
+# 2452.5 Pa there) on an interface with -interface_slide_fluid gap (noflow while in contact) is pulled up by a vertical force on its region that
 # ramps from 0 to 2 W over 0.5 s (W = 11772 N per m, its weight), so it unloads the base and then
 # lifts off. Expected:
 #  1. While the pairs are closed, the noflow contact keeps the excess pore pressure that the
@@ -24,7 +24,7 @@ O="-mesh_box_faces 8,4 -mesh_box_upper 2,1 -regions base,block -region_block_box
  -material_base_rho 2000 -material_base_vp 3000 -material_base_vs 1800 -material_base_saturated -material_base_porosity 0.3 -material_base_hydraulic_conductivity 0
  -material_block_rho 2400 -material_block_vp 3000 -material_block_vs 1800
  -interfaces slide -interface_slide_regions base,block -interface_slide_phi 30 -interface_slide_psi 0 -interface_slide_c 0 -interface_slide_E 1e10 -interface_slide_G 1e10
- -interface_slide_fluid noflow -gravity 9.81 -water_table 0.75 -geostatic_stage -bc_bottom_type fixed
+ -interface_slide_fluid gap -gravity 9.81 -water_table 0.75 -geostatic_stage -bc_bottom_type fixed
  -structure_load_region block -structure_load_force 0,11772 -structure_load_stf record -structure_load_record $WORK/lift.csv
  -ts_max_time 0.8 -output_interval 0.01 -energy_interval 1 -progress_interval 100000"
 $SW $O -output_dir "$WORK/np1" > "$WORK/np1.log"

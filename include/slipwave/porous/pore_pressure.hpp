@@ -75,7 +75,7 @@ struct PorePressure {
   Vec    at_water_table = nullptr;               // 1 at free nodes the water table drained because they lie on it
                                                  // (not above): a noflow interface seals those of its soil side
   double water_table_elevation = 0;              // [m] along minus the gravity direction
-  // Noflow interfaces drain into their open gaps (PorePressureDrainOpenGaps): their names,
+  // Interfaces whose gaps drain (-interface_<n>_fluid gap, PorePressureDrainOpenGaps): their names,
   // and the fluid conditions without any gap (free_mask, inv_storage as set up).
   std::vector<std::string> sealed_interfaces;
   Vec    sealed_free_mask = nullptr, sealed_inv_storage = nullptr;
@@ -95,7 +95,8 @@ PetscErrorCode PorePressureAddHydrostaticForce(PorePressure *pore, DM dm, Vec f)
 PetscErrorCode PorePressureTotal(PorePressure *pore);
 // An interface whose soil side is saturated: -interface_<name>_fluid noflow (default) or
 // drained, which holds the excess pore pressure at zero at its soil nodes (soil_dofs: global
-// indices of their x components). A noflow interface joins sealed_interfaces.
+// indices of their x components), or gap: noflow while in contact, drained where a pair opens
+// (it joins sealed_interfaces).
 PetscErrorCode PorePressureInterfaceFluid(PorePressure *pore, MPI_Comm comm, const std::string &name, const std::vector<PetscInt> &soil_dofs);
 PetscErrorCode PorePressureDestroy(PorePressure **pore);
 // Trial state at time t from the ghosted displacement u_local: p_trial, and the force on the
@@ -107,7 +108,7 @@ void           PorePressureCommit(PorePressure *pore);
 // step (whose monitor, and so the ledger, it skips), so the continued run repeats the
 // uninterrupted one bit for bit (the RHS's own h = t_{n+1} - t_n differs by round-off).
 PetscErrorCode PorePressureDiffuseStep(PorePressure *pore, PetscReal h);
-// A noflow interface seals the soil it rests on only while in contact: where a pair opens,
+// -interface_<n>_fluid gap: the interface seals the soil it rests on only while in contact: where a pair opens,
 // water (below the water table) or air (above it) fills the gap, so the soil node's total
 // pressure is the hydrostatic one there, as on a drained surface (excess 0), until the pair
 // closes again. open_marker: 1 at the soil nodes of the open pairs of the interfaces in
