@@ -49,7 +49,7 @@ bad() { # $1 name, $2 file arguments, $3 regex of the one stderr line
 bad record_nan "$(files quake_nan.csv factor.csv factor.csv stations.csv)" \
   '-input_record \(CSV\): .*/quake_nan\.csv:4: acceleration "nan" is not a number; allowed: a CSV file of lines "time,acceleration"'
 bad load_record_overflow "$(files quake.csv factor_overflow.csv factor.csv stations.csv)" \
-  '-point_force_src_record \(CSV\): .*/factor_overflow\.csv:3: acceleration "1e999" is not a number; allowed: a CSV file of lines "time,factor"'
+  '-point_force_src_record \(CSV\): .*/factor_overflow\.csv:3: factor "1e999" is not a number; allowed: a CSV file of lines "time,factor"'
 bad traction_record_one_sample "$(files quake.csv factor.csv factor_one_sample.csv stations.csv)" \
   '-bc_top_record \(CSV\): .*/factor_one_sample\.csv: needs at least 2 samples, found 1; allowed: a CSV file of lines "time,factor"'
 bad station_short_row "$(files quake.csv factor.csv factor.csv stations_short_row.csv)" \
