@@ -26,6 +26,8 @@ Rocking and uplift:
   peak_uplift         the largest opening of any pair at any output step [m]
   peak_rocking_angle  max |u_y(block_base_right) - u_y(block_base_left)| / their distance
                       over time [rad] (stations at the base corners, inside the block)
+  tilt_after_shaking  (u_y(block_base_right) - u_y(block_base_left)) / their distance at the
+                      end, signed (counter-clockwise positive): the permanent tilt [rad]
 Accelerations (horizontal, a_x):
   peak_structure_acceleration  max |a_x| at the station block_top, unfiltered [m/s^2]: not a
                       convergent quantity (each landing is a velocity jump, a Dirac in
@@ -174,6 +176,7 @@ def station_measures(records, f_resolved, f_lowpass=None):
         # The station's x is not in its CSV: the scene puts them at x = -2.75 and 2.75.
         span = 5.5
         m["peak_rocking_angle"] = float(np.max(np.abs(right["u_y"] - left["u_y"])) / span)
+        m["tilt_after_shaking"] = float((right["u_y"][-1] - left["u_y"][-1]) / span)
     if "block_top" in records:
         m["peak_structure_acceleration"] = float(np.max(np.abs(records["block_top"]["a_x"])))
     if "free_field" in records:
@@ -237,7 +240,7 @@ def unit(key):
         return "-"
     if key.endswith("_hz"):
         return "Hz"
-    if key == "peak_rocking_angle":
+    if key in ("peak_rocking_angle", "tilt_after_shaking"):
         return "rad"
     if key in ("net_slip", "accumulated_slip", "largest_slip_excursion", "mean_slip_range", "peak_uplift"):
         return "m"

@@ -167,8 +167,9 @@ PetscErrorCode RunAnswers::Update(const problem::Elastodynamics &model, io::Stat
   }
   if (body_ >= 0) {
     const double *theta = &motion[6 * body_ + 3];
-    rocking_            = std::max(rocking_, model.dim == 2 ? std::fabs(theta[2]) : std::sqrt(theta[0] * theta[0] + theta[1] * theta[1] + theta[2] * theta[2]));
-  } else if (rock_span_ > 0) rocking_ = std::max(rocking_, std::fabs(v[1] - v[0]) / rock_span_);
+    tilt_               = model.dim == 2 ? theta[2] : std::sqrt(theta[0] * theta[0] + theta[1] * theta[1] + theta[2] * theta[2]);
+  } else if (rock_span_ > 0) tilt_ = (v[1] - v[0]) / rock_span_;
+  rocking_ = std::max(rocking_, std::fabs(tilt_));
   PetscFunctionReturn(0);
 }
 
@@ -203,8 +204,11 @@ PetscErrorCode RunAnswers::Finish(const problem::Elastodynamics &model, bool res
                                  {"largest_slip_excursion", "m", "largest one-way slide", numerics::largestExcursion(tp, kSlideGate)},
                                  {"mean_slip_range", "m", "range of the mean slip (max - min)", range},
                                  {"peak_uplift", "m", "peak uplift (largest opening)", uplift}};
-  if (body_ >= 0 || rock_span_ > 0)
-    answers.push_back({"peak_rocking_angle", "rad", body_ >= 0 ? "peak rocking angle (rigid body " + body_name_ + ")" : "peak rocking angle (base stations)", rocking_});
+  if (body_ >= 0 || rock_span_ > 0) {
+    const std::string by = body_ >= 0 ? "rigid body " + body_name_ : "base stations";
+    answers.push_back({"peak_rocking_angle", "rad", "peak rocking angle (" + by + ")", rocking_});
+    answers.push_back({"tilt_after_shaking", "rad", "tilt after shaking (" + by + ", at the end)", tilt_});
+  }
   if (structure_ >= 0) {
     if (geostatic_) answers.push_back({"settlement_gravity", "m", "settlement under gravity (" + structure_name_ + ")", -geostatic_uy_});
     answers.push_back({"settlement_after_shaking", "m", "settlement after shaking (" + structure_name_ + ", from gravity's)", -structure_uy_});

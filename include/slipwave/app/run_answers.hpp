@@ -9,7 +9,10 @@
 // - Rocking: peak_rocking_angle = max |theta| of the rigid body (-answer_rigid_body, default
 //   the first rigid region; 2D theta_z, 3D the rotation vector's length), else max
 //   |u_y(right) - u_y(left)| / their x distance of the two stations -answer_rocking_stations
-//   (default block_base_left,block_base_right).
+//   (default block_base_left,block_base_right). tilt_after_shaking = the same angle, signed
+//   (2D: counter-clockwise positive; 3D: the length), at the end: the permanent tilt, which
+//   a yielding soil accumulates cycle by cycle (docs/convergence-study.md: it converges
+//   far more slowly than the peak of the first large cycle, so it is stated apart).
 // - The structure station (-answer_structure_station, default block_top): its 5 %-damped
 //   floor spectrum <name>_psa_<T>s at -answer_periods (numerics/response_spectrum.hpp) and
 //   peak_structure_acceleration; settlement_gravity = -u_y at the end of the geostatic stage,
@@ -66,7 +69,7 @@ private:
   numerics::TurningPoints  turning_;
   std::vector<io::Stations::Probe> probes_;
   std::vector<InterfaceCounts>     counts_;
-  double net_slip_ = 0, local_uplift_ = 0, rocking_ = 0, structure_peak_ = 0, free_field_peak_ = 0, structure_uy_ = 0, geostatic_uy_ = 0;
+  double net_slip_ = 0, local_uplift_ = 0, rocking_ = 0, tilt_ = 0, structure_peak_ = 0, free_field_peak_ = 0, structure_uy_ = 0, geostatic_uy_ = 0;
   bool   geostatic_ = false;
   std::vector<std::string> notes_;
 };
