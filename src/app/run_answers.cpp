@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "slipwave/app/run_report.hpp"
+#include "slipwave/numerics/low_pass.hpp"
 #include "slipwave/problem/rigid_bodies.hpp"
 
 namespace slipwave::app {
@@ -84,6 +86,7 @@ PetscErrorCode RunAnswers::Setup(const problem::Elastodynamics &model, const io:
     }
   PetscCheck(found || !has_iface, comm, PETSC_ERR_USER_INPUT, "-answer_interface = %s: no interface of that name; allowed: one of -interfaces", iface);
   periods_.assign(periods, periods + nperiods);
+  corner_hz_ = LowPassCornerFrequency(model);
   PetscCall(stationOption(comm, stations, "-answer_structure_station", structure, has_structure, &structure_));
   PetscCall(stationOption(comm, stations, "-answer_free_field_station", free_field, has_free_field, &free_field_));
   structure_name_  = structure;
@@ -152,16 +155,19 @@ PetscErrorCode RunAnswers::Update(const problem::Elastodynamics &model, io::Stat
   for (size_t k = 0; k < nif; ++k) counts_[k] = {sums[5 * k + 2], sums[5 * k + 3], sums[5 * k + 4]};
   const double *s = &sums[5 * interface_];
   net_slip_       = s[1] > 0 ? s[0] / s[1] : 0.0;
+  if (structure_ >= 0 || free_field_ >= 0) times_.push_back(t);
   turning_.add(net_slip_);
   const double *v = &sums[5 * nif];
   if (structure_ >= 0) {
     structure_spectrum_->add(t, v[0]);
+    structure_ax_.push_back(v[0]);
     structure_peak_ = std::max(structure_peak_, std::fabs(v[0]));
     structure_uy_   = v[1];
     v += 2;
   }
   if (free_field_ >= 0) {
     free_field_spectrum_->add(t, v[0]);
+    free_field_ax_.push_back(v[0]);
     free_field_peak_ = std::max(free_field_peak_, std::fabs(v[0]));
     v += 1;
   }
@@ -195,6 +201,9 @@ PetscErrorCode RunAnswers::Finish(const problem::Elastodynamics &model, bool res
   const std::vector<double> &tp = turning_.values();
   const double range = tp.empty() ? 0.0 : *std::max_element(tp.begin(), tp.end()) - *std::min_element(tp.begin(), tp.end());
 
+  char corner_text[64];
+  std::snprintf(corner_text, sizeof corner_text, "%.3g Hz", corner_hz_);
+  const std::string corner = corner_text;
   struct Answer {
     std::string key, unit, label;
     double      value;
@@ -213,11 +222,13 @@ PetscErrorCode RunAnswers::Finish(const problem::Elastodynamics &model, bool res
     if (geostatic_) answers.push_back({"settlement_gravity", "m", "settlement under gravity (" + structure_name_ + ")", -geostatic_uy_});
     answers.push_back({"settlement_after_shaking", "m", "settlement after shaking (" + structure_name_ + ", from gravity's)", -structure_uy_});
     answers.push_back({"peak_structure_acceleration", "m/s^2", "peak acceleration a_x at " + structure_name_ + " (unfiltered)", structure_peak_});
+    answers.push_back({structure_name_ + "_peak_acceleration_lowpassed", "m/s^2", "peak a_x at " + structure_name_ + ", low-passed at " + corner, numerics::lowPassedPeak(times_, structure_ax_, corner_hz_)});
     for (size_t k = 0; k < periods_.size(); ++k)
       answers.push_back({periodKey(structure_name_, periods_[k]), "m/s^2", "", structure_spectrum_->pseudoAcceleration(k)});
   }
   if (free_field_ >= 0) {
     answers.push_back({"free_field_pga", "m/s^2", "free-field PGA a_x at " + free_field_name_ + " (unfiltered)", free_field_peak_});
+    answers.push_back({free_field_name_ + "_peak_acceleration_lowpassed", "m/s^2", "free-field PGA at " + free_field_name_ + ", low-passed at " + corner, numerics::lowPassedPeak(times_, free_field_ax_, corner_hz_)});
     for (size_t k = 0; k < periods_.size(); ++k)
       answers.push_back({periodKey(free_field_name_, periods_[k]), "m/s^2", "", free_field_spectrum_->pseudoAcceleration(k)});
   }

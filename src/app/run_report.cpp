@@ -164,6 +164,10 @@ std::string hystereticRegionsJson(const std::vector<medium::RegionMaterialInfo> 
 
 } // namespace
 
+double LowPassCornerFrequency(const problem::Elastodynamics &model) {
+  return resolvedFrequency(model).frequency * nodesPerWavelengthNeeded(model.bulk.degree()) / 8;
+}
+
 void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt, const std::string &answers) {
   const Resolution  res  = resolvedFrequency(model);
   const std::string path = output_dir + "/run_info.json";

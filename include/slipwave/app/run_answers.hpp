@@ -20,7 +20,12 @@
 //   (downward positive).
 // - The free-field station (-answer_free_field_station, default free_field): free_field_pga
 //   = max |a_x| and its spectrum.
-// Accelerations are a_x, unfiltered. A station named by option must exist; a default one
+// - Both stations' peaks also low-passed (numerics/low_pass.hpp) at the frequency the mesh
+//   resolves, p vs_min / (8 h) (app::LowPassCornerFrequency; scene_metrics.py's resolved
+//   frequency): <station>_peak_acceleration_lowpassed, the peak that converges where the
+//   unfiltered one does not (a landing, a yielding soil's corners). Their a_x is kept every
+//   step for it (8 bytes a step and station).
+// Accelerations are a_x, unfiltered unless said. A station named by option must exist; a default one
 // that the run lacks drops its answers (said in the table). Every rank does the same
 // arithmetic on values summed over the ranks: the answers do not depend on the partition
 // beyond round-off. After a restart the answers are not stated (the state before it is not
@@ -69,6 +74,8 @@ private:
   numerics::TurningPoints  turning_;
   std::vector<io::Stations::Probe> probes_;
   std::vector<InterfaceCounts>     counts_;
+  std::vector<double> times_, structure_ax_, free_field_ax_; // every step, for the low-passed peaks
+  double              corner_hz_ = 0;
   double net_slip_ = 0, local_uplift_ = 0, rocking_ = 0, tilt_ = 0, structure_peak_ = 0, free_field_peak_ = 0, structure_uy_ = 0, geostatic_uy_ = 0;
   bool   geostatic_ = false;
   std::vector<std::string> notes_;

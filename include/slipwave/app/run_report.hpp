@@ -27,6 +27,11 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
 // JSON object for its "answers" (app/run_answers.hpp; written again at the end of the run).
 void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt, const std::string &answers = "");
 
+// The corner of the low-passed peaks: p vs_min / (8 h), h the largest element of the region
+// that resolves least (what scripts/scene_metrics.py calls the resolved frequency; the
+// report's own resolved frequency asks for 10 nodes per wavelength at p = 1, this for 8).
+double LowPassCornerFrequency(const problem::Elastodynamics &model);
+
 // The interfaces' final states, the contact dashpots' work, steps and wall time, the energy
 // balance error and where the output is: files, the names of the run's files in it.
 PetscErrorCode ReportEnd(const problem::Elastodynamics &model, const problem::EnergyLedger &ledger, const std::vector<std::string> &files, PetscInt steps, double wall,
