@@ -282,6 +282,9 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
     s.model->pore->t       = scalars[3 + kLedgerSize + nframes + ninterfaces];
     s.model->pore->started = true;
     PetscCall(porous::PorePressureDiffuseStep(s.model->pore, scalars[1]));
+    // The interfaces' law starts the next step from the restored pressure.
+    PetscCall(porous::PorePressureTotal(s.model->pore));
+    for (auto &iface : s.model->interfaces) PetscCall(iface.ReadCommittedPorePressure(s.model->pore->p_total));
   }
   PetscCall(PetscViewerDestroy(&viewer));
   PetscFunctionReturn(0);

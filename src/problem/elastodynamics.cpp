@@ -401,6 +401,9 @@ PetscErrorCode ElastodynamicsDrainOpenGaps(Elastodynamics *m) {
   PetscCall(VecAssemblyEnd(marker));
   PetscCall(porous::PorePressureDrainOpenGaps(m->pore, marker));
   PetscCall(VecDestroy(&marker));
+  // The next step's law starts from the drained pressure.
+  PetscCall(porous::PorePressureTotal(m->pore));
+  for (auto &iface : m->interfaces) PetscCall(iface.ReadCommittedPorePressure(m->pore->p_total));
   PetscFunctionReturn(0);
 }
 
