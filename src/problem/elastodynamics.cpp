@@ -378,7 +378,7 @@ PetscErrorCode ElastodynamicsCommit(Elastodynamics *m) {
   input::FreeFieldCommit(m->free_field);
   medium::AttenuationCommit(m->attenuation);
   medium::HysteresisCommit(m->hysteresis);
-  porous::PorePressureCommit(m->pore);
+  PetscCall(porous::PorePressureCommit(m->pore));
   input::DrmCommit(m->drm);
   PetscCall(ElastodynamicsDrainOpenGaps(m));
   PetscFunctionReturn(0);
