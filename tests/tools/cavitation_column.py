@@ -3,7 +3,8 @@
 
 usage: cavitation_column.py RUN --height H --rho RHO --vp VP --porosity N --fluid-bulk-modulus KF
        --hydraulic-conductivity K --limit P_CAV --f0 F --t0 T0 --amplitude A
-       --pressure-stations name:z,... --velocity-stations name:z,... [--cells N] [--max-error E]
+       --pressure-stations name:z,... --velocity-stations name:z,... [--component y|z] [--cells N]
+       [--max-error E]
 
 The model (docs/saturated-soil.md, Cavitation), in 1D: a column of saturated soil, z up,
 tension positive, no gravity, incompressible grains (alpha = 1, 1/M = n / K_f), water
@@ -25,7 +26,7 @@ characteristic one, sigma(0) = rho c_u (v(0) - 2 v_inc), exact for the linear un
 column the waves cross there. Default 2000 cells (0.1 m on the test's 200 m column; 4000
 move the test's errors by less than 6e-4).
 
-Compares the stations' p (total) and v_y of RUN with this solution: the L2 norm of the
+Compares the stations' p (total) and vertical velocity (v_y, or --component) of RUN with this solution: the L2 norm of the
 difference over the run, relative to the L2 norm of the reference; exits 1 if one exceeds
 --max-error.
 """
@@ -102,12 +103,13 @@ def main():
         ap.add_argument("--" + name.replace("_", "-"), type=float, required=True)
     ap.add_argument("--pressure-stations", required=True, help="name:z,... whose p is compared (z: elevation of the station [m])")
     ap.add_argument("--velocity-stations", required=True, help="name:z,... whose v_y is compared")
+    ap.add_argument("--component", default="y", help="the vertical velocity component of the run: y in 2D, z in 3D")
     ap.add_argument("--cells", type=int, default=2000)
     ap.add_argument("--max-error", type=float, default=0.02)
     args = ap.parse_args()
     run = RunFolder(args.run)
     compared = [(s.split(":")[0], float(s.split(":")[1]), "p") for s in args.pressure_stations.split(",")]
-    compared += [(s.split(":")[0], float(s.split(":")[1]), "v_y") for s in args.velocity_stations.split(",")]
+    compared += [(s.split(":")[0], float(s.split(":")[1]), "v_" + args.component) for s in args.velocity_stations.split(",")]
     z = np.array([c[1] for c in compared])
     records = {name: run.station(name) for name, _, _ in compared}
     t_end = max(r["t"][-1] for r in records.values())
