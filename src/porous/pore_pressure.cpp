@@ -389,6 +389,17 @@ PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const st
   PetscCall(VecZeroEntries(pp->cavity));
   PetscCall(VecZeroEntries(pp->cavity_trial));
   if (pp->cavitation) {
+    // The volume each node stands for: the lumped storage times the region's M.
+    PetscScalar *vl;
+    PetscCall(VecZeroEntries(pp->p_local));
+    PetscCall(VecGetArray(pp->p_local, &vl));
+    for (size_t i = 0; i < pp->cells.size(); ++i)
+      for (PetscInt a = 0; a < pp->nen; ++a)
+        vl[pp->cell_p[i * pp->nen + a]] += pp->storage_element[(size_t)pp->cell_matrix[i] * pp->nen + a] * pp->regions[bulk.cellRegion(pp->cells[i])].M;
+    PetscCall(VecRestoreArray(pp->p_local, &vl));
+    PetscCall(VecDuplicate(pp->p, &pp->node_volume));
+    PetscCall(VecDuplicate(pp->p, &pp->cavity_fraction));
+    PetscCall(localToGlobalSum(pp->pdm, pp->p_local, pp->node_volume));
     // Node coordinates in the pressure layout, for the report's "where".
     for (PetscInt d = 0; d < pp->dim; ++d) {
       PetscScalar *xl;
@@ -493,7 +504,7 @@ PetscErrorCode PorePressureDestroy(PorePressure **pore) {
   if (!*pore) PetscFunctionReturn(0);
   PorePressure *pp = *pore;
   for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial, &pp->p_hydrostatic, &pp->p_total, &pp->p_total_trial, &pp->at_water_table, &pp->sealed_free_mask, &pp->sealed_inv_storage,
-                 &pp->cavity, &pp->cavity_trial, &pp->node_coordinates[0], &pp->node_coordinates[1], &pp->node_coordinates[2], &pp->p_local, &pp->q_local})
+                 &pp->cavity, &pp->cavity_trial, &pp->node_coordinates[0], &pp->node_coordinates[1], &pp->node_coordinates[2], &pp->node_volume, &pp->cavity_fraction, &pp->p_local, &pp->q_local})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&pp->pdm));
   delete pp;
@@ -799,6 +810,22 @@ PetscErrorCode PorePressureEnergy(PorePressure *pp, DM dm, PetscReal h, Vec v, V
   }
   e->inflow     = h * s[5];
   e->held_power = s[1];
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureCavityFraction(PorePressure *pp) {
+  PetscInt           n;
+  PetscScalar       *fr;
+  const PetscScalar *v, *vol;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(pp->cavity, &n));
+  PetscCall(VecGetArray(pp->cavity_fraction, &fr));
+  PetscCall(VecGetArrayRead(pp->cavity, &v));
+  PetscCall(VecGetArrayRead(pp->node_volume, &vol));
+  for (PetscInt i = 0; i < n; ++i) fr[i] = PetscRealPart(vol[i]) > 0 ? v[i] / vol[i] : 0.0;
+  PetscCall(VecRestoreArrayRead(pp->node_volume, &vol));
+  PetscCall(VecRestoreArrayRead(pp->cavity, &v));
+  PetscCall(VecRestoreArray(pp->cavity_fraction, &fr));
   PetscFunctionReturn(0);
 }
 

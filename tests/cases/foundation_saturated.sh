@@ -14,8 +14,9 @@
 #     power lies above the mesh's resolved frequency vs / (8 h) = 25 Hz (issue 24; measured
 #     0.02-1.9 %).
 #  3. Pore pressures physical: the lowest total pore pressure of the volume output is the
-#     cavitation limit, -100 kPa gauge (the default; to 1e-9 of it), never below it, and the
-#     run report says when and where cavities opened.
+#     cavitation limit, -100 kPa gauge (the default; to 1e-9 of it), never below it, the
+#     run report says when and where cavities opened, and the volume's cavity_fraction is
+#     non-zero only at nodes held at the limit.
 #  4. The fluid condition gap is in effect: the closed contact seals the soil, so excess
 #     pressure builds at the contact (> 10 % of rho g h at some pair and frame; 594 kPa), and an open
 #     pair's soil node holds the hydrostatic pressure p_h = 0 (1e-6 of rho g h).
@@ -72,6 +73,10 @@ lowest = min(volume.field("pore_pressure", k).min() for k in range(len(volume)))
 expect(abs(lowest / limit - 1) <= 1e-9, f"lowest total pore pressure in the volume {lowest / 1e3:.4f} kPa (the cavitation limit {limit / 1e3:g} kPa)")
 log = open(f"{work}/np1.log").read()
 expect("pore pressure held at the limit from t = " in log, "the run report says when and where cavities opened")
+cavity = np.array([volume.field("cavity_fraction", k) for k in range(len(volume))]).ravel()
+total = np.array([volume.field("pore_pressure", k) for k in range(len(volume))]).ravel()
+expect(cavity.max() > 0 and np.all(np.abs(total[cavity > 0] / limit - 1) <= 1e-9),
+       f"the volume's cavity_fraction (up to {cavity.max():.2e}) is non-zero only where the pressure is at the limit ({np.count_nonzero(cavity)} node-frames)")
 p = np.array([f.field("pore_pressure", k)[:, 0] for k in range(len(f))])
 status = np.array([f.field("status", k)[:, 0] for k in range(len(f))])
 expect(p.max() > 0.1 * weight, f"the closed contact seals: excess pore pressure up to {p.max() / 1e3:.1f} kPa at the contact (> 10 % of rho g h)")

@@ -93,6 +93,8 @@ struct PorePressure {
   PetscInt cavities_max = 0, cavities_now = 0;
   double   largest_cavity = 0, largest_cavity_time = 0, largest_cavity_at[3] = {0, 0, 0};
   Vec      node_coordinates[3] = {nullptr, nullptr, nullptr}; // x, y (, z) per pressure node (global layout)
+  Vec      node_volume = nullptr;                    // the saturated volume each node stands for (lumped) [m^3; m^2 in 2D]
+  Vec      cavity_fraction = nullptr;                // V / node_volume, refreshed by PorePressureCavityFraction [-]
 };
 
 // Reads the per-region options after MaterialsRead; sets vp_undrained of saturated regions
@@ -169,6 +171,10 @@ struct PoreEnergy {
 // would have given it, (1/2) [p S p - h p (alpha Q v_{n+1/2}) - h p Hbar + h p q] at that node,
 // leaves with the water and is booked in darcy.
 PetscErrorCode PorePressureEnergy(PorePressure *pore, DM dm, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e);
+
+// The volume output's cavity_fraction: each node's cavity over the volume it stands for (the
+// volumetric strain the cavity takes), in pore->cavity_fraction. With cavitation only.
+PetscErrorCode PorePressureCavityFraction(PorePressure *pore);
 
 // The run report's line on cavitation (collective): when and where cavities were open, the
 // most nodes at once, the largest cavity, and the work (work: the ledger's cavitation_work).
