@@ -626,6 +626,7 @@ BULK_TERMS = [
     ("anelastic", "work against the constant-Q damping (memory variables)", "tab:gray", "-"),
     ("hysteretic_dissipated", "dissipated by the hysteretic soil", "tab:cyan", "-"),
     ("darcy_dissipated", "dissipated by the pore-fluid flow (Darcy)", "tab:pink", "-"),
+    ("cavitation_work", "work of the pore fluid on its cavities (cavitation)", "tab:pink", "--"),
 ]
 INTERFACE_TERMS = [
     ("interface_work", "work of the interface forces on the bulk", "k", "-"),

@@ -245,9 +245,10 @@ class RunFolder:
         interface_work, contact_damped (cumulative); interface_stored, interface_dissipated;
         stored_change (shadow energy since the start), balance_error = stored_change -
         (input_work + external_work + interface_work - absorbed - damped - anelastic -
-        contact_damped) [- (fluid_inflow_work - darcy_dissipated)], relative_balance_error [-]
-        (over the largest energy so far); saturated scenes add fluid_stored,
-        darcy_dissipated, fluid_inflow_work."""
+        contact_damped) [- (fluid_inflow_work - darcy_dissipated - cavitation_work)],
+        relative_balance_error [-] (over the largest energy so far); saturated scenes add
+        fluid_stored, darcy_dissipated, fluid_inflow_work, cavitation_work (the pore fluid's
+        work on its cavities, cumulative: docs/saturated-soil.md)."""
         return read_csv(self._file("energy.csv"))
 
     def run_info(self):

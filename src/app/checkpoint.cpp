@@ -19,7 +19,7 @@ namespace slipwave::app {
 namespace {
 
 constexpr PetscInt kMagic   = 0x53574350; // "SWCP"
-constexpr PetscInt kVersion = 8; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
+constexpr PetscInt kVersion = 9; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
                                  // 4: state only (no RHS force parts, no attenuation trial);
                                  // 5: the scene options after the header, a seal at the end;
                                  // 6: the pore pressure state and the ledger's fluid terms;
@@ -28,13 +28,14 @@ constexpr PetscInt kVersion = 8; // 2: ledger with `anelastic`, attenuation memo
                                  // 8: the hysteretic soil's state and the ledger's hysteretic work
                                  //    (a free-field column beside hysteretic soil appends its Iwan
                                  //    states to its record; a linear column's record is unchanged)
+                                 // 9: the pore pressure's cavities and the ledger's cavitation work
 constexpr PetscInt kHeader  = 10;
 
 // The ledger as a flat array, in a fixed order.
 std::vector<double> ledgerArray(const problem::EnergyLedger &e) {
   return {e.kinetic, e.strain,        e.input,        e.external,      e.reactions, e.absorbed,          e.damped, e.interface_work,
           e.shadow,  e.shadow_start,  e.balance_error, e.scale,        e.h_prev,    e.started ? 1.0 : 0.0, e.anelastic, e.contact_damped,
-          e.fluid_stored, e.darcy, e.fluid_inflow, e.hysteretic_work, e.hysteretic_dissipated};
+          e.fluid_stored, e.darcy, e.fluid_inflow, e.hysteretic_work, e.hysteretic_dissipated, e.cavitation};
 }
 
 void ledgerFromArray(const double *a, problem::EnergyLedger *e) {
@@ -43,9 +44,10 @@ void ledgerFromArray(const double *a, problem::EnergyLedger *e) {
   e->started = a[13] != 0, e->anelastic = a[14], e->contact_damped = a[15];
   e->fluid_stored = a[16], e->darcy = a[17], e->fluid_inflow = a[18];
   e->hysteretic_work = a[19], e->hysteretic_dissipated = a[20];
+  e->cavitation = a[21];
   e->external_gross = std::fabs(e->external); // not stored: the net work bounds it from below
 }
-constexpr PetscInt kLedgerSize = 21;
+constexpr PetscInt kLedgerSize = 22;
 
 std::vector<Vec> stateVectors(const CheckpointState &s) {
   Vec u, v, a;
@@ -58,10 +60,11 @@ std::vector<Vec> stateVectors(const CheckpointState &s) {
 
 // The committed pore pressure state of a saturated scene (porous/pore_pressure.hpp): p_n,
 // alpha Q u_n (the reference of the next strain increment), H p_n (the first diffusion
-// sub-step of the next step) and the step before's mean H p (the ledger's Darcy term).
+// sub-step of the next step), the step before's mean H p (the ledger's Darcy term) and the
+// cavities' volumes.
 std::vector<Vec> poreStateVectors(const CheckpointState &s) {
   const porous::PorePressure *pore = s.model->pore;
-  return pore ? std::vector<Vec>{pore->p, pore->Qu, pore->Hp, pore->Hbar_previous} : std::vector<Vec>{};
+  return pore ? std::vector<Vec>{pore->p, pore->Qu, pore->Hp, pore->Hbar_previous, pore->cavity} : std::vector<Vec>{};
 }
 
 // A Vec holding `values` on this rank (its layout defines what a restart must reproduce).
@@ -282,6 +285,9 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
     s.model->pore->t       = scalars[3 + kLedgerSize + nframes + ninterfaces];
     s.model->pore->started = true;
     PetscCall(porous::PorePressureDiffuseStep(s.model->pore, scalars[1]));
+    // The interfaces' law starts the next step from the restored pressure.
+    PetscCall(porous::PorePressureTotal(s.model->pore));
+    for (auto &iface : s.model->interfaces) PetscCall(iface.ReadCommittedPorePressure(s.model->pore->p_total));
   }
   PetscCall(PetscViewerDestroy(&viewer));
   PetscFunctionReturn(0);

@@ -14,7 +14,7 @@ constexpr std::array<const char *, 15> kValueColumns = {"time",           "kinet
                                                         "interface_work", "interface_stored", "interface_dissipated", "contact_damped",
                                                         "stored_change",  "balance_error",    "relative_balance_error"};
 
-constexpr std::array<const char *, 3> kFluidColumns = {"fluid_stored", "darcy_dissipated", "fluid_inflow_work"};
+constexpr std::array<const char *, 4> kFluidColumns = {"fluid_stored", "darcy_dissipated", "fluid_inflow_work", "cavitation_work"};
 
 std::string header(bool fluid, bool hysteretic) {
   std::string line = "step";
@@ -78,7 +78,7 @@ void EnergyCsv::Append(PetscInt step, PetscReal t, const problem::EnergyLedger &
   std::snprintf(cell, sizeof cell, ",%.3e", values.back());
   pending_ += cell;
   if (fluid_) {
-    const std::array<double, kFluidColumns.size()> fluid = {e.fluid_stored, e.darcy, e.fluid_inflow};
+    const std::array<double, kFluidColumns.size()> fluid = {e.fluid_stored, e.darcy, e.fluid_inflow, e.cavitation};
     for (double x : fluid) {
       std::snprintf(cell, sizeof cell, ",%.10g", x);
       pending_ += cell;

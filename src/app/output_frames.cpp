@@ -20,7 +20,8 @@ PetscErrorCode OutputFrames::Open(const problem::Elastodynamics &model, const st
     // over from the checkpoint's folder when DIR is another one.
     if (restarted) PetscCall(io::FieldWriter::CopySeries(model.comm, checkpoint_dir, dir, "volume", (PetscInt)times_.size(), &kept));
     volume_ = std::make_unique<io::VolumeOutput>();
-    PetscCall(volume_->Open(model.dm, model.bulk, dir, kept ? &previous : nullptr, model.pore ? model.pore->p : nullptr, model.hysteresis != nullptr));
+    PetscCall(volume_->Open(model.dm, model.bulk, dir, kept ? &previous : nullptr, model.pore ? model.pore->p : nullptr, model.hysteresis != nullptr,
+                            model.pore && model.pore->cavitation));
   }
   for (const auto &iface : model.interfaces) {
     if (restarted) PetscCall(io::FieldWriter::CopySeries(model.comm, checkpoint_dir, dir, "interface_" + iface.spec().name, (PetscInt)times_.size(), &kept));
@@ -39,6 +40,8 @@ PetscErrorCode OutputFrames::WriteIfDue(const problem::Elastodynamics &model, Pe
   PetscCall(base_.Mean(u, base));
   if (volume_) {
     if (model.pore) PetscCall(porous::PorePressureTotal(model.pore));
+    const bool cavities = model.pore && model.pore->cavitation;
+    if (cavities) PetscCall(porous::PorePressureCavityFraction(model.pore));
     io::SoilCellOutput soil{};
     const PetscInt     ncell = model.bulk.cellCount();
     // Hysteretic soil: the elastic cells keep the linear stress, G/Gmax 1 and no strain record.
@@ -58,7 +61,7 @@ PetscErrorCode OutputFrames::WriteIfDue(const problem::Elastodynamics &model, Pe
       soil = {relaxation.data(), max_strain.data(), ratio.data()};
     }
     PetscCall(volume_->Write(model.dm, model.bulk, frame, t, u, base, v, a, model.initial_stress, model.pore ? model.pore->p_total : nullptr, model.pore ? model.pore->p : nullptr,
-                             model.hysteresis ? &soil : nullptr));
+                             cavities ? model.pore->cavity_fraction : nullptr, model.hysteresis ? &soil : nullptr));
   }
   for (size_t k = 0; k < interfaces_.size(); ++k) PetscCall(interfaces_[k]->Write(model.interfaces[k], frame, t, u, base));
   times_.push_back(t);

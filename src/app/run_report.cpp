@@ -297,6 +297,11 @@ PetscErrorCode ReportEnd(const problem::Elastodynamics &model, const problem::En
                           iface.spec().name.c_str(), t.n_stick, t.n_slip, t.n_open, t.dissipated, t.max_drift));
   }
   if (!model.interfaces.empty()) PetscCall(PetscPrintf(comm, "contact dashpots (all interfaces): took %.4g J\n", ledger.contact_damped));
+  if (model.pore) {
+    std::string line;
+    PetscCall(porous::PorePressureCavitationReport(model.pore, comm, ledger.cavitation, &line));
+    PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+  }
   PetscCall(PetscPrintf(comm, "done: %" PetscInt_FMT " steps in %.2f s wall (%.3g s per step); energy balance error %.2e of the largest energy\n", steps, wall,
                         wall / std::max<PetscInt>(steps, 1), ledger.relativeError()));
   std::string listed;

@@ -22,6 +22,7 @@ namespace {
 enum class Kind {
   Real,       // every entry a finite number in the range
   RealOrAuto, // like Real, or the word auto
+  RealOrNone, // like Real, or the word none
   Int,        // every entry an integer in the range
   Names,      // every entry a safe file name (IsSafeFileName)
   File,       // a readable regular file (a directory, a device or an empty file is refused)
@@ -151,6 +152,7 @@ const Rule kRules[] = {
   {"-material_*_fluid_density", Kind::Real, 1, 1, magnitude(1e5), "0 < rho_f <= 1e5 kg/m^3"},
   {"-bc_*_fluid_flux",         Kind::Real, 1, 1, magnitude(10), "|q| <= 10 m/s"},
   {"-water_table",             Kind::Real, 1, 1, magnitude(1e8), "|elevation| <= 1e8 m"},
+  {"-fluid_cavitation_pressure", Kind::RealOrNone, 1, 1, closed(-1e9, 0), "-1e9 <= limit <= 0 Pa (gauge) or none"},
   // stations (-station_coordinates fills a fixed array: more values would be cut silently)
   {"-station_file",            Kind::File, 1, 1, kAny, "a readable CSV file with rows name,x,y[,z]"},
   {"-station_coordinates",     Kind::Real, 2, 300, magnitude(1e8), "x1,y1[,z1],... [m], |x| <= 1e8, at most 300 values (150 stations in 2D, 100 in 3D; more with -station_file)"},
@@ -165,6 +167,7 @@ const char *kindName(Kind k) {
   switch (k) {
   case Kind::Real: return "number";
   case Kind::RealOrAuto: return "number|auto";
+  case Kind::RealOrNone: return "number|none";
   case Kind::Int: return "integer";
   case Kind::Names: return "name";
   case Kind::File:
@@ -206,6 +209,7 @@ bool inRange(double x, const Range &r) {
 
 bool numberAllowed(const Rule &rule, const std::string &entry) {
   if (rule.kind == Kind::RealOrAuto && entry == "auto") return true;
+  if (rule.kind == Kind::RealOrNone && entry == "none") return true;
   double x = 0;
   // A word PETSc cannot convert (or a fraction for an integer) is left to its parser, whose
   // one-line message names the option already.
@@ -254,6 +258,7 @@ PetscErrorCode checkOne(MPI_Comm comm, const std::string &option, const char *va
   switch (rule->kind) {
   case Kind::Real:
   case Kind::RealOrAuto:
+  case Kind::RealOrNone:
   case Kind::Int:
   case Kind::Names:
     PetscCheck(n >= rule->min_entries && n <= rule->max_entries, comm, PETSC_ERR_USER_INPUT, "%s has %d values; allowed: %s", option.c_str(), n, rule->allowed);

@@ -35,10 +35,11 @@ void tangentBasis(PetscInt dim, const double *n, double *t) {
   t[5] = n[0] * t[1] - n[1] * t[0];
 }
 
-// pore: the pore pressure at each pair's soil node (saturated soil side), or null.
+// pore: the trial pore pressure at each pair's soil node (saturated soil side), or null;
+// pore_committed: that of the committed state.
 template <int Dim>
 double updatePairs(const physics::InterfaceLaw &law, const meshing::InterfacePairs &pairs, const double *tangent, std::vector<physics::InterfaceState<Dim>> &states,
-                   std::vector<double> &jump_prev, const PetscScalar *pu, const PetscScalar *pore, PetscScalar *pf) {
+                   std::vector<double> &jump_prev, const PetscScalar *pu, const PetscScalar *pore, const double *pore_committed, PetscScalar *pf) {
   constexpr int NT = Dim - 1;
   double        max_drift = 0;
   for (size_t p = 0; p < states.size(); ++p) {
@@ -57,7 +58,8 @@ double updatePairs(const physics::InterfaceLaw &law, const meshing::InterfacePai
       for (int i = 0; i < Dim; ++i) dw_T[k] += dj[i] * t[k * Dim + i];
     }
     physics::InterfaceState<Dim> &s = states[p];
-    const double drift = pore ? physics::interfaceUpdate<Dim>(physics::interfaceLawWithPorePressure(law, PetscRealPart(pore[p])), s, dw_T, dw_N)
+    const double drift = pore ? physics::interfaceUpdate<Dim>(physics::interfaceLawWithPorePressure(law, PetscRealPart(pore[p])), s, dw_T, dw_N,
+                                                              PetscRealPart(pore[p]) - pore_committed[p])
                               : physics::interfaceUpdate<Dim>(law, s, dw_T, dw_N);
     max_drift = std::max(max_drift, drift);
     // tau: force per unit area of the structure on the soil (spec §2).
@@ -182,8 +184,8 @@ PetscErrorCode InterfaceAssembler::AddForces(Vec u, Vec f) {
     trial_pair_pore_.assign(pore, pore + pairs_.id.size());
   }
   PetscCall(applyToPairs(u, f, [&](const PetscScalar *pu, PetscScalar *pf) {
-    const double drift = dim_ == 2 ? updatePairs<2>(law, pairs_, tangent_.data(), trial_states2_, trial_jump_, pu, pore, pf)
-                                   : updatePairs<3>(law, pairs_, tangent_.data(), trial_states3_, trial_jump_, pu, pore, pf);
+    const double drift = dim_ == 2 ? updatePairs<2>(law, pairs_, tangent_.data(), trial_states2_, trial_jump_, pu, pore, pair_pore_.data(), pf)
+                                   : updatePairs<3>(law, pairs_, tangent_.data(), trial_states3_, trial_jump_, pu, pore, pair_pore_.data(), pf);
     trial_max_drift_   = std::max(max_drift_, drift);
   }));
   if (pore) PetscCall(VecRestoreArrayRead(pair_p_, &pore));
@@ -234,14 +236,21 @@ PetscErrorCode InterfaceAssembler::SetPorePressure(Vec p) {
   PetscCall(VecScatterCreate(p, is_from, pair_p_, is_to, &pore_scatter_));
   PetscCall(ISDestroy(&is_from));
   PetscCall(ISDestroy(&is_to));
-  // The output's pore pressure until the first committed step.
-  const PetscScalar *pp;
-  PetscCall(VecScatterBegin(pore_scatter_, p, pair_p_, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(pore_scatter_, p, pair_p_, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGetArrayRead(pair_p_, &pp));
-  pair_pore_.assign(pp, pp + np);
-  PetscCall(VecRestoreArrayRead(pair_p_, &pp));
+  // The initial state's pore pressure (the output's until the first committed step).
+  PetscCall(ReadCommittedPorePressure(p));
   pore_source_ = p;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceAssembler::ReadCommittedPorePressure(Vec p_committed) {
+  const PetscScalar *pp;
+  PetscFunctionBeginUser;
+  if (!pore_scatter_) PetscFunctionReturn(0);
+  PetscCall(VecScatterBegin(pore_scatter_, p_committed, pair_p_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(pore_scatter_, p_committed, pair_p_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGetArrayRead(pair_p_, &pp));
+  pair_pore_.assign(pp, pp + pairs_.id.size());
+  PetscCall(VecRestoreArrayRead(pair_p_, &pp));
   PetscFunctionReturn(0);
 }
 

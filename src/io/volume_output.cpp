@@ -15,7 +15,7 @@ void CellStressShown(const fem::BulkOperator &bulk, PetscInt c, const PetscScala
 }
 
 PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir, const std::vector<std::pair<PetscInt, PetscReal>> *previous,
-                                  Vec pore_layout, bool soil) {
+                                  Vec pore_layout, bool soil, bool cavities) {
   MPI_Comm     comm = PetscObjectComm((PetscObject)dm);
   const PetscInt dim = bulk.dimension(), nen = bulk.nodesPerCell(), ncell = bulk.cellCount();
   PetscSection gsection;
@@ -69,6 +69,7 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
                                     {"stress", Centering::Cell, stress_},
                                     {"region", Centering::Cell, region_}};
     if (pore_layout) layout.insert(layout.end(), {{"pore_pressure", Centering::Node, pore_layout}, {"excess_pore_pressure", Centering::Node, pore_layout}});
+    if (cavities) layout.push_back({"cavity_fraction", Centering::Node, pore_layout});
     if (soil) layout.insert(layout.end(), {{"max_shear_strain", Centering::Cell, region_}, {"secant_modulus_ratio", Centering::Cell, region_}});
     PetscCall(writer_.Resume(comm, dir, grid, geometry_, topology_, *previous, layout));
   } else {
@@ -78,7 +79,7 @@ PetscErrorCode VolumeOutput::Open(DM dm, const fem::BulkOperator &bulk, const st
 }
 
 PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, const PetscScalar *base, Vec v, Vec a,
-                                   const std::vector<double> &initial_stress, Vec p_total, Vec p_excess, const SoilCellOutput *soil) {
+                                   const std::vector<double> &initial_stress, Vec p_total, Vec p_excess, Vec cavity_fraction, const SoilCellOutput *soil) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(core::event_output, 0, 0, 0, 0));
   PetscCall(DMGlobalToLocal(dm, u, INSERT_VALUES, u_local_));
@@ -116,6 +117,7 @@ PetscErrorCode VolumeOutput::Write(DM dm, const fem::BulkOperator &bulk, PetscIn
                                             {"region", Centering::Cell, region_}};
   if (p_total) fields.push_back({"pore_pressure", Centering::Node, p_total});
   if (p_excess) fields.push_back({"excess_pore_pressure", Centering::Node, p_excess});
+  if (cavity_fraction) fields.push_back({"cavity_fraction", Centering::Node, cavity_fraction});
   if (soil) fields.insert(fields.end(), {{"max_shear_strain", Centering::Cell, max_strain_}, {"secant_modulus_ratio", Centering::Cell, modulus_ratio_}});
   PetscCall(writer_.WriteStep(step, t, fields));
   PetscCall(PetscLogEventEnd(core::event_output, 0, 0, 0, 0));

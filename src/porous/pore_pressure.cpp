@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
+#include <string>
 #include <utility>
 
 #include "slipwave/fem/node_fields.hpp"
+#include "slipwave/physics/cavitation.hpp"
 
 namespace slipwave::porous {
 namespace {
@@ -345,12 +349,24 @@ PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const st
   pp->regions = std::move(regions);
   PetscBool subcycle = PETSC_TRUE, water_table = PETSC_FALSE;
   PetscReal elevation = 0;
+  char      cavitation[64] = "-100e3";
   PetscOptionsBegin(comm, "", "Pore pressure of saturated regions", "slipwave");
   PetscCall(PetscOptionsBool("-pore_pressure_subcycle", "sub-step the explicit pore-pressure diffusion within each step instead of lowering the step to its limit",
                              "PorePressureCreate", subcycle, &subcycle, nullptr));
   PetscCall(PetscOptionsReal("-water_table", "elevation of the free water surface [m], measured against -gravity_direction (with -gravity > 0; hydrostatic pressure below it)",
                              "PorePressureCreate", elevation, &elevation, &water_table));
+  PetscCall(PetscOptionsString("-fluid_cavitation_pressure",
+                               "cavitation limit of the total pore pressure [Pa, gauge: relative to the atmospheric pressure on the water table], -1e9 <= limit <= 0, or none (default -100e3, about water's vapour pressure)",
+                               "PorePressureCreate", cavitation, cavitation, sizeof cavitation, nullptr));
   PetscOptionsEnd();
+  pp->cavitation = std::string(cavitation) != "none";
+  if (pp->cavitation) {
+    char *end                = nullptr;
+    pp->cavitation_pressure  = std::strtod(cavitation, &end);
+    // Water holds no absolute pressure far below zero, and the limit is gauge (0: atmospheric).
+    PetscCheck(end != cavitation && *end == '\0' && std::isfinite(pp->cavitation_pressure) && pp->cavitation_pressure >= -1e9 && pp->cavitation_pressure <= 0, comm,
+               PETSC_ERR_USER_INPUT, "-fluid_cavitation_pressure = %s; allowed: -1e9 <= limit <= 0 Pa (gauge) or none", cavitation);
+  }
   PetscCheck(gravity == 0 || water_table, comm, PETSC_ERR_USER_INPUT,
              "-gravity = %g with a saturated region (-material_<r>_saturated) needs -water_table; allowed: the elevation [m] of the free water surface", gravity);
   PetscCheck(!water_table || gravity > 0, comm, PETSC_ERR_USER_INPUT, "-water_table = %g m needs gravity; allowed: with -gravity > 0", (double)elevation);
@@ -368,6 +384,36 @@ PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const st
   PetscCall(fem::NodeFieldCreateDM(dm, 1, &pp->pdm));
   PetscCall(buildCells(pp->pdm, bulk, pp));
   PetscCall(assembleNodal(dm, boundaries, pp));
+  PetscCall(VecDuplicate(pp->p, &pp->cavity));
+  PetscCall(VecDuplicate(pp->p, &pp->cavity_trial));
+  PetscCall(VecZeroEntries(pp->cavity));
+  PetscCall(VecZeroEntries(pp->cavity_trial));
+  if (pp->cavitation) {
+    // The volume each node stands for: the lumped storage times the region's M.
+    PetscScalar *vl;
+    PetscCall(VecZeroEntries(pp->p_local));
+    PetscCall(VecGetArray(pp->p_local, &vl));
+    for (size_t i = 0; i < pp->cells.size(); ++i)
+      for (PetscInt a = 0; a < pp->nen; ++a)
+        vl[pp->cell_p[i * pp->nen + a]] += pp->storage_element[(size_t)pp->cell_matrix[i] * pp->nen + a] * pp->regions[bulk.cellRegion(pp->cells[i])].M;
+    PetscCall(VecRestoreArray(pp->p_local, &vl));
+    PetscCall(VecDuplicate(pp->p, &pp->node_volume));
+    PetscCall(VecDuplicate(pp->p, &pp->cavity_fraction));
+    PetscCall(localToGlobalSum(pp->pdm, pp->p_local, pp->node_volume));
+    // Node coordinates in the pressure layout, for the report's "where".
+    for (PetscInt d = 0; d < pp->dim; ++d) {
+      PetscScalar *xl;
+      PetscCall(VecZeroEntries(pp->p_local));
+      PetscCall(VecGetArray(pp->p_local, &xl));
+      for (size_t i = 0; i < pp->cells.size(); ++i) {
+        const double *x = bulk.cellCoordinates(pp->cells[i]);
+        for (PetscInt a = 0; a < pp->nen; ++a) xl[pp->cell_p[i * pp->nen + a]] = x[a * pp->dim + d];
+      }
+      PetscCall(VecRestoreArray(pp->p_local, &xl));
+      PetscCall(VecDuplicate(pp->p, &pp->node_coordinates[d]));
+      PetscCall(DMLocalToGlobal(pp->pdm, pp->p_local, INSERT_VALUES, pp->node_coordinates[d]));
+    }
+  }
   PetscCall(VecDuplicate(pp->p, &pp->p_hydrostatic));
   PetscCall(VecDuplicate(pp->p, &pp->p_total));
   PetscCall(VecDuplicate(pp->p, &pp->p_total_trial));
@@ -458,7 +504,7 @@ PetscErrorCode PorePressureDestroy(PorePressure **pore) {
   if (!*pore) PetscFunctionReturn(0);
   PorePressure *pp = *pore;
   for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial, &pp->p_hydrostatic, &pp->p_total, &pp->p_total_trial, &pp->at_water_table, &pp->sealed_free_mask, &pp->sealed_inv_storage,
-                 &pp->p_local, &pp->q_local})
+                 &pp->cavity, &pp->cavity_trial, &pp->node_coordinates[0], &pp->node_coordinates[1], &pp->node_coordinates[2], &pp->node_volume, &pp->cavity_fraction, &pp->p_local, &pp->q_local})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&pp->pdm));
   delete pp;
@@ -498,6 +544,26 @@ PetscErrorCode PorePressureTrial(PorePressure *pp, DM dm, const PetscScalar *u, 
     PetscCall(VecGetArrayRead(pp->inv_storage, &inv));
     PetscCall(VecGetArrayRead(pp->free_mask, &mask));
     for (PetscInt i = 0; i < n; ++i) pt[i] = mask[i] * (ps[i] - inv[i] * ((qt[i] - qc[i]) - h * in[i]));
+    if (pp->cavitation) {
+      // The floor on free nodes (a drained node holds p = 0 and no cavity: water fills it).
+      PetscScalar       *vt;
+      const PetscScalar *vn, *ph, *S;
+      PetscCall(VecGetArray(pp->cavity_trial, &vt));
+      PetscCall(VecGetArrayRead(pp->cavity, &vn));
+      PetscCall(VecGetArrayRead(pp->p_hydrostatic, &ph));
+      PetscCall(VecGetArrayRead(pp->storage, &S));
+      for (PetscInt i = 0; i < n; ++i) {
+        vt[i] = 0;
+        if (PetscRealPart(mask[i]) == 0) continue;
+        const physics::CavitatedPressure c = physics::cavitationFloor(PetscRealPart(pt[i] - inv[i] * vn[i]), pp->cavitation_pressure - PetscRealPart(ph[i]), PetscRealPart(S[i]));
+        pt[i] = c.p;
+        vt[i] = c.cavity;
+      }
+      PetscCall(VecRestoreArrayRead(pp->storage, &S));
+      PetscCall(VecRestoreArrayRead(pp->p_hydrostatic, &ph));
+      PetscCall(VecRestoreArrayRead(pp->cavity, &vn));
+      PetscCall(VecRestoreArray(pp->cavity_trial, &vt));
+    }
     PetscCall(VecRestoreArrayRead(pp->free_mask, &mask));
     PetscCall(VecRestoreArrayRead(pp->inv_storage, &inv));
     PetscCall(VecRestoreArrayRead(pp->inflow, &in));
@@ -537,14 +603,49 @@ PetscInt PorePressureSubsteps(const PorePressure *pp, double h) {
 
 PetscErrorCode PorePressureDiffuseStep(PorePressure *pp, PetscReal h) { return diffuse(pp, h); }
 
-void PorePressureCommit(PorePressure *pp) {
-  if (!pp) return;
+PetscErrorCode PorePressureCommit(PorePressure *pp) {
+  PetscFunctionBeginUser;
+  if (!pp) PetscFunctionReturn(0);
+  if (pp->cavitation) {
+    // The step's work on the cavities of the nodes free in it (free_mask is still the
+    // trial's: gaps drain after the commit), and the cavities now open.
+    PetscInt           n;
+    const PetscScalar *p0, *p1, *v0, *v1, *mask, *x[3] = {nullptr, nullptr, nullptr};
+    pp->cavity_work_step = 0;
+    pp->cavities_local   = 0;
+    PetscCall(VecGetLocalSize(pp->p, &n));
+    PetscCall(VecGetArrayRead(pp->p, &p0));
+    PetscCall(VecGetArrayRead(pp->p_trial, &p1));
+    PetscCall(VecGetArrayRead(pp->cavity, &v0));
+    PetscCall(VecGetArrayRead(pp->cavity_trial, &v1));
+    PetscCall(VecGetArrayRead(pp->free_mask, &mask));
+    for (PetscInt d = 0; d < pp->dim; ++d) PetscCall(VecGetArrayRead(pp->node_coordinates[d], &x[d]));
+    for (PetscInt i = 0; i < n; ++i) {
+      if (PetscRealPart(mask[i]) == 0) continue;
+      pp->cavity_work_step += physics::cavityWork(PetscRealPart(p0[i]), PetscRealPart(p1[i]), PetscRealPart(v0[i]), PetscRealPart(v1[i]));
+      if (PetscRealPart(v1[i]) <= 0) continue;
+      ++pp->cavities_local;
+      if (PetscRealPart(v1[i]) > pp->largest_cavity) {
+        pp->largest_cavity      = PetscRealPart(v1[i]);
+        pp->largest_cavity_time = pp->t_trial;
+        for (PetscInt d = 0; d < pp->dim; ++d) pp->largest_cavity_at[d] = PetscRealPart(x[d][i]);
+      }
+    }
+    for (PetscInt d = 0; d < pp->dim; ++d) PetscCall(VecRestoreArrayRead(pp->node_coordinates[d], &x[d]));
+    PetscCall(VecRestoreArrayRead(pp->free_mask, &mask));
+    PetscCall(VecRestoreArrayRead(pp->cavity_trial, &v1));
+    PetscCall(VecRestoreArrayRead(pp->cavity, &v0));
+    PetscCall(VecRestoreArrayRead(pp->p_trial, &p1));
+    PetscCall(VecRestoreArrayRead(pp->p, &p0));
+    std::swap(pp->cavity, pp->cavity_trial);
+  }
   std::swap(pp->p, pp->p_trial);
   std::swap(pp->Qu, pp->Qu_trial);
   std::swap(pp->Hbar_previous, pp->Hbar_trial);
   std::swap(pp->Hp, pp->Hp_trial);
   pp->t          = pp->t_trial;
   pp->diffused_h = -1;
+  PetscFunctionReturn(0);
 }
 
 PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pp, DM dm, Vec rows) {
@@ -638,9 +739,11 @@ PetscErrorCode gapReleasedEnergy(PorePressure *pp, DM dm, PetscReal h, Vec v, Ve
 PetscErrorCode PorePressureEnergy(PorePressure *pp, DM dm, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e) {
   PetscFunctionBeginUser;
   // Local sums, reduced once: 0 v_{n+1/2} . f_pore, 1 v_n . f_pore on held dofs, 2 p S p,
-  // 3 p . Hbar_n, 4 p . Hbar_{n-1}, 5 p . q, 6 nodes held this step with p_n != 0.
+  // 3 p . Hbar_n, 4 p . Hbar_{n-1}, 5 p . q, 6 nodes held this step with p_n != 0, 7 the work
+  // on the cavities in the step that led to t_n, 8 the nodes with a cavity at t_n.
   PetscCall(diffuse(pp, h)); // Hbar_n of the step about to be taken
-  double s[7] = {0, 0, 0, 0, 0, 0, 0};
+  double s[9] = {0, 0, 0, 0, 0, 0, 0, pp->cavity_work_step, (double)pp->cavities_local};
+  pp->cavity_work_step = 0; // booked once
   {
     PetscInt           n;
     const PetscScalar *va, *aa, *fp, *mask;
@@ -682,7 +785,17 @@ PetscErrorCode PorePressureEnergy(PorePressure *pp, DM dm, PetscReal h, Vec v, V
     PetscCall(VecRestoreArrayRead(pp->storage, &S));
     PetscCall(VecRestoreArrayRead(pp->p, &p));
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 7, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)v)));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 9, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)v)));
+  // The storage identity with cavities: S (p_{n+1} - p_n) gains V_{n+1} - V_n, so the shadow
+  // energy below (written without them) changes by -cavityWork more than the terms it books;
+  // the ledger books the cavities' work beside the Darcy dissipation.
+  e->cavitation      = s[7];
+  pp->cavities_now   = (PetscInt)s[8];
+  pp->cavities_max   = std::max(pp->cavities_max, pp->cavities_now);
+  if (pp->cavities_now > 0) {
+    if (pp->cavitation_first < 0) pp->cavitation_first = pp->t;
+    pp->cavitation_last = pp->t;
+  }
   // S p_{n+1} = S p_n - h alpha Q v_{n+1/2} - h (Hbar_n - q) on free nodes, p = 0 on the
   // others, and p_n . alpha Q v = v . alpha Q^T p_n = v . f_pore.
   e->storage    = 0.5 * (s[2] - h * s[0] - h * s[3] + h * s[5]);
@@ -697,6 +810,54 @@ PetscErrorCode PorePressureEnergy(PorePressure *pp, DM dm, PetscReal h, Vec v, V
   }
   e->inflow     = h * s[5];
   e->held_power = s[1];
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureCavityFraction(PorePressure *pp) {
+  PetscInt           n;
+  PetscScalar       *fr;
+  const PetscScalar *v, *vol;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(pp->cavity, &n));
+  PetscCall(VecGetArray(pp->cavity_fraction, &fr));
+  PetscCall(VecGetArrayRead(pp->cavity, &v));
+  PetscCall(VecGetArrayRead(pp->node_volume, &vol));
+  for (PetscInt i = 0; i < n; ++i) fr[i] = PetscRealPart(vol[i]) > 0 ? v[i] / vol[i] : 0.0;
+  PetscCall(VecRestoreArrayRead(pp->node_volume, &vol));
+  PetscCall(VecRestoreArrayRead(pp->cavity, &v));
+  PetscCall(VecRestoreArray(pp->cavity_fraction, &fr));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PorePressureCavitationReport(const PorePressure *pp, MPI_Comm comm, double work, std::string *line) {
+  PetscFunctionBeginUser;
+  char buf[512];
+  if (!pp->cavitation) {
+    *line = "cavitation: none (-fluid_cavitation_pressure none: the pore pressure has no lower limit)";
+    PetscFunctionReturn(0);
+  }
+  if (pp->cavities_max == 0) {
+    std::snprintf(buf, sizeof buf, "cavitation: none (the total pore pressure stayed above -fluid_cavitation_pressure = %g Pa)", pp->cavitation_pressure);
+    *line = buf;
+    PetscFunctionReturn(0);
+  }
+  // The largest cavity over the ranks, with its time and place from the rank that holds it.
+  struct {
+    double      value;
+    PetscMPIInt rank;
+  } mine{pp->largest_cavity, 0}, top;
+  PetscCallMPI(MPI_Comm_rank(comm, &mine.rank));
+  PetscCallMPI(MPI_Allreduce(&mine, &top, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm));
+  double where[4] = {pp->largest_cavity_time, pp->largest_cavity_at[0], pp->largest_cavity_at[1], pp->largest_cavity_at[2]};
+  PetscCallMPI(MPI_Bcast(where, 4, MPI_DOUBLE, top.rank, comm));
+  const std::string at = pp->dim == 2 ? "(" + std::to_string(where[1]) + ", " + std::to_string(where[2]) + ")"
+                                      : "(" + std::to_string(where[1]) + ", " + std::to_string(where[2]) + ", " + std::to_string(where[3]) + ")";
+  std::snprintf(buf, sizeof buf,
+                "cavitation (-fluid_cavitation_pressure = %g Pa): pore pressure held at the limit from t = %.4g to %.4g s, at most %" PetscInt_FMT " nodes at once (%" PetscInt_FMT
+                " at the end); largest cavity %.3g m^3%s at t = %.4g s, node %s m; work on the cavities %.4g J (energy.csv cavitation_work)",
+                pp->cavitation_pressure, pp->cavitation_first, pp->cavitation_last, pp->cavities_max, pp->cavities_now, top.value, pp->dim == 2 ? " per m" : "", where[0],
+                at.c_str(), work);
+  *line = buf;
   PetscFunctionReturn(0);
 }
 

@@ -378,7 +378,7 @@ PetscErrorCode ElastodynamicsCommit(Elastodynamics *m) {
   input::FreeFieldCommit(m->free_field);
   medium::AttenuationCommit(m->attenuation);
   medium::HysteresisCommit(m->hysteresis);
-  porous::PorePressureCommit(m->pore);
+  PetscCall(porous::PorePressureCommit(m->pore));
   input::DrmCommit(m->drm);
   PetscCall(ElastodynamicsDrainOpenGaps(m));
   PetscFunctionReturn(0);
@@ -401,6 +401,9 @@ PetscErrorCode ElastodynamicsDrainOpenGaps(Elastodynamics *m) {
   PetscCall(VecAssemblyEnd(marker));
   PetscCall(porous::PorePressureDrainOpenGaps(m->pore, marker));
   PetscCall(VecDestroy(&marker));
+  // The next step's law starts from the drained pressure.
+  PetscCall(porous::PorePressureTotal(m->pore));
+  for (auto &iface : m->interfaces) PetscCall(iface.ReadCommittedPorePressure(m->pore->p_total));
   PetscFunctionReturn(0);
 }
 

@@ -200,6 +200,7 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool ev
     e->hysteretic_work -= h_mean * s[11];
     e->darcy += fluid.darcy;
     e->fluid_inflow += fluid.inflow;
+    e->cavitation += fluid.cavitation;
   }
   e->h_prev = h;
   e->evaluated = evaluate;
@@ -211,9 +212,9 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool ev
     e->shadow        = s[2];
     e->balance_error = (e->shadow - e->shadow_start) - (e->input + e->external + e->reactions + e->interface_work - e->absorbed - e->damped - e->anelastic - e->contact_damped -
                                          e->hysteretic_dissipated) -
-                       (e->fluid_inflow - e->darcy);
+                       (e->fluid_inflow - e->darcy - e->cavitation);
     e->scale         = std::max({e->scale, std::fabs(e->shadow), std::fabs(e->input), std::fabs(e->external), std::fabs(e->absorbed), std::fabs(e->damped), std::fabs(e->anelastic),
-                                 std::fabs(e->reactions), std::fabs(e->interface_work), std::fabs(e->contact_damped), std::fabs(e->hysteretic_dissipated), e->kinetic + std::fabs(e->strain), e->darcy, std::fabs(e->fluid_stored)});
+                                 std::fabs(e->reactions), std::fabs(e->interface_work), std::fabs(e->contact_damped), std::fabs(e->hysteretic_dissipated), e->kinetic + std::fabs(e->strain), e->darcy, std::fabs(e->fluid_stored), std::fabs(e->cavitation)});
   }
   PetscCall(PetscLogEventEnd(core::event_energy, 0, 0, 0, 0));
   PetscFunctionReturn(0);

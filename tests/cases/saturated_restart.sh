@@ -61,8 +61,10 @@ cmp "$WORK/SB/energy.csv" "$WORK/SC/energy.csv"
 for f in "$WORK"/SC/stations/*.csv; do cmp "$f" "$WORK/SB/stations/$(basename "$f")"; done
 echo "sub-cycled restart: energy.csv and the station files identical"
 # The same with the scene config/scenes/foundation_saturated.yaml (coarsened as in
-# foundation_saturated.sh, 3 s): a noflow interface on saturated soil that sticks and slides
-# (it reads the pore pressure of the trial state), free-field sides and constant-Q damping.
+# earlier versions of foundation_saturated.sh: 2 m cells, 3 s): a rigid block on a gap
+# interface on saturated soil that sticks, slides and opens (it reads the pore pressure of
+# the trial state; open gaps drain), cavities under its edges from 1.39 s, free-field sides
+# and constant-Q damping.
 O="-options_file config/scenes/foundation_saturated.yaml -mesh_box_faces 60,30 -region_block_box -4,4,30,40 -ts_max_time 3 -output_interval 0.5 -progress_interval 100000"
 $SW $O -output_dir "$WORK/FC" > "$WORK/FC.log"
 steps=$(tail -1 "$WORK/FC/energy.csv" | cut -d, -f1)

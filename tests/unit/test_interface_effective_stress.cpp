@@ -1,8 +1,9 @@
 // The Mohr-Coulomb interface law in effective stress (physics::interfaceLawWithPorePressure):
 // a pair pressed to a total normal traction sigma_N and sheared slips at
 // |sigma_T| = c - (sigma_N + p) tan(phi) (Terzaghi's effective stress in Coulomb friction),
-// its tension cut-off holds the effective traction sigma_N + p at sigma_t, and p = 0 leaves
-// the law as it was.
+// its tension cut-off holds the effective traction sigma_N + p at sigma_t, p = 0 leaves
+// the law as it was, and a pore pressure that rises under a pair on the yield surface makes
+// it slip by the consistency condition, with no drift left to return.
 #include "slipwave/physics/mohr_coulomb_interface.hpp"
 
 #include "unit_check.hpp"
@@ -51,6 +52,26 @@ int main() {
     const double         dw_T[1] = {0.0};
     interfaceUpdate<2>(thick_wet, s, dw_T, 2e-5);
     unit::near(s.sigma_N + p, params.tensile_strength, 1e-12, 0, "tension cut-off on the effective traction: sigma_N + p = sigma_t");
+  }
+  // A pair sheared onto the surface at p, then p rises by dp with no jump increment: the
+  // surface shrinks by dp tan(phi), the pair slips lambda = dp tan(phi) / G (psi = 0: H = G)
+  // and ends on the new surface with nothing left for the drift return, dissipating
+  // lambda times the mean strength over the step, (R_start + R_end) / 2.
+  {
+    const InterfaceLaw at_p = interfaceLawWithPorePressure(law, p);
+    InterfaceState<2>  s    = interfaceInitialState<2>(at_p, sigma_N);
+    const double       onto[1] = {(params.c - (sigma_N + p) * std::tan(params.phi)) / law.G * 1.5}, none[1] = {0.0};
+    interfaceUpdate<2>(at_p, s, onto, 0.0);
+    const double dp = 2e3, R_start = s.sigma_T[0], slip0 = s.slip, dissipated0 = s.dissipation;
+    const double drift = interfaceUpdate<2>(interfaceLawWithPorePressure(law, p + dp), s, none, 0.0, dp);
+    const double R_end = params.c - (sigma_N + p + dp) * std::tan(params.phi), lambda = dp * std::tan(params.phi) / law.G;
+    unit::check(drift == 0.0, "rising p: no drift returned (" + std::to_string(drift) + " Pa)");
+    unit::near(s.sigma_T[0], R_end, 1e-12, 0, "rising p: on the surface of the step's end pressure");
+    unit::near(s.slip - slip0, lambda, 1e-12, 0, "rising p: slip dp tan(phi) / G");
+    unit::near(s.dissipation - dissipated0, lambda * 0.5 * (R_start + R_end), 1e-12, 0, "rising p: dissipation lambda (R_start + R_end) / 2");
+    // Falling back by dp grows the surface: elastic, the traction stays.
+    interfaceUpdate<2>(interfaceLawWithPorePressure(law, p), s, none, 0.0, -dp);
+    unit::near(s.sigma_T[0], R_end, 1e-12, 0, "falling p: elastic, the traction stays");
   }
   return unit::failures();
 }

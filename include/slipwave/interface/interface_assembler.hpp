@@ -41,6 +41,10 @@ public:
   // nodes from p (a global vector with one value per node, node i of it being node i of the
   // displacement: porous/pore_pressure.hpp) and applies the law in effective stress.
   PetscErrorCode SetPorePressure(Vec p);
+  // The committed state's pore pressure at the pairs (what the next step's law starts from)
+  // from p_committed (laid out as SetPorePressure's p): a restart restores it, and gaps that
+  // drained after the commit change it. No-op on dry soil.
+  PetscErrorCode ReadCommittedPorePressure(Vec p_committed);
   // f += contact damping forces of the pairs closed in the last AddForces' trial, from the
   // velocity v (the half-step velocity that the step's other damping terms use). No-op
   // without contact damping.

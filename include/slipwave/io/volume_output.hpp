@@ -32,17 +32,19 @@ public:
   // previous: output steps (step, time) already in DIR/volume.h5 to keep (a restart), or null.
   // pore_layout: a pore-pressure vector of a saturated scene (its layout names the pressure
   // fields of the frames a restart carries over), or null.
-  // soil: the scene has hysteretic regions (their cell fields are written).
+  // soil: the scene has hysteretic regions (their cell fields are written). cavities: a
+  // saturated scene with a cavitation limit (its frames carry cavity_fraction).
   PetscErrorCode Open(DM dm, const fem::BulkOperator &bulk, const std::string &dir, const std::vector<std::pair<PetscInt, PetscReal>> *previous = nullptr,
-                      Vec pore_layout = nullptr, bool soil = false);
+                      Vec pore_layout = nullptr, bool soil = false, bool cavities = false);
   // initial_stress: 6 per local cell added to the stress of u (the geostatic state), or empty.
   // p_total, p_excess: saturated scenes, one value per node in the same node order (global
   // vectors of porous/pore_pressure.hpp), written as the node fields pore_pressure and
   // excess_pore_pressure [Pa]; else null. The stress written is then the effective stress
-  // (total = effective - alpha p I).
+  // (total = effective - alpha p I). cavity_fraction: with a cavitation limit, each node's
+  // cavity over the volume it stands for [-], written as the node field cavity_fraction.
   // base: the base's displacement (dim values) taken off u in displacement_relative.
   PetscErrorCode Write(DM dm, const fem::BulkOperator &bulk, PetscInt step, PetscReal t, Vec u, const PetscScalar *base, Vec v, Vec a, const std::vector<double> &initial_stress,
-                       Vec p_total = nullptr, Vec p_excess = nullptr, const SoilCellOutput *soil = nullptr);
+                       Vec p_total = nullptr, Vec p_excess = nullptr, Vec cavity_fraction = nullptr, const SoilCellOutput *soil = nullptr);
   PetscErrorCode Close();
 
 private:

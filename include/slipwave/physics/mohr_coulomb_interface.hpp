@@ -183,9 +183,15 @@ double exitFraction(const double *a, const double *b, double R0, double d, doubl
 }
 
 // Contact update from the committed state s (in contact) for the increment (dw_T, dw_N).
-// Returns the drift returned to the yield surface [stress].
+// law is the law at the end of the step; dp the rise of the pore pressure over the step
+// (interfaceLawWithPorePressure; 0 on dry soil), which moves the yield surface along the
+// path as the normal traction does: the path runs from the law of the step's start
+// (cohesion law.c + dp tan(phi)) to that of its end, so a state committed on the start's
+// surface starts on it, and the slip a rising pressure forces is found by the consistency
+// condition instead of being returned as drift. Returns the drift returned to the yield
+// surface [stress].
 template <int Dim>
-double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const double *dw_T, double dw_N) {
+double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const double *dw_T, double dw_N, double dp) {
   constexpr int NT = Dim - 1;
   const double u_tr = s.opening + dw_N;
   // The part of the normal increment spent on the tension plateau carries no stress.
@@ -206,7 +212,8 @@ double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const doub
   if (R_tr >= 0.0 && nn_tr <= R_tr * R_tr) {
     for (int i = 0; i < NT; ++i) s.sigma_T[i] = sT_tr[i];
   } else {
-    const double R0 = law.c - s.sigma_N * law.tan_phi, d = dsN * law.tan_phi;
+    // The effective normal traction changes by dsN + dp along the path.
+    const double R0 = law.c + dp * law.tan_phi - s.sigma_N * law.tan_phi, d = (dsN + dp) * law.tan_phi;
     double b_l1 = 0.0;
     for (int i = 0; i < NT; ++i) b_l1 += std::fabs(b[i]);
     const double scale = std::fabs(R0) + std::fabs(d) + b_l1;
@@ -245,7 +252,7 @@ double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const doub
     double t_dot_b = 0.0;
     for (int i = 0; i < NT; ++i) t_dot_b += t_hat[i] * b[i];
     // (G t.dw_T + E tan(phi) dw_N) / H on the plastic part, with total (not elastic) rates.
-    lambda = rest * (t_dot_b + law.tan_phi * dsN) * law.inv_H;
+    lambda = rest * (t_dot_b + law.tan_phi * (dsN + dp)) * law.inv_H;
     if (lambda <= 0.0) {
       lambda = 0.0; // elastic unloading from the yield surface
       for (int i = 0; i < NT; ++i) s.sigma_T[i] = sT_tr[i];
@@ -258,8 +265,9 @@ double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const doub
       s.wp_N += lambda * law.tan_psi;
       s.slip += lambda;
       u_new = u_tr - lambda * law.tan_psi;
-      // sigma_N is linear in lambda along the plastic part: the trapezoid rule is exact.
-      s.dissipation += lambda * (law.c - 0.5 * (sN_star + sN_end) * (law.tan_phi - law.tan_psi));
+      // sigma_N and the pore pressure are linear in lambda along the plastic part: the
+      // trapezoid rule is exact (the cohesion's mean over it is law.c + rest dp tan(phi) / 2).
+      s.dissipation += lambda * (law.c + 0.5 * rest * dp * law.tan_phi - 0.5 * (sN_star + sN_end) * (law.tan_phi - law.tan_psi));
     }
   }
   s.opening = u_new;
@@ -290,10 +298,11 @@ double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const doub
 } // namespace detail
 
 // Advances one pair by the jump increment of one step: dw_T has Dim-1 components, dw_N is
-// the normal one. Returns the drift returned to the yield surface in this step [stress]
-// (spec 5.7: the caller reports the largest one of a run).
+// the normal one; on saturated soil law is the law at the step's end pore pressure and dp
+// that pressure's rise over the step (contactUpdate). Returns the drift returned to the
+// yield surface in this step [stress] (spec 5.7: the caller reports the largest one of a run).
 template <int Dim>
-double interfaceUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const double *dw_T, double dw_N) {
+double interfaceUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const double *dw_T, double dw_N, double dp = 0.0) {
   constexpr int NT = Dim - 1;
   if (s.status == InterfaceStatus::Open) {
     const double u_tr = s.opening + dw_N;
@@ -312,7 +321,8 @@ double interfaceUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const do
     }
     s.sigma_N = 0.0;
     s.opening = 0.0;
-    return detail::contactUpdate<Dim>(law, s, dw_rest, u_tr);
+    // From zero traction after the touch, the rest of the step runs with the end's law.
+    return detail::contactUpdate<Dim>(law, s, dw_rest, u_tr, 0.0);
   }
   if (s.opening + dw_N > law.e_ini) {
     // Lost with the bond: the shear energy (the tangential reference is dropped) and the
@@ -329,7 +339,7 @@ double interfaceUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const do
     s.status = InterfaceStatus::Open;
     return 0.0;
   }
-  return detail::contactUpdate<Dim>(law, s, dw_T, dw_N);
+  return detail::contactUpdate<Dim>(law, s, dw_T, dw_N, dp);
 }
 
 } // namespace slipwave::physics

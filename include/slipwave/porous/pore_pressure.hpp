@@ -79,6 +79,22 @@ struct PorePressure {
   // and the fluid conditions without any gap (free_mask, inv_storage as set up).
   std::vector<std::string> sealed_interfaces;
   Vec    sealed_free_mask = nullptr, sealed_inv_storage = nullptr;
+  // Cavitation (-fluid_cavitation_pressure, physics/cavitation.hpp): the total pore pressure
+  // p_h + p is held at or above cavitation_pressure [Pa gauge] (none: not at all); where it
+  // would fall below, the pore volume the water does not follow is a cavity, per node.
+  bool     cavitation          = true;
+  double   cavitation_pressure = -100e3;
+  Vec      cavity = nullptr, cavity_trial = nullptr; // committed V_n and the trial's V_{n+1} [m^3; m^2 per m in 2D]
+  double   cavity_work_step = 0;                     // this rank's work on its cavities in the last committed step [J], for the ledger
+  PetscInt cavities_local   = 0;                     // this rank's nodes with a cavity in the committed state
+  // For the run report: when cavities were open (t < 0: never), the most nodes at once, the
+  // largest cavity and where (this rank's; reduced by PorePressureCavitationReport).
+  double   cavitation_first = -1, cavitation_last = -1;
+  PetscInt cavities_max = 0, cavities_now = 0;
+  double   largest_cavity = 0, largest_cavity_time = 0, largest_cavity_at[3] = {0, 0, 0};
+  Vec      node_coordinates[3] = {nullptr, nullptr, nullptr}; // x, y (, z) per pressure node (global layout)
+  Vec      node_volume = nullptr;                    // the saturated volume each node stands for (lumped) [m^3; m^2 in 2D]
+  Vec      cavity_fraction = nullptr;                // V / node_volume, refreshed by PorePressureCavityFraction [-]
 };
 
 // Reads the per-region options after MaterialsRead; sets vp_undrained of saturated regions
@@ -102,7 +118,8 @@ PetscErrorCode PorePressureDestroy(PorePressure **pore);
 // Trial state at time t from the ghosted displacement u_local: p_trial, and the force on the
 // skeleton f_pore = alpha Q^T p_trial (global, displacement layout, overwritten).
 PetscErrorCode PorePressureTrial(PorePressure *pore, DM dm, const PetscScalar *u_local, PetscReal t, Vec f_pore);
-void           PorePressureCommit(PorePressure *pore);
+// The trial becomes the committed state; books this rank's work on its cavities in the step.
+PetscErrorCode PorePressureCommit(PorePressure *pore);
 // The diffusion part (p*, Hbar) of the coming step of size h from the committed p_n, as the
 // energy ledger computes it first in every step; a restart calls it with the checkpoint's
 // step (whose monitor, and so the ledger, it skips), so the continued run repeats the
@@ -143,8 +160,10 @@ PetscInt PorePressureSubsteps(const PorePressure *pore, double h);
 // ½ h p_n (Hbar_n + Hbar_{n-1}) and work of the prescribed inflow h p_n q.
 // held_power = v_n . f_pore on held dofs: the part of the supports' reaction power that the
 // pore pressure supplies, which the ledger takes out of the reactions (it is internal work).
+// cavitation: the work the fluid did on its cavities in the last committed step
+// (physics::cavityWork on the free nodes), which the shadow storage energy lacks.
 struct PoreEnergy {
-  double storage = 0, darcy = 0, inflow = 0, held_power = 0;
+  double storage = 0, darcy = 0, inflow = 0, held_power = 0, cavitation = 0;
 };
 // v, a: v_n and a_n; f_pore at t_n; free_mask of the displacement dofs; dm the displacement
 // layout. A node held this step (drained) that still holds p_n != 0 (a gap just opened over
@@ -152,5 +171,13 @@ struct PoreEnergy {
 // would have given it, (1/2) [p S p - h p (alpha Q v_{n+1/2}) - h p Hbar + h p q] at that node,
 // leaves with the water and is booked in darcy.
 PetscErrorCode PorePressureEnergy(PorePressure *pore, DM dm, PetscReal h, Vec v, Vec a, Vec f_pore, Vec free_mask, PoreEnergy *e);
+
+// The volume output's cavity_fraction: each node's cavity over the volume it stands for (the
+// volumetric strain the cavity takes), in pore->cavity_fraction. With cavitation only.
+PetscErrorCode PorePressureCavityFraction(PorePressure *pore);
+
+// The run report's line on cavitation (collective): when and where cavities were open, the
+// most nodes at once, the largest cavity, and the work (work: the ledger's cavitation_work).
+PetscErrorCode PorePressureCavitationReport(const PorePressure *pore, MPI_Comm comm, double work, std::string *line);
 
 } // namespace slipwave::porous

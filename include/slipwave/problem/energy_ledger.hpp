@@ -46,6 +46,7 @@ struct EnergyLedger {
   double fluid_stored = 0;   // F_{n+1/2} ≈ ½ pᵀ S p, S = ∫N/M
   double darcy = 0;          // cumulative Darcy (viscous) dissipation, h ½ p_n H (p_n + p_{n-1})
   double fluid_inflow = 0;   // cumulative work of the prescribed boundary inflow, h p_n q
+  double cavitation = 0;     // cumulative work of the fluid on its cavities, -(p_n + p_{n+1})/2 (V_{n+1} - V_n) (physics/cavitation.hpp)
   double shadow    = 0; // W_{n+1/2}
   double shadow_start = 0;
   double balance_error = 0;
