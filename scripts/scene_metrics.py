@@ -24,10 +24,11 @@ output step):
                       in (the study's "excursion", docs/convergence-study.md) [m]
 Rocking and uplift:
   peak_uplift         the largest opening of any pair at any output step [m]
-  peak_rocking_angle  max |u_y(block_base_right) - u_y(block_base_left)| / their distance
+  peak_rocking_angle  max |u_v(block_base_right) - u_v(block_base_left)| / their distance
                       over time [rad] (stations at the base corners, inside the block)
-  tilt_after_shaking  (u_y(block_base_right) - u_y(block_base_left)) / their distance at the
+  tilt_after_shaking  (u_v(block_base_right) - u_v(block_base_left)) / their distance at the
                       end, signed (counter-clockwise positive): the permanent tilt [rad]
+  (u_v: the vertical displacement, u_y in 2D, u_z in 3D)
 Accelerations (horizontal, a_x):
   peak_structure_acceleration  max |a_x| at the station block_top, unfiltered [m/s^2]: not a
                       convergent quantity (each landing is a velocity jump, a Dirac in
@@ -165,18 +166,19 @@ def psa_keys(name, t, a, periods=SPECTRUM_PERIODS):
     return {f"{name}_psa_{T:g}s": float(v) for T, v in zip(periods, pseudo_acceleration_spectrum(acc, dt, periods))}
 
 
-def station_measures(records, f_resolved, f_lowpass=None):
+def station_measures(records, f_resolved, f_lowpass=None, rocking_span=5.5):
     """The answers read from station records alone. records: {station name: Table with t,
     u_y, a_x, a_y}; f_resolved: the resolved frequency [Hz]; f_lowpass: the low-pass's
-    corner [Hz] (default f_resolved). Keys as in the module docstring."""
+    corner [Hz] (default f_resolved); rocking_span: the x distance of block_base_left and
+    block_base_right [m] (the default scene's 5.5). Keys as in the module docstring."""
     f_lowpass = f_resolved if f_lowpass is None else f_lowpass
     m = {}
     if "block_base_left" in records and "block_base_right" in records:
         left, right = records["block_base_left"], records["block_base_right"]
-        # The station's x is not in its CSV: the scene puts them at x = -2.75 and 2.75.
-        span = 5.5
-        m["peak_rocking_angle"] = float(np.max(np.abs(right["u_y"] - left["u_y"])) / span)
-        m["tilt_after_shaking"] = float((right["u_y"][-1] - left["u_y"][-1]) / span)
+        span = rocking_span
+        up = "u_z" if "u_z" in left else "u_y"  # the vertical: z in 3D
+        m["peak_rocking_angle"] = float(np.max(np.abs(right[up] - left[up])) / span)
+        m["tilt_after_shaking"] = float((right[up][-1] - left[up][-1]) / span)
     if "block_top" in records:
         m["peak_structure_acceleration"] = float(np.max(np.abs(records["block_top"]["a_x"])))
     if "free_field" in records:
@@ -230,7 +232,10 @@ def metrics(out, interface="base", lowpass_hz=None, notes=None):
     for wanted in ("block_top", "free_field", "block_base_left", "block_base_right"):
         if wanted not in names:
             notes.append(f"no station '{wanted}': its answers are skipped")
-    m.update(station_measures({name: run.station(name) for name in names}, resolved_frequency(run), lowpass_hz))
+    span = 5.5
+    if "block_base_left" in names and "block_base_right" in names and run.station_coordinates("block_base_left") is not None:
+        span = abs(run.station_coordinates("block_base_right")[0] - run.station_coordinates("block_base_left")[0])
+    m.update(station_measures({name: run.station(name) for name in names}, resolved_frequency(run), lowpass_hz, span))
     return m
 
 

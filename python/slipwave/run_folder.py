@@ -231,6 +231,14 @@ class RunFolder:
                     columns.update({f"{q}_{c}": values[:, i] for i, c in enumerate(_TENSOR_COMPONENTS[values.shape[1]])})
         return Table(columns)
 
+    def station_coordinates(self, name):
+        """Station `name`'s point [m] (2 or 3 values) from stations.h5, or None without it."""
+        if not os.path.isfile(self._file("stations.h5")):
+            return None
+        import h5py
+        with h5py.File(self._file("stations.h5"), "r") as f:
+            return [float(x) for x in f[name].attrs["coordinates"]]
+
     def stations(self):
         """{name: station(name)} for every station, in name order."""
         return {name: self.station(name) for name in self.station_names()}

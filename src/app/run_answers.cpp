@@ -44,7 +44,8 @@ std::string periodKey(const std::string &station, double T) {
 } // namespace
 
 PetscErrorCode RunAnswers::Setup(const problem::Elastodynamics &model, const io::Stations &stations) {
-  MPI_Comm  comm = model.comm;
+  MPI_Comm  comm     = model.comm;
+  const int vertical = (int)model.dim - 1; // y in 2D, z in 3D
   char      iface[256] = "base", structure[256] = "block_top", free_field[256] = "free_field", body[256] = "";
   char     *rocking[2] = {nullptr, nullptr};
   PetscInt  nrock = 2, nperiods = kMaxPeriods;
@@ -94,7 +95,7 @@ PetscErrorCode RunAnswers::Setup(const problem::Elastodynamics &model, const io:
   if (structure_ >= 0) {
     structure_spectrum_ = std::make_unique<numerics::ResponseSpectrum>(periods_, 0.05);
     probes_.push_back({structure_, 2, 0});
-    probes_.push_back({structure_, 0, 1});
+    probes_.push_back({structure_, 0, vertical});
   } else notes_.push_back("no station '" + structure_name_ + "': no floor spectrum, structure acceleration or settlement (-answer_structure_station)");
   if (free_field_ >= 0) {
     free_field_spectrum_ = std::make_unique<numerics::ResponseSpectrum>(periods_, 0.05);
@@ -114,8 +115,8 @@ PetscErrorCode RunAnswers::Setup(const problem::Elastodynamics &model, const io:
       rock_span_ = std::fabs(stations.coordinates(rock_right_)[0] - stations.coordinates(rock_left_)[0]);
       PetscCheck(rock_span_ > 0, comm, PETSC_ERR_USER_INPUT, "-answer_rocking_stations %s,%s: the two stations have the same x; allowed: stations apart along x", rock_left.c_str(),
                  rock_right.c_str());
-      probes_.push_back({rock_left_, 0, 1});
-      probes_.push_back({rock_right_, 0, 1});
+      probes_.push_back({rock_left_, 0, vertical});
+      probes_.push_back({rock_right_, 0, vertical});
     } else notes_.push_back("neither a rigid body nor the stations " + rock_left + "," + rock_right + ": no rocking angle");
   }
   PetscFunctionReturn(0);
@@ -125,9 +126,9 @@ PetscErrorCode RunAnswers::SetGeostatic(const problem::Elastodynamics &model, io
   std::vector<double> v;
   PetscFunctionBeginUser;
   if (!active_ || structure_ < 0) PetscFunctionReturn(0);
-  PetscCall(stations.Values(model.dm, u_geo, u_geo, {{structure_, 0, 1}}, &v));
+  PetscCall(stations.Values(model.dm, u_geo, u_geo, {{structure_, 0, (int)model.dim - 1}}, &v));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, v.data(), 1, MPI_DOUBLE, MPI_SUM, model.comm));
-  geostatic_uy_ = v[0];
+  geostatic_vertical_ = v[0];
   geostatic_    = true;
   PetscFunctionReturn(0);
 }
@@ -162,7 +163,7 @@ PetscErrorCode RunAnswers::Update(const problem::Elastodynamics &model, io::Stat
     structure_spectrum_->add(t, v[0]);
     structure_ax_.push_back(v[0]);
     structure_peak_ = std::max(structure_peak_, std::fabs(v[0]));
-    structure_uy_   = v[1];
+    structure_vertical_   = v[1];
     v += 2;
   }
   if (free_field_ >= 0) {
@@ -219,8 +220,8 @@ PetscErrorCode RunAnswers::Finish(const problem::Elastodynamics &model, bool res
     answers.push_back({"tilt_after_shaking", "rad", "tilt after shaking (" + by + ", at the end)", tilt_});
   }
   if (structure_ >= 0) {
-    if (geostatic_) answers.push_back({"settlement_gravity", "m", "settlement under gravity (" + structure_name_ + ")", -geostatic_uy_});
-    answers.push_back({"settlement_after_shaking", "m", "settlement after shaking (" + structure_name_ + ", from gravity's)", -structure_uy_});
+    if (geostatic_) answers.push_back({"settlement_gravity", "m", "settlement under gravity (" + structure_name_ + ")", -geostatic_vertical_});
+    answers.push_back({"settlement_after_shaking", "m", "settlement after shaking (" + structure_name_ + ", from gravity's)", -structure_vertical_});
     answers.push_back({"peak_structure_acceleration", "m/s^2", "peak acceleration a_x at " + structure_name_ + " (unfiltered)", structure_peak_});
     answers.push_back({structure_name_ + "_peak_acceleration_lowpassed", "m/s^2", "peak a_x at " + structure_name_ + ", low-passed at " + corner, numerics::lowPassedPeak(times_, structure_ax_, corner_hz_)});
     for (size_t k = 0; k < periods_.size(); ++k)

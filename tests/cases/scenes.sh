@@ -4,6 +4,15 @@
 #   starting base traction, area-weighted (lumped weights 1/4, 1/2, 1 for the corner, edge
 #   and centre pairs of its 2 x 2-cell base), equals its weight per area rho g h =
 #   2400*9.81*6 = 141264 Pa within 1 %; it slides (> 1 cm) and rocks (some pair opens).
+#   The run's answers in 3D read the vertical as z: the rocking angle and the tilt left from
+#   the base-corner stations equal scripts/scene_metrics.py's (stations every step, their
+#   span from stations.h5) to 1e-9 of the peak; the settlement under gravity (-u_z of
+#   block_top; the outputs count displacements from the geostatic state, so only the answer
+#   holds it) lies within a factor 3 of a rigid square footing's on an elastic half-space of
+#   the soft layer, s = q B (1 - nu^2) I / E with I = 0.82 (Poulos & Davis 1974, rigid
+#   square), q = 141264 Pa, B = 4 m, E and nu from vp 450, vs 200, rho 1900: 1.9 mm (the
+#   stiffer soil 6 m down makes it less, the contact springs' compression more). Reading u_y,
+#   the horizontal component that the symmetric load leaves at zero, gave 1e-15 m.
 # (default.yaml: tests/cases/default_scene.sh; site_response_2d: mpi_ranks.sh, output_files.sh;
 # sliding_block, two_bar_impact and free_field_site: their interface_ and free_field_ tests;
 # saturated_site: saturated_site_scene.sh; foundation_saturated: foundation_saturated.sh.)
@@ -32,4 +41,24 @@ mean = np.sum(w * sn) / np.sum(w)
 rel = abs(mean / -141264.0 - 1)
 print(f"foundation_3d: weighted base traction {mean:.0f} Pa (weight/area -141264), error {rel:.2e}; slip {slip:.4f} m; {opened} frames with an open pair")
 sys.exit(0 if rel <= 0.01 and slip > 0.01 and opened > 0 else 1)
+PY
+$PY scripts/scene_metrics.py "$WORK/f3d" --json "$WORK/f3d_metrics.json" > /dev/null
+$PY - "$WORK/f3d" "$WORK/f3d_metrics.json" <<'PY'
+import json, sys
+run = json.load(open(f"{sys.argv[1]}/run_info.json"))["answers"]
+ref = json.load(open(sys.argv[2]))
+peak = ref["peak_rocking_angle"]
+ok = peak > 0
+for k in ("peak_rocking_angle", "tilt_after_shaking"):
+    a, b = run[k]["value"], ref[k]
+    ok &= abs(a - b) <= 1e-9 * peak
+    print(f"foundation_3d {k}: run {a:.10g}, scene_metrics {b:.10g} (bound 1e-9 of {peak:.4g})")
+rho, vp, vs = 1900.0, 450.0, 200.0
+G = rho * vs**2
+nu = (vp**2 - 2 * vs**2) / (2 * (vp**2 - vs**2))
+s_half = 141264.0 * 4.0 * (1 - nu**2) * 0.82 / (2 * G * (1 + nu))
+settle = run["settlement_gravity"]["value"]
+ok &= s_half / 3 <= settle <= 3 * s_half
+print(f"foundation_3d settlement under gravity: run {settle * 1e3:.3f} mm, rigid square footing on the half-space {s_half * 1e3:.3f} mm (bound: within a factor 3)")
+sys.exit(0 if ok else 1)
 PY

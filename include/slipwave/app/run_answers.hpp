@@ -8,15 +8,15 @@
 //   mean_slip_range = max - min of s, peak_uplift = the largest opening of a pair.
 // - Rocking: peak_rocking_angle = max |theta| of the rigid body (-answer_rigid_body, default
 //   the first rigid region; 2D theta_z, 3D the rotation vector's length), else max
-//   |u_y(right) - u_y(left)| / their x distance of the two stations -answer_rocking_stations
+//   |u_v(right) - u_v(left)| / their x distance of the two stations -answer_rocking_stations
 //   (default block_base_left,block_base_right). tilt_after_shaking = the same angle, signed
 //   (2D: counter-clockwise positive; 3D: the length), at the end: the permanent tilt, which
 //   a yielding soil accumulates cycle by cycle (docs/convergence-study.md: it converges
 //   far more slowly than the peak of the first large cycle, so it is stated apart).
 // - The structure station (-answer_structure_station, default block_top): its 5 %-damped
 //   floor spectrum <name>_psa_<T>s at -answer_periods (numerics/response_spectrum.hpp) and
-//   peak_structure_acceleration; settlement_gravity = -u_y at the end of the geostatic stage,
-//   settlement_after_shaking = -u_y at the end, measured from the state under gravity
+//   peak_structure_acceleration; settlement_gravity = -u_v at the end of the geostatic stage,
+//   settlement_after_shaking = -u_v at the end, measured from the state under gravity
 //   (downward positive).
 // - The free-field station (-answer_free_field_station, default free_field): free_field_pga
 //   = max |a_x| and its spectrum.
@@ -25,7 +25,8 @@
 //   frequency): <station>_peak_acceleration_lowpassed, the peak that converges where the
 //   unfiltered one does not (a landing, a yielding soil's corners). Their a_x is kept every
 //   step for it (8 bytes a step and station).
-// Accelerations are a_x, unfiltered unless said. A station named by option must exist; a default one
+// u_v is the vertical displacement (u_y in 2D, u_z in 3D). Accelerations are a_x, unfiltered
+// unless said. A station named by option must exist; a default one
 // that the run lacks drops its answers (said in the table). Every rank does the same
 // arithmetic on values summed over the ranks: the answers do not depend on the partition
 // beyond round-off. After a restart the answers are not stated (the state before it is not
@@ -76,7 +77,7 @@ private:
   std::vector<InterfaceCounts>     counts_;
   std::vector<double> times_, structure_ax_, free_field_ax_; // every step, for the low-passed peaks
   double              corner_hz_ = 0;
-  double net_slip_ = 0, local_uplift_ = 0, rocking_ = 0, tilt_ = 0, structure_peak_ = 0, free_field_peak_ = 0, structure_uy_ = 0, geostatic_uy_ = 0;
+  double net_slip_ = 0, local_uplift_ = 0, rocking_ = 0, tilt_ = 0, structure_peak_ = 0, free_field_peak_ = 0, structure_vertical_ = 0, geostatic_vertical_ = 0;
   bool   geostatic_ = false;
   std::vector<std::string> notes_;
 };
