@@ -239,8 +239,9 @@ double relaxationEnergy(Hysteresis *h, const PetscScalar *u_local) {
       double tr = 0, ee = 0;
       for (int c = 0; c < Dim; ++c) tr += eps[c];
       for (int c = 0; c < physics::HystereticLayout<Dim>::kStrain; ++c) ee += (c < 3 && c < Dim ? 1.0 : 2.0) * eps[c] * eps[c];
-      const double linear = 0.5 * reg.lambda * tr * tr + reg.mu * ee;
-      sum += vol * (linear - physics::hystereticStoredEnergy<Dim>(*reg.model, committedState<Dim>(*h, reg, p, buffer).plastic, eps));
+      const double     linear = 0.5 * reg.lambda * tr * tr + reg.mu * ee;
+      const PointState state  = committedState<Dim>(*h, reg, p, buffer);
+      sum += vol * (linear - physics::hystereticStoredEnergy<Dim>(*reg.model, state.header, state.plastic, eps));
     });
   }
   return sum;

@@ -321,6 +321,13 @@ void chooseTail(const HystereticSoilModel &model, double *state, const double *p
     state[L::kReference + c] = e[c];
     state[L::kTailStress + c] = tail;
   }
+  double energy = 0;
+  for (int j = best; j < n; ++j) {
+    double pj[L::kDeviator];
+    for (int c = 0; c < L::kDeviator; ++c) pj[c] = p[c * n + j];
+    energy += 0.5 * two_g[j] * contracted<Dim>(pj);
+  }
+  state[L::kTailEnergy] = energy;
 }
 
 } // namespace
@@ -376,13 +383,18 @@ double hystereticUpdate(const HystereticSoilModel &model, const double *state_in
 }
 
 template <int Dim>
-double hystereticStoredEnergy(const HystereticSoilModel &model, const double *plastic, const double *strain) {
-  constexpr int kDev = HystereticLayout<Dim>::kDeviator;
-  const int     n = model.surfaces();
-  double        e[kDev];
+double hystereticStoredEnergy(const HystereticSoilModel &model, const double *state, const double *plastic, const double *strain) {
+  using L = HystereticLayout<Dim>;
+  constexpr int kDev = L::kDeviator;
+  const int     n = model.surfaces(), head = (int)state[L::kHead];
+  double        e[kDev], tail[kDev];
   const double  tr = deviator<Dim>(strain, e);
-  double        w = 0.5 * model.bulkModulus() * tr * tr;
-  for (int i = 0; i < n; ++i) {
+  // e:P, the zz components -(xx + yy), the shears counted twice.
+  for (int c = 0; c < kDev; ++c) tail[c] = state[L::kTailStress + c];
+  double ep = e[0] * tail[0] + e[1] * tail[1] + (e[0] + e[1]) * (tail[0] + tail[1]);
+  for (int c = 2; c < kDev; ++c) ep += 2 * e[c] * tail[c];
+  double w = 0.5 * model.bulkModulus() * tr * tr + 0.5 * model.tailModulus()[head] * contracted<Dim>(e) - ep + state[L::kTailEnergy];
+  for (int i = 0; i < head; ++i) {
     double d[kDev];
     for (int c = 0; c < kDev; ++c) d[c] = e[c] - plastic[c * n + i];
     w += 0.5 * model.twiceModulus()[i] * contracted<Dim>(d);
@@ -419,8 +431,8 @@ double equivalentShearStress(const double *stress) {
 
 template double hystereticUpdate<2>(const HystereticSoilModel &, const double *, const double *, const double *, double *, double *, double *);
 template double hystereticUpdate<3>(const HystereticSoilModel &, const double *, const double *, const double *, double *, double *, double *);
-template double hystereticStoredEnergy<2>(const HystereticSoilModel &, const double *, const double *);
-template double hystereticStoredEnergy<3>(const HystereticSoilModel &, const double *, const double *);
+template double hystereticStoredEnergy<2>(const HystereticSoilModel &, const double *, const double *, const double *);
+template double hystereticStoredEnergy<3>(const HystereticSoilModel &, const double *, const double *, const double *);
 template double equivalentShearStrain<2>(const double *);
 template double equivalentShearStrain<3>(const double *);
 template double equivalentShearStress<2>(const double *);

@@ -130,7 +130,7 @@ struct Point {
     } else {
       strain[0] = E[0][0], strain[1] = E[1][1], strain[2] = E[2][2], strain[3] = E[0][1], strain[4] = E[1][2], strain[5] = E[0][2];
     }
-    return hystereticStoredEnergy<Dim>(model, state.data() + Layout::kPlastic, strain);
+    return hystereticStoredEnergy<Dim>(model, state.data(), strain);
   }
 };
 
@@ -453,7 +453,7 @@ void tailIsTheModel() {
   const HystereticSoilModel m(kGmax, kBulk, darendeliBackbone(DarendeliSoil{}));
   std::vector<double>       state(hystereticStateSize<Dim>(m), 0.0);
   Oracle<Dim>               oracle(m);
-  double                    worst_stress = 0, worst_plastic = 0, scale = 0;
+  double                    worst_stress = 0, worst_plastic = 0, worst_energy = 0, scale = 0;
   int                       held = 0, steps = 0;
   double                    visits = 0;
   bool                      same_bits = true;
@@ -485,6 +485,15 @@ void tailIsTheModel() {
       e[2] = strain[3], e[3] = strain[4], e[4] = strain[5];
     }
     oracle.update(e, s_ref);
+    // The stored energy, its tail from the header: the oracle's K tr^2 / 2 + sum_i G_i |e - p_i|^2.
+    double w_ref = 0.5 * kBulk * tr * tr;
+    for (int i = 0; i < m.surfaces(); ++i) {
+      double d[L::kDeviator], dd = 0;
+      for (int c = 0; c < L::kDeviator; ++c) d[c] = e[c] - oracle.p[c * m.surfaces() + i];
+      for (int c = 0; c < L::kDeviator; ++c) dd += (c < 2 ? 1.0 : 2.0) * d[c] * d[c];
+      w_ref += 0.5 * m.twiceModulus()[i] * (dd + (d[0] + d[1]) * (d[0] + d[1]));
+    }
+    worst_energy = std::max(worst_energy, std::fabs(hystereticStoredEnergy<Dim>(m, state.data(), strain) - w_ref));
     const double got[3] = {stress[0] - kBulk * tr, stress[1] - kBulk * tr, Dim == 2 ? stress[2] : stress[3]};
     for (int c = 0; c < 3; ++c) worst_stress = std::max(worst_stress, std::fabs(got[c] - s_ref[c]));
     if constexpr (Dim == 3) worst_stress = std::max({worst_stress, std::fabs(stress[4] - s_ref[3]), std::fabs(stress[5] - s_ref[4])});
@@ -499,6 +508,10 @@ void tailIsTheModel() {
   // Round-off: the tail's stress is one product T e - P instead of N terms (1e-15 relative
   // each, N = 24 of them), and the plastic strains carry the returns' rounding.
   unit::check(worst_stress <= 1e-12 * scale && worst_plastic <= 1e-15, what);
+  // The tail's energy T |e|^2 / 2 - e:P + E cancels: round-off of the terms, G (3e-3)^2 each.
+  std::snprintf(what, sizeof what, "%dD stored energy with the tail from the header: within %.1e of Gmax (3e-3)^2 of the definition's", Dim,
+                worst_energy / (kGmax * 9e-6));
+  unit::check(worst_energy <= 1e-12 * kGmax * 9e-6, what);
   std::snprintf(what, sizeof what, "%dD the tail held on %d of %d updates; elements visited per update %.1f of %d", Dim, held, steps, visits / steps, m.surfaces());
   unit::check(held > steps / 2, what);
   unit::check(same_bits, "evaluate-only gives the in-place update's stress bit for bit, in the tail too");
@@ -518,7 +531,7 @@ void elementSet() {
   unit::check(ok, "element moduli >= 0, yield strains ascending");
   unit::check(m.elementYieldStrain()[0] >= 1e-6 && m.elementYieldStrain()[0] <= 1e-6 * (1 + 1e-12), "first yield at the elastic limit 1e-6");
   unit::check(m.surfaces() == 24 && (int)m.knotStrains().size() == 24, "default N = 24 surfaces");
-  unit::check(hystereticStateSize<2>(m) == 82 && hystereticStateSize<3>(m) == 134, "state: 3N + 10 doubles in 2D, 5N + 14 in 3D");
+  unit::check(hystereticStateSize<2>(m) == 83 && hystereticStateSize<3>(m) == 135, "state: 3N + 11 doubles in 2D, 5N + 15 in 3D");
   auto throws = [](auto f) {
     try {
       f();

@@ -42,7 +42,8 @@ namespace slipwave::physics {
 //           the strain's order; sigma_zz != 0 in plane strain).
 //   state:  kHead (the first element of the tail, an integer), kSlack, kUpdates (updates since
 //           the last full sweep), the reference deviatoric strain (kReference, kDeviator
-//           values) and the tail's plastic stress (kTailStress, kDeviator), the largest
+//           values), the tail's plastic stress sum_{j >= head} 2 G_j p_j (kTailStress,
+//           kDeviator) and energy sum_{j >= head} G_j |p_j|^2 (kTailEnergy), the largest
 //           equivalent shear strain reached (kMaxStrain, output), then the plastic strains p_i
 //           from kPlastic on, component-major (c * N + i), all deviators in the components
 //           xx, yy, xy [, yz, xz] (zz = -(xx + yy)).
@@ -53,7 +54,7 @@ struct HystereticLayout {
   static constexpr int kStress = Dim == 2 ? 4 : 6;
   static constexpr int kDeviator = Dim == 2 ? 3 : 5;
   static constexpr int kHead = 0, kSlack = 1, kUpdates = 2, kReference = 3;
-  static constexpr int kTailStress = kReference + kDeviator, kMaxStrain = kTailStress + kDeviator, kPlastic = kMaxStrain + 1;
+  static constexpr int kTailStress = kReference + kDeviator, kTailEnergy = kTailStress + kDeviator, kMaxStrain = kTailEnergy + 1, kPlastic = kMaxStrain + 1;
 };
 
 struct HystereticSurfaces {
@@ -105,7 +106,7 @@ private:
   std::vector<double> knots_, modulus_, yield_strain_, twice_modulus_, radius_, tail_modulus_;
 };
 
-// Doubles per quadrature point: kDeviator * (N + 2) + 4.
+// Doubles per quadrature point: kDeviator * (N + 2) + 5.
 template <int Dim>
 int hystereticStateSize(const HystereticSoilModel &model) {
   return HystereticLayout<Dim>::kPlastic + HystereticLayout<Dim>::kDeviator * model.surfaces();
@@ -136,12 +137,17 @@ double hystereticUpdate(const HystereticSoilModel &model, const double *state_in
   return hystereticUpdate<Dim>(model, state_in, state_in + kPlastic, strain, stress, state_out, state_out ? state_out + kPlastic : nullptr);
 }
 
-// Energy stored per unit volume at the plastic strains p_i (a state's, from kPlastic on) and the
-// strain: K tr(eps)^2 / 2 + sum_i G_i |e - p_i|^2, for a state that the update returned for
-// this strain (then |e - p_i| <= r_i). Work done on a point = change of this + the dissipation
-// the updates return.
+// Energy stored per unit volume at (state, strain): K tr(eps)^2 / 2 + sum_i G_i |e - p_i|^2,
+// for a state that the update returned for this strain (then |e - p_i| <= r_i); the tail's
+// elements from its header (sum G_j |e - p_j|^2 = T |e|^2 / 2 - e:P + E). Work done on a
+// point = change of this + the dissipation the updates return. The state in two arrays as for
+// the update, or in one.
 template <int Dim>
-double hystereticStoredEnergy(const HystereticSoilModel &model, const double *plastic, const double *strain);
+double hystereticStoredEnergy(const HystereticSoilModel &model, const double *state, const double *plastic, const double *strain);
+template <int Dim>
+double hystereticStoredEnergy(const HystereticSoilModel &model, const double *state, const double *strain) {
+  return hystereticStoredEnergy<Dim>(model, state, state + HystereticLayout<Dim>::kPlastic, strain);
+}
 
 // Equivalent (octahedral-type) shear strain sqrt(2 e:e) of a strain (= |gamma| in simple
 // shear), and equivalent shear stress sqrt(s:s / 2) of a stress (= |tau| in simple shear).
