@@ -41,7 +41,7 @@ struct LinePoint {
 
 // Runs fn(point index, element index k, point in the element, w |det J|, strain) over the
 // points of the region's elements k in [first, last) on this rank (default: all of them).
-// Nen: the nodes of a degree-1 element known at compile time (its loops unrolled), or 0.
+// Nen: the nodes of a degree-1 element (its loops unrolled), or 0 at degree p > 1.
 template <int Dim, int Nen, class Fn>
 void forEachPointOf(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first, size_t last) {
   constexpr int  kStrain = physics::HystereticLayout<Dim>::kStrain;
@@ -54,7 +54,7 @@ void forEachPointOf(const Hysteresis &h, const HystereticRegion &reg, const Pets
     for (PetscInt q = 0; q < nq; ++q) {
       const size_t p = k * nq + q;
       double       G[3][3] = {};
-      if (Nen || h.degree == 1) {
+      if constexpr (Nen > 0) {
         const double *dN = &reg.gradient[p * nen * Dim];
         for (PetscInt a = 0; a < nen; ++a)
           for (int i = 0; i < Dim; ++i)
@@ -83,12 +83,23 @@ void forEachPointOf(const Hysteresis &h, const HystereticRegion &reg, const Pets
 
 template <int Dim, class Fn>
 void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first = 0, size_t last = SIZE_MAX) {
-  // The degree-1 cells of the mesh: triangles and quadrilaterals (2D), tetrahedra and
-  // hexahedra (3D).
-  if (h.degree == 1 && h.nodes == 3) forEachPointOf<Dim, 3>(h, reg, u_local, fn, first, last);
-  else if (h.degree == 1 && h.nodes == 4) forEachPointOf<Dim, 4>(h, reg, u_local, fn, first, last);
-  else if (h.degree == 1 && h.nodes == 8) forEachPointOf<Dim, 8>(h, reg, u_local, fn, first, last);
-  else forEachPointOf<Dim, 0>(h, reg, u_local, fn, first, last);
+  // Degree 1: triangles (3 nodes), quadrilaterals and tetrahedra (4), hexahedra (8).
+  if (h.degree > 1) forEachPointOf<Dim, 0>(h, reg, u_local, fn, first, last);
+  else if (h.nodes == 3) forEachPointOf<Dim, 3>(h, reg, u_local, fn, first, last);
+  else if (h.nodes == 4) forEachPointOf<Dim, 4>(h, reg, u_local, fn, first, last);
+  else forEachPointOf<Dim, 8>(h, reg, u_local, fn, first, last);
+}
+
+// f_local += vol B^T T at a point of a degree-1 element of Nen nodes (dN: the point's shape
+// gradients), its loops unrolled.
+template <int Dim, int Nen>
+void scatterLinear(const double *dN, const PetscInt *dofs, const double (*T)[3], double vol, PetscScalar *f_local) {
+  for (int a = 0; a < Nen; ++a)
+    for (int i = 0; i < Dim; ++i) {
+      double s = 0;
+      for (int j = 0; j < Dim; ++j) s += T[i][j] * dN[a * Dim + j];
+      f_local[dofs[a] + i] += vol * s;
+    }
 }
 
 // f_local += vol B^T T at point q of element k (T the symmetric stress tensor, row-major 3x3).
@@ -97,13 +108,11 @@ void scatter(const Hysteresis &h, const HystereticRegion &reg, size_t k, int q, 
   const PetscInt nen = h.nodes;
   const PetscInt *dofs = &reg.dofs[k * nen];
   if (h.degree == 1) {
+    // Triangles (3 nodes), quadrilaterals and tetrahedra (4), hexahedra (8).
     const double *dN = &reg.gradient[p * nen * Dim];
-    for (PetscInt a = 0; a < nen; ++a)
-      for (int i = 0; i < Dim; ++i) {
-        double s = 0;
-        for (int j = 0; j < Dim; ++j) s += T[i][j] * dN[a * Dim + j];
-        f_local[dofs[a] + i] += vol * s;
-      }
+    if (nen == 3) scatterLinear<Dim, 3>(dN, dofs, T, vol, f_local);
+    else if (nen == 4) scatterLinear<Dim, 4>(dN, dofs, T, vol, f_local);
+    else scatterLinear<Dim, 8>(dN, dofs, T, vol, f_local);
     return;
   }
   // dN_a/dxi_k(q) is nonzero only for the nodes a on line k through q: D[q_k][a_k].
