@@ -19,7 +19,7 @@ namespace slipwave::app {
 namespace {
 
 constexpr PetscInt kMagic   = 0x53574350; // "SWCP"
-constexpr PetscInt kVersion = 9; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
+constexpr PetscInt kVersion = 10; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
                                  // 4: state only (no RHS force parts, no attenuation trial);
                                  // 5: the scene options after the header, a seal at the end;
                                  // 6: the pore pressure state and the ledger's fluid terms;
@@ -29,6 +29,8 @@ constexpr PetscInt kVersion = 9; // 2: ledger with `anelastic`, attenuation memo
                                  //    (a free-field column beside hysteretic soil appends its Iwan
                                  //    states to its record; a linear column's record is unchanged)
                                  // 9: the pore pressure's cavities and the ledger's cavitation work
+                                 // 10: each hysteretic point's state opens with a header (its
+                                 //    tail, physics/hysteretic_soil.hpp)
 constexpr PetscInt kHeader  = 10;
 
 // The ledger as a flat array, in a fixed order.

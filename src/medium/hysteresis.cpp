@@ -30,18 +30,22 @@ void strainOf(const double (*G)[3], double *eps) {
   }
 }
 
-// Node a of an element with node q's index k replaced by m (lexicographic, x fastest).
-inline int along(int q, int k, int m, int n1) {
-  const int stride = k == 0 ? 1 : (k == 1 ? n1 : n1 * n1);
-  return q + (m - (q / stride) % n1) * stride;
-}
+// A point of an element of degree p > 1 (a GLL node, lexicographic, x fastest): its index
+// along each axis and the node stride of each axis, so that the node on line k through it
+// with index m along k is node + (m - along[k]) stride[k].
+struct LinePoint {
+  int node, along[3], stride[3];
+  LinePoint(int q, int n1) : node(q), along{q % n1, (q / n1) % n1, q / (n1 * n1)}, stride{1, n1, n1 * n1} {}
+  int on(int k, int m) const { return node + (m - along[k]) * stride[k]; }
+};
 
 // Runs fn(point index, element index k, point in the element, w |det J|, strain) over the
 // points of the region's elements k in [first, last) on this rank (default: all of them).
-template <int Dim, class Fn>
-void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first = 0, size_t last = SIZE_MAX) {
+// Nen: the nodes of a degree-1 element (its loops unrolled), or 0 at degree p > 1.
+template <int Dim, int Nen, class Fn>
+void forEachPointOf(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first, size_t last) {
   constexpr int  kStrain = physics::HystereticLayout<Dim>::kStrain;
-  const PetscInt nen = h.nodes, nq = reg.points;
+  const PetscInt nen = Nen ? Nen : h.nodes, nq = reg.points;
   const int      n1  = (int)h.degree + 1;
   std::vector<double> u((size_t)nen * Dim);
   for (size_t k = first; k < std::min(last, reg.dofs.size() / nen); ++k) {
@@ -50,20 +54,20 @@ void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscS
     for (PetscInt q = 0; q < nq; ++q) {
       const size_t p = k * nq + q;
       double       G[3][3] = {};
-      if (h.degree == 1) {
+      if constexpr (Nen > 0) {
         const double *dN = &reg.gradient[p * nen * Dim];
         for (PetscInt a = 0; a < nen; ++a)
           for (int i = 0; i < Dim; ++i)
             for (int j = 0; j < Dim; ++j) G[i][j] += u[a * Dim + i] * dN[a * Dim + j];
       } else {
         // du_i/dxi_k by the GLL derivative matrix along line k through q, then dxi/dx.
-        const double *Jinv = &reg.jinv[p * Dim * Dim];
+        const double   *Jinv = &reg.jinv[p * Dim * Dim];
+        const LinePoint lp((int)q, n1);
         for (int k2 = 0; k2 < Dim; ++k2) {
-          const int    qk  = k2 == 0 ? (int)q % n1 : (k2 == 1 ? ((int)q / n1) % n1 : (int)q / (n1 * n1));
-          const double *Dq = &h.derivative[qk * n1];
-          double       du[Dim] = {};
+          const double *Dq = &h.derivative[lp.along[k2] * n1];
+          double        du[Dim] = {};
           for (int m = 0; m < n1; ++m) {
-            const int a = along((int)q, k2, m, n1);
+            const int a = lp.on(k2, m);
             for (int i = 0; i < Dim; ++i) du[i] += Dq[m] * u[a * Dim + i];
           }
           for (int i = 0; i < Dim; ++i)
@@ -77,24 +81,44 @@ void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscS
   }
 }
 
+template <int Dim, class Fn>
+void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first = 0, size_t last = SIZE_MAX) {
+  // Degree 1: triangles (3 nodes), quadrilaterals and tetrahedra (4), hexahedra (8).
+  if (h.degree > 1) forEachPointOf<Dim, 0>(h, reg, u_local, fn, first, last);
+  else if (h.nodes == 3) forEachPointOf<Dim, 3>(h, reg, u_local, fn, first, last);
+  else if (h.nodes == 4) forEachPointOf<Dim, 4>(h, reg, u_local, fn, first, last);
+  else forEachPointOf<Dim, 8>(h, reg, u_local, fn, first, last);
+}
+
+// f_local += vol B^T T at a point of a degree-1 element of Nen nodes (dN: the point's shape
+// gradients), its loops unrolled.
+template <int Dim, int Nen>
+void scatterLinear(const double *dN, const PetscInt *dofs, const double (*T)[3], double vol, PetscScalar *f_local) {
+  for (int a = 0; a < Nen; ++a)
+    for (int i = 0; i < Dim; ++i) {
+      double s = 0;
+      for (int j = 0; j < Dim; ++j) s += T[i][j] * dN[a * Dim + j];
+      f_local[dofs[a] + i] += vol * s;
+    }
+}
+
 // f_local += vol B^T T at point q of element k (T the symmetric stress tensor, row-major 3x3).
 template <int Dim>
 void scatter(const Hysteresis &h, const HystereticRegion &reg, size_t k, int q, size_t p, const double (*T)[3], double vol, PetscScalar *f_local) {
   const PetscInt nen = h.nodes;
   const PetscInt *dofs = &reg.dofs[k * nen];
   if (h.degree == 1) {
+    // Triangles (3 nodes), quadrilaterals and tetrahedra (4), hexahedra (8).
     const double *dN = &reg.gradient[p * nen * Dim];
-    for (PetscInt a = 0; a < nen; ++a)
-      for (int i = 0; i < Dim; ++i) {
-        double s = 0;
-        for (int j = 0; j < Dim; ++j) s += T[i][j] * dN[a * Dim + j];
-        f_local[dofs[a] + i] += vol * s;
-      }
+    if (nen == 3) scatterLinear<Dim, 3>(dN, dofs, T, vol, f_local);
+    else if (nen == 4) scatterLinear<Dim, 4>(dN, dofs, T, vol, f_local);
+    else scatterLinear<Dim, 8>(dN, dofs, T, vol, f_local);
     return;
   }
   // dN_a/dxi_k(q) is nonzero only for the nodes a on line k through q: D[q_k][a_k].
-  const int     n1   = (int)h.degree + 1;
-  const double *Jinv = &reg.jinv[p * Dim * Dim];
+  const int       n1   = (int)h.degree + 1;
+  const double   *Jinv = &reg.jinv[p * Dim * Dim];
+  const LinePoint lp(q, n1);
   for (int k2 = 0; k2 < Dim; ++k2) {
     double S[Dim];
     for (int i = 0; i < Dim; ++i) {
@@ -102,10 +126,9 @@ void scatter(const Hysteresis &h, const HystereticRegion &reg, size_t k, int q, 
       for (int j = 0; j < Dim; ++j) S[i] += T[i][j] * Jinv[k2 * Dim + j];
       S[i] *= vol;
     }
-    const int     qk = k2 == 0 ? q % n1 : (k2 == 1 ? (q / n1) % n1 : q / (n1 * n1));
-    const double *Dq = &h.derivative[qk * n1];
+    const double *Dq = &h.derivative[lp.along[k2] * n1];
     for (int m = 0; m < n1; ++m) {
-      const PetscInt a = dofs[along(q, k2, m, n1)];
+      const PetscInt a = dofs[lp.on(k2, m)];
       for (int i = 0; i < Dim; ++i) f_local[a + i] += Dq[m] * S[i];
     }
   }
@@ -128,17 +151,33 @@ void relaxationStress(const HystereticRegion &reg, const double *eps, const doub
   }
 }
 
-// f_local += scale f_relax of the region, its states read from state_in and, unless null,
-// updated into state_out.
+// A point's state: its header and its plastic strains (physics/hysteretic_soil.hpp).
+struct PointState {
+  const double *header, *plastic;
+};
+
+// The committed state of point p: the stored one, or, while the states wait for the strains
+// of the accepted step (h.pending), a copy of it brought to its strain in `buffer` (the same
+// update the next force makes in place, so that it is the same bits).
 template <int Dim>
-void regionForce(const Hysteresis &h, const HystereticRegion &reg, const double *state_in, double *state_out, const PetscScalar *u_local, double scale, PetscScalar *f_local) {
+PointState committedState(const Hysteresis &h, const HystereticRegion &reg, size_t p, std::vector<double> &buffer) {
+  constexpr int kHeader = physics::HystereticLayout<Dim>::kPlastic;
+  const int     size    = physics::hystereticStateSize<Dim>(*reg.model) - kHeader;
+  const double *header = &reg.header[p * kHeader], *plastic = &reg.plastic[p * size];
+  if (!h.pending) return {header, plastic};
+  buffer.resize(kHeader + size);
+  physics::hystereticUpdate<Dim>(*reg.model, header, plastic, &reg.strain[p * physics::HystereticLayout<Dim>::kStrain], nullptr, buffer.data(), buffer.data() + kHeader);
+  return {buffer.data(), buffer.data() + kHeader};
+}
+
+// f_local += scale f_relax of the region, the Iwan stress of each point from stress(p, eps,
+// sigma).
+template <int Dim, class Stress>
+void regionForce(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, double scale, PetscScalar *f_local, Stress stress) {
   constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
-  const int     size    = physics::hystereticStateSize<Dim>(*reg.model);
   forEachPoint<Dim>(h, reg, u_local, [&](size_t p, size_t k, int q, double vol, const double *eps) {
     double sigma[kStress], r[6];
-    // (Its return, the plastic work of the update, is not booked: the ledger's dissipation is
-    // the work against the relaxation force plus E_r, closed to round-off; energy_ledger.hpp.)
-    physics::hystereticUpdate<Dim>(*reg.model, &state_in[p * size], eps, sigma, state_out ? &state_out[p * size] : nullptr);
+    stress(p, eps, sigma);
     relaxationStress<Dim>(reg, eps, sigma, r);
     // Tensor rows (xx, xy, xz), (xy, yy, yz), (xz, yz, zz) of r.
     const double T[3][3] = {{r[0], r[3], r[5]}, {r[3], r[1], r[4]}, {r[5], r[4], r[2]}};
@@ -146,17 +185,72 @@ void regionForce(const Hysteresis &h, const HystereticRegion &reg, const double 
   });
 }
 
+// Points ahead whose plastic strains are fetched early.
+constexpr size_t kAhead = 6;
+
+// HysteresisForce of one region: each point's state first brought to the accepted step's strain
+// in place (when `settle`), then the stress of the new strain evaluated from it (nothing
+// written), the strain kept. One pass, each state read once and only the elements that yield
+// written: the step is bound by this traffic (docs/performance.md).
 template <int Dim>
-double relaxationEnergy(const Hysteresis *h, const PetscScalar *u_local) {
-  double sum = 0;
+void trialForce(const Hysteresis &h, HystereticRegion &reg, bool settle, const PetscScalar *u_local, PetscScalar *f_local) {
+  constexpr int kStrain = physics::HystereticLayout<Dim>::kStrain, kHeader = physics::HystereticLayout<Dim>::kPlastic;
+  const int     size    = physics::hystereticStateSize<Dim>(*reg.model) - kHeader;
+  const size_t  points  = reg.volume.size();
+  const int     n       = reg.model->surfaces();
+  regionForce<Dim>(h, reg, u_local, 1.0, f_local, [&](size_t p, const double *eps, double *sigma) {
+    double *header = &reg.header[p * kHeader], *plastic = &reg.plastic[p * size], *strain = &reg.strain[p * kStrain];
+    // The headers stream; the plastic strains of a point with a head are hundreds of bytes
+    // from the last one's: ask for them a few points ahead, or each such point waits for memory.
+    if (p + kAhead < points && reg.header[(p + kAhead) * kHeader + physics::HystereticLayout<Dim>::kHead] > 0)
+      for (int c = 0; c < physics::HystereticLayout<Dim>::kDeviator; ++c) __builtin_prefetch(&reg.plastic[(p + kAhead) * size + c * n], 1);
+    // (The update's return, the plastic work, is not booked: the ledger's dissipation is the
+    // work against the relaxation force plus E_r, closed to round-off; energy_ledger.hpp.)
+    if (settle) physics::hystereticUpdate<Dim>(*reg.model, header, plastic, strain, nullptr, header, plastic);
+    physics::hystereticUpdate<Dim>(*reg.model, header, plastic, eps, sigma, nullptr, nullptr);
+    std::copy(eps, eps + kStrain, strain);
+  });
+}
+
+// f_local += scale f_relax of the region from its committed states (evaluated, not updated).
+template <int Dim>
+void committedForce(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, double scale, PetscScalar *f_local) {
+  std::vector<double> buffer;
+  regionForce<Dim>(h, reg, u_local, scale, f_local, [&](size_t p, const double *eps, double *sigma) {
+    const PointState state = committedState<Dim>(h, reg, p, buffer);
+    physics::hystereticUpdate<Dim>(*reg.model, state.header, state.plastic, eps, sigma, nullptr, nullptr);
+  });
+}
+
+// Brings every point's state to its pending strain in place: what the next force would do
+// first, done now for a reader of every state (the same update, so the same bits).
+template <int Dim>
+void settle(Hysteresis *h) {
+  constexpr int kStrain = physics::HystereticLayout<Dim>::kStrain, kHeader = physics::HystereticLayout<Dim>::kPlastic;
+  if (!h->pending) return;
+  for (HystereticRegion &reg : h->regions) {
+    const size_t size = physics::hystereticStateSize<Dim>(*reg.model) - kHeader;
+    for (size_t p = 0; p < reg.volume.size(); ++p) {
+      double *header = &reg.header[p * kHeader], *plastic = &reg.plastic[p * size];
+      physics::hystereticUpdate<Dim>(*reg.model, header, plastic, &reg.strain[p * kStrain], nullptr, header, plastic);
+    }
+  }
+  h->pending = false;
+}
+
+template <int Dim>
+double relaxationEnergy(Hysteresis *h, const PetscScalar *u_local) {
+  double              sum = 0;
+  std::vector<double> buffer;
+  settle<Dim>(h);
   for (const HystereticRegion &reg : h->regions) {
-    const int size = physics::hystereticStateSize<Dim>(*reg.model);
     forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t, int, double vol, const double *eps) {
       double tr = 0, ee = 0;
       for (int c = 0; c < Dim; ++c) tr += eps[c];
       for (int c = 0; c < physics::HystereticLayout<Dim>::kStrain; ++c) ee += (c < 3 && c < Dim ? 1.0 : 2.0) * eps[c] * eps[c];
-      const double linear = 0.5 * reg.lambda * tr * tr + reg.mu * ee;
-      sum += vol * (linear - physics::hystereticStoredEnergy<Dim>(*reg.model, &reg.committed[p * size], eps));
+      const double     linear = 0.5 * reg.lambda * tr * tr + reg.mu * ee;
+      const PointState state  = committedState<Dim>(*h, reg, p, buffer);
+      sum += vol * (linear - physics::hystereticStoredEnergy<Dim>(*reg.model, state.header, state.plastic, eps));
     });
   }
   return sum;
@@ -166,19 +260,20 @@ double relaxationEnergy(const Hysteresis *h, const PetscScalar *u_local) {
 // their largest strain, per element, at the committed state.
 template <int Dim>
 void elementFields(const HystereticRegion &reg, const Hysteresis &h, const PetscScalar *u_local, size_t first, size_t last, double *mean, double *largest) {
-  constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
-  const int     size    = physics::hystereticStateSize<Dim>(*reg.model);
+  constexpr int       kStress = physics::HystereticLayout<Dim>::kStress;
+  std::vector<double> buffer;
   std::fill(mean, mean + 6 * (last - first), 0.0);
   std::fill(largest, largest + (last - first), 0.0);
   forEachPoint<Dim>(
     h, reg, u_local,
     [&](size_t p, size_t k, int, double, const double *eps) {
-      double sigma[kStress], r[6];
+      double        sigma[kStress], r[6];
+      const PointState state = committedState<Dim>(h, reg, p, buffer);
       // Evaluate only (no state out): the committed state stays as it is.
-      physics::hystereticUpdate<Dim>(*reg.model, &reg.committed[p * size], eps, sigma, nullptr);
+      physics::hystereticUpdate<Dim>(*reg.model, state.header, state.plastic, eps, sigma, nullptr, nullptr);
       relaxationStress<Dim>(reg, eps, sigma, r);
       for (int j = 0; j < 6; ++j) mean[6 * (k - first) + j] += r[j] / reg.points;
-      largest[k - first] = std::max(largest[k - first], physics::maxShearStrain<Dim>(*reg.model, &reg.committed[p * size]));
+      largest[k - first] = std::max(largest[k - first], physics::maxShearStrain<Dim>(*reg.model, state.header));
     },
     first, last);
 }
@@ -272,7 +367,7 @@ PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector
             const double *Dq = &h->derivative[qk * n1];
             weight *= w[qk];
             for (int m = 0; m < n1; ++m)
-              for (int i = 0; i < dim; ++i) J[i][k] += Dq[m] * xe[along(q, k, m, n1) * dim + i];
+              for (int i = 0; i < dim; ++i) J[i][k] += Dq[m] * xe[LinePoint(q, n1).on(k, m) * dim + i];
           }
           const double det = numerics::invertJacobian((int)dim, J, Jinv);
           for (int k = 0; k < dim; ++k)
@@ -310,8 +405,10 @@ PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector
       }
     }
     const int size = dim == 2 ? physics::hystereticStateSize<2>(*reg.model) : physics::hystereticStateSize<3>(*reg.model);
-    reg.committed.assign(reg.volume.size() * size, 0.0);
-    reg.trial = reg.committed;
+    const int header = dim == 2 ? physics::HystereticLayout<2>::kPlastic : physics::HystereticLayout<3>::kPlastic;
+    reg.header.assign(reg.volume.size() * header, 0.0);
+    reg.plastic.assign(reg.volume.size() * (size - header), 0.0);
+    reg.strain.assign(reg.volume.size() * (dim == 2 ? physics::HystereticLayout<2>::kStrain : physics::HystereticLayout<3>::kStrain), 0.0);
     h->regions.push_back(std::move(reg));
   }
   *out = h;
@@ -327,48 +424,62 @@ PetscErrorCode HysteresisDestroy(Hysteresis **h) {
 
 void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local) {
   for (HystereticRegion &reg : h->regions) {
-    if (h->dim == 2) regionForce<2>(*h, reg, reg.committed.data(), reg.trial.data(), u_local, 1.0, f_local);
-    else regionForce<3>(*h, reg, reg.committed.data(), reg.trial.data(), u_local, 1.0, f_local);
+    if (h->dim == 2) trialForce<2>(*h, reg, h->pending, u_local, f_local);
+    else trialForce<3>(*h, reg, h->pending, u_local, f_local);
   }
+  h->pending   = false;
   h->has_trial = true;
 }
 
 void HysteresisAddRegionForce(const Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local) {
   for (const HystereticRegion &reg : h->regions) {
     if (reg.region != region) continue;
-    if (h->dim == 2) regionForce<2>(*h, reg, reg.committed.data(), nullptr, u_local, scale, f_local);
-    else regionForce<3>(*h, reg, reg.committed.data(), nullptr, u_local, scale, f_local);
+    if (h->dim == 2) committedForce<2>(*h, reg, u_local, scale, f_local);
+    else committedForce<3>(*h, reg, u_local, scale, f_local);
   }
 }
 
 void HysteresisCommit(Hysteresis *h) {
   if (!h || !h->has_trial) return;
-  for (HystereticRegion &reg : h->regions) reg.committed.swap(reg.trial);
+  h->pending   = true;
   h->has_trial = false;
 }
 
+// Checkpoints hold each point's state as one array (header, then plastic strains).
 std::vector<double> HysteresisState(const Hysteresis *h) {
-  std::vector<double> s;
-  for (const HystereticRegion &reg : h->regions) s.insert(s.end(), reg.committed.begin(), reg.committed.end());
+  std::vector<double> s, buffer;
+  for (const HystereticRegion &reg : h->regions) {
+    const size_t header = reg.header.size() / reg.volume.size(), size = reg.plastic.size() / reg.volume.size();
+    for (size_t p = 0; p < reg.volume.size(); ++p) {
+      const PointState state = h->dim == 2 ? committedState<2>(*h, reg, p, buffer) : committedState<3>(*h, reg, p, buffer);
+      s.insert(s.end(), state.header, state.header + header);
+      s.insert(s.end(), state.plastic, state.plastic + size);
+    }
+  }
   return s;
 }
 
 PetscInt HysteresisStateSize(const Hysteresis *h) {
   size_t n = 0;
-  for (const HystereticRegion &reg : h->regions) n += reg.committed.size();
+  for (const HystereticRegion &reg : h->regions) n += reg.header.size() + reg.plastic.size();
   return (PetscInt)n;
 }
 
 void HysteresisSetState(Hysteresis *h, const std::vector<double> &s) {
-  size_t o = 0;
+  auto o = s.begin();
   for (HystereticRegion &reg : h->regions) {
-    std::copy(s.begin() + o, s.begin() + o + reg.committed.size(), reg.committed.begin());
-    o += reg.committed.size();
+    const size_t header = reg.header.size() / reg.volume.size(), size = reg.plastic.size() / reg.volume.size();
+    for (size_t p = 0; p < reg.volume.size(); ++p) {
+      std::copy_n(o, header, reg.header.begin() + p * header);
+      std::copy_n(o + header, size, reg.plastic.begin() + p * size);
+      o += header + size;
+    }
   }
+  h->pending   = false;
   h->has_trial = false;
 }
 
-double HysteresisRelaxationEnergy(const Hysteresis *h, const PetscScalar *u_local) { return h->dim == 2 ? relaxationEnergy<2>(h, u_local) : relaxationEnergy<3>(h, u_local); }
+double HysteresisRelaxationEnergy(Hysteresis *h, const PetscScalar *u_local) { return h->dim == 2 ? relaxationEnergy<2>(h, u_local) : relaxationEnergy<3>(h, u_local); }
 
 void HysteresisCellFields(const Hysteresis *h, const PetscScalar *u_local, double *relaxation, double *max_strain, double *modulus_ratio) {
   if (h->dim == 2) cellFields<2>(h, u_local, relaxation, max_strain, modulus_ratio);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #ifdef __AVX__
 #include <immintrin.h>
 #endif
@@ -137,6 +138,8 @@ HystereticSoilModel::HystereticSoilModel(double shear_modulus, double bulk_modul
     radius_[j] = yield_strain_[j] / std::sqrt(2.0); // |e - p| of simple shear gamma: gamma / sqrt(2)
     strength_ += modulus_[j] * yield_strain_[j];
   }
+  tail_modulus_.assign(n + 1, 0.0);
+  for (int j = n - 1; j >= 0; --j) tail_modulus_[j] = tail_modulus_[j + 1] + twice_modulus_[j];
 }
 
 double HystereticSoilModel::backboneStress(double gamma) const {
@@ -206,99 +209,194 @@ inline Lanes laneSqrt(Lanes x) {
 #endif
 }
 
-// Element i of the scalar remainder: returns its dissipation, adds its stress 2 G_i d to s.
+// An element counts as elastic in a tail only with this share of its radius to spare: the
+// slack and the strains are rounded, and the tail must not hold an element that a sweep would
+// return by more than round-off.
+constexpr double kSlackShare = 1 - 1e-12;
+// Groups of four elements of the largest model (1000 surfaces), the remainder one more.
+constexpr int kMaxGroups = 1000 / 4 + 1;
+
+// Element i of the scalar remainder: returns its dissipation, adds its stress 2 G_i d to s and,
+// with slack, lowers *slack to its r_i - |e - p_i| after the update (-1 if it yields).
 template <int Dim>
-inline double updateElement(int n, int i, double two_g, double r, const double *e, const double *state_in, double *state_out, double *s) {
+inline double updateElement(int n, int i, double two_g, double r, const double *e, const double *p_in, double *p_out, double *s, double *slack) {
   constexpr int kDev = HystereticLayout<Dim>::kDeviator;
   double        d[kDev], dissipation = 0;
-  for (int c = 0; c < kDev; ++c) d[c] = e[c] - state_in[c * n + i];
+  for (int c = 0; c < kDev; ++c) d[c] = e[c] - p_in[c * n + i];
   const double n2 = contracted<Dim>(d);
   if (n2 > r * r) {
     // Radial return onto |d| = r: p moves along d by |d| - r.
     const double norm = std::sqrt(n2), scale = r / norm;
     for (int c = 0; c < kDev; ++c) {
       d[c] *= scale;
-      if (state_out) state_out[c * n + i] = e[c] - d[c];
+      if (p_out) p_out[c * n + i] = e[c] - d[c];
     }
     dissipation = two_g * r * (norm - r);
-  } else if (state_out && state_out != state_in) {
-    for (int c = 0; c < kDev; ++c) state_out[c * n + i] = state_in[c * n + i];
+    if (slack) *slack = -1;
+  } else if (slack) {
+    *slack = std::min(*slack, r * kSlackShare - std::sqrt(n2));
   }
   for (int c = 0; c < kDev; ++c) s[c] += two_g * d[c];
   return dissipation;
 }
 
-} // namespace
-
+// Elements [0, end) (end a multiple of four, or N) at the deviatoric strain e: their stress
+// sum 2 G_i (e - p_i) into s, their dissipation returned; with p_out (p_in itself) the ones
+// that yield are returned onto their surface in place; with slack, per group of four (and the
+// remainder) the smallest r_i - |e - p_i| after the update, -1 where one yields.
 template <int Dim>
-double hystereticUpdate(const HystereticSoilModel &model, const double *state_in, const double *strain, double *stress, double *state_out) {
+double sweep(const HystereticSoilModel &model, const double *p_in, double *p_out, const double *e, int end, double *s, double *slack) {
   constexpr int kDev = HystereticLayout<Dim>::kDeviator;
   const int     n = model.surfaces();
   const double *two_g = model.twiceModulus(), *radius = model.radius();
-  double        e[kDev];
-  const double  tr = deviator<Dim>(strain, e);
   Lanes         e4[kDev], s4[kDev], dissipation4 = broadcast(0);
   for (int c = 0; c < kDev; ++c) {
     e4[c] = broadcast(e[c]);
     s4[c] = broadcast(0);
   }
-  int i = 0;
-  for (; i + 4 <= n; i += 4) {
+  int i = 0, g = 0;
+  for (; i + 4 <= end; i += 4, ++g) {
     Lanes d[kDev];
-    for (int c = 0; c < kDev; ++c) d[c] = e4[c] - loadLanes(state_in + c * n + i);
+    for (int c = 0; c < kDev; ++c) d[c] = e4[c] - loadLanes(p_in + c * n + i);
     const Lanes zz = d[0] + d[1];
     Lanes       shear = d[2] * d[2];
     if constexpr (Dim == 3) shear += d[3] * d[3] + d[4] * d[4];
     const Lanes n2 = d[0] * d[0] + d[1] * d[1] + zz * zz + 2 * shear;
     const Lanes r = loadLanes(radius + i), g2 = loadLanes(two_g + i);
     const Mask  yields = n2 > r * r;
+    Lanes       spare = broadcast(-1);
     if (yields[0] | yields[1] | yields[2] | yields[3]) {
       // Radial return of the yielding lanes onto |d| = r (scale 1 and no dissipation elsewhere).
       const Lanes norm = laneSqrt(n2);
       const Lanes scale = yields ? r / norm : broadcast(1), excess = yields ? norm - r : broadcast(0);
       for (int c = 0; c < kDev; ++c) {
-        const Lanes p_old = loadLanes(state_in + c * n + i);
+        const Lanes p_old = loadLanes(p_in + c * n + i);
         d[c] *= scale;
-        if (state_out) storeLanes(state_out + c * n + i, yields ? e4[c] - d[c] : p_old);
+        if (p_out) storeLanes(p_out + c * n + i, yields ? e4[c] - d[c] : p_old);
       }
       dissipation4 += g2 * r * excess;
-    } else if (state_out && state_out != state_in) {
-      for (int c = 0; c < kDev; ++c) storeLanes(state_out + c * n + i, loadLanes(state_in + c * n + i));
+      if (slack) spare = yields ? broadcast(-1) : r * kSlackShare - norm;
+    } else if (slack) {
+      spare = r * kSlackShare - laneSqrt(n2);
     }
+    if (slack) slack[g] = std::min(std::min(spare[0], spare[1]), std::min(spare[2], spare[3]));
     for (int c = 0; c < kDev; ++c) s4[c] += g2 * d[c];
   }
-  double s[kDev], dissipation = dissipation4[0] + dissipation4[1] + dissipation4[2] + dissipation4[3];
+  double dissipation = dissipation4[0] + dissipation4[1] + dissipation4[2] + dissipation4[3];
   for (int c = 0; c < kDev; ++c) s[c] = s4[c][0] + s4[c][1] + s4[c][2] + s4[c][3];
-  for (; i < n; ++i) dissipation += updateElement<Dim>(n, i, two_g[i], radius[i], e, state_in, state_out, s);
+  if (slack && i < end) slack[g] = std::numeric_limits<double>::infinity();
+  for (; i < end; ++i) dissipation += updateElement<Dim>(n, i, two_g[i], radius[i], e, p_in, p_out, s, slack ? &slack[g] : nullptr);
+  return dissipation;
+}
 
-  const double p = model.bulkModulus() * tr;
-  if constexpr (Dim == 2) {
-    stress[0] = p + s[0];
-    stress[1] = p + s[1];
-    stress[2] = s[2];
-    stress[3] = p - (s[0] + s[1]);
-  } else {
-    stress[0] = p + s[0];
-    stress[1] = p + s[1];
-    stress[2] = p - (s[0] + s[1]);
-    stress[3] = s[2];
-    stress[4] = s[3];
-    stress[5] = s[4];
+// After a sweep of every element to e, in place: the tail for the next updates. A tail from
+// element k = 4 g holds while |e' - e| <= m_k, the smallest slack from k on; it costs k element
+// visits per update and a sweep (about 1.5 N, the slacks' roots included) each time the strain
+// leaves it, every m_k / rate updates, with rate the drift of the strain per update measured
+// since the last sweep. The k of least cost k + 1.5 N rate / m_k is kept (N: no tail, a sweep
+// every update, 1.5 N).
+template <int Dim>
+void chooseTail(const HystereticSoilModel &model, double *state, const double *p, const double *e, double rate, const double *slack) {
+  using L = HystereticLayout<Dim>;
+  const int n = model.surfaces(), groups = n / 4;
+  double    best_cost = 1.5 * n, best_slack = 0, m = n % 4 ? slack[groups] : std::numeric_limits<double>::infinity();
+  int       best = n;
+  for (int g = groups; g >= 0 && m > 0; --g) {
+    if (g < groups) m = std::min(m, slack[g]);
+    if (4 * g == n || m <= 0) continue;
+    const double cost = 4 * g + 1.5 * n * rate / m;
+    if (cost <= best_cost) {
+      best_cost = cost;
+      best = 4 * g;
+      best_slack = m;
+    }
   }
-  if (state_out) state_out[kDev * n] = std::max(state_in[kDev * n], std::sqrt(2 * contracted<Dim>(e)));
+  state[L::kHead] = best;
+  state[L::kSlack] = best_slack;
+  state[L::kUpdates] = 0;
+  const double *two_g = model.twiceModulus();
+  for (int c = 0; c < L::kDeviator; ++c) {
+    double tail = 0;
+    for (int j = best; j < n; ++j) tail += two_g[j] * p[c * n + j];
+    state[L::kReference + c] = e[c];
+    state[L::kTailStress + c] = tail;
+  }
+  double energy = 0;
+  for (int j = best; j < n; ++j) {
+    double pj[L::kDeviator];
+    for (int c = 0; c < L::kDeviator; ++c) pj[c] = p[c * n + j];
+    energy += 0.5 * two_g[j] * contracted<Dim>(pj);
+  }
+  state[L::kTailEnergy] = energy;
+}
+
+} // namespace
+
+template <int Dim>
+double hystereticUpdate(const HystereticSoilModel &model, const double *state_in, const double *plastic_in, const double *strain, double *stress, double *state_out,
+                        double *plastic_out) {
+  using L = HystereticLayout<Dim>;
+  constexpr int kDev = L::kDeviator;
+  const int     n = model.surfaces();
+  if (state_out && state_out != state_in) {
+    std::copy(state_in, state_in + L::kPlastic, state_out);
+    state_in = state_out;
+  }
+  if (plastic_out && plastic_out != plastic_in) {
+    std::copy(plastic_in, plastic_in + kDev * n, plastic_out);
+    plastic_in = plastic_out;
+  }
+  double       e[kDev], drift[kDev];
+  const double tr = deviator<Dim>(strain, e);
+  for (int c = 0; c < kDev; ++c) drift[c] = e[c] - state_in[L::kReference + c];
+  const double slack = state_in[L::kSlack], drift2 = contracted<Dim>(drift);
+  const bool   tail_holds = drift2 <= slack * slack;
+  const int    head = tail_holds ? (int)state_in[L::kHead] : n;
+  double       s[kDev], group_slack[kMaxGroups];
+  const bool   refresh = state_out && !tail_holds;
+  const double dissipation = sweep<Dim>(model, plastic_in, plastic_out, e, head, s, refresh ? group_slack : nullptr);
+  if (tail_holds)
+    for (int c = 0; c < kDev; ++c) s[c] += model.tailModulus()[head] * e[c] - state_in[L::kTailStress + c];
+
+  if (stress) {
+    const double p = model.bulkModulus() * tr;
+    if constexpr (Dim == 2) {
+      stress[0] = p + s[0];
+      stress[1] = p + s[1];
+      stress[2] = s[2];
+      stress[3] = p - (s[0] + s[1]);
+    } else {
+      stress[0] = p + s[0];
+      stress[1] = p + s[1];
+      stress[2] = p - (s[0] + s[1]);
+      stress[3] = s[2];
+      stress[4] = s[3];
+      stress[5] = s[4];
+    }
+  }
+  if (state_out) {
+    state_out[L::kMaxStrain] = std::max(state_out[L::kMaxStrain], std::sqrt(2 * contracted<Dim>(e)));
+    if (tail_holds) state_out[L::kUpdates] += 1;
+    else chooseTail<Dim>(model, state_out, plastic_out, e, std::sqrt(drift2) / (state_out[L::kUpdates] + 1), group_slack);
+  }
   return dissipation;
 }
 
 template <int Dim>
-double hystereticStoredEnergy(const HystereticSoilModel &model, const double *state, const double *strain) {
-  constexpr int kDev = HystereticLayout<Dim>::kDeviator;
-  const int     n = model.surfaces();
-  double        e[kDev];
+double hystereticStoredEnergy(const HystereticSoilModel &model, const double *state, const double *plastic, const double *strain) {
+  using L = HystereticLayout<Dim>;
+  constexpr int kDev = L::kDeviator;
+  const int     n = model.surfaces(), head = (int)state[L::kHead];
+  double        e[kDev], tail[kDev];
   const double  tr = deviator<Dim>(strain, e);
-  double        w = 0.5 * model.bulkModulus() * tr * tr;
-  for (int i = 0; i < n; ++i) {
+  // e:P, the zz components -(xx + yy), the shears counted twice.
+  for (int c = 0; c < kDev; ++c) tail[c] = state[L::kTailStress + c];
+  double ep = e[0] * tail[0] + e[1] * tail[1] + (e[0] + e[1]) * (tail[0] + tail[1]);
+  for (int c = 2; c < kDev; ++c) ep += 2 * e[c] * tail[c];
+  double w = 0.5 * model.bulkModulus() * tr * tr + 0.5 * model.tailModulus()[head] * contracted<Dim>(e) - ep + state[L::kTailEnergy];
+  for (int i = 0; i < head; ++i) {
     double d[kDev];
-    for (int c = 0; c < kDev; ++c) d[c] = e[c] - state[c * n + i];
+    for (int c = 0; c < kDev; ++c) d[c] = e[c] - plastic[c * n + i];
     w += 0.5 * model.twiceModulus()[i] * contracted<Dim>(d);
   }
   return w;
@@ -331,10 +429,10 @@ double equivalentShearStress(const double *stress) {
   return std::sqrt(0.5 * contracted<Dim>(sd));
 }
 
-template double hystereticUpdate<2>(const HystereticSoilModel &, const double *, const double *, double *, double *);
-template double hystereticUpdate<3>(const HystereticSoilModel &, const double *, const double *, double *, double *);
-template double hystereticStoredEnergy<2>(const HystereticSoilModel &, const double *, const double *);
-template double hystereticStoredEnergy<3>(const HystereticSoilModel &, const double *, const double *);
+template double hystereticUpdate<2>(const HystereticSoilModel &, const double *, const double *, const double *, double *, double *, double *);
+template double hystereticUpdate<3>(const HystereticSoilModel &, const double *, const double *, const double *, double *, double *, double *);
+template double hystereticStoredEnergy<2>(const HystereticSoilModel &, const double *, const double *, const double *);
+template double hystereticStoredEnergy<3>(const HystereticSoilModel &, const double *, const double *, const double *);
 template double equivalentShearStrain<2>(const double *);
 template double equivalentShearStrain<3>(const double *);
 template double equivalentShearStress<2>(const double *);

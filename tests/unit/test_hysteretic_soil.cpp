@@ -349,7 +349,10 @@ void volumetricIsElastic() {
   unit::check(d == 0, "volumetric: no dissipation");
   unit::near(st[0], kBulk * ev, 1e-15, 0, "volumetric: sigma_xx = K tr(eps)");
   unit::check(st[0] == st[1] && st[1] == st[2] && st[3] == 0 && st[4] == 0 && st[5] == 0, "volumetric: isotropic stress");
-  unit::check(std::all_of(state.begin(), state.end(), [](double x) { return x == 0; }), "volumetric: the state stays virgin");
+  bool virgin = true;
+  for (int c = 0; c < HystereticLayout<3>::kDeviator; ++c)
+    for (int i = 0; i < m.surfaces(); ++i) virgin = virgin && plasticStrain<3>(m, state.data(), c, i) == 0;
+  unit::check(virgin && maxShearStrain<3>(m, state.data()) == 0, "volumetric: the plastic strains stay zero");
   // Shear to 2e-3, then compress on top.
   const double shear[6] = {0, 0, 0, 1e-3, 0, 0};
   double       st_shear[6];
@@ -363,7 +366,8 @@ void volumetricIsElastic() {
   unit::near(st[3], st_shear[3], 1e-14, 0, "volumetric on a sheared point: the shear stress unchanged");
   unit::near((st[0] + st[1] + st[2]) / 3, kBulk * ev, 1e-13, 0, "volumetric on a sheared point: mean stress K tr(eps)");
   bool same = true;
-  for (size_t k = 0; k + 1 < state.size(); ++k) same = same && std::fabs(state[k] - before[k]) <= 1e-18;
+  for (int c = 0; c < HystereticLayout<3>::kDeviator; ++c)
+    for (int i = 0; i < m.surfaces(); ++i) same = same && std::fabs(plasticStrain<3>(m, state.data(), c, i) - plasticStrain<3>(m, before.data(), c, i)) <= 1e-18;
   unit::check(same, "volumetric on a sheared point: the plastic strains unchanged");
 }
 
@@ -410,6 +414,109 @@ void callingConventions() {
   unit::near(m.secantModulusRatio(1e-3), backboneStress(mkzBackbone(5e-4), kGmax, 1e-3) / (kGmax * 1e-3), 0.02, 0, "secant G/Gmax of the model within the N-surface error");
 }
 
+// The tail (hysteretic_soil.hpp, "Cost"): the kernel visits only the elements that can yield,
+// so along any path it must give what the model's definition gives element by element. The
+// oracle below is that definition (every element's radial return, every update); a 3D path
+// that turns, with cycles from below the elastic limit to 3e-3 and pauses, must agree with it
+// to round-off in stress and plastic strains, the tail must have been used (a head short of N
+// on most updates), and an evaluation in the tail must be the update's stress bit for bit.
+template <int Dim>
+struct Oracle {
+  const HystereticSoilModel &model;
+  std::vector<double>        p;
+  explicit Oracle(const HystereticSoilModel &m) : model(m), p(HystereticLayout<Dim>::kDeviator * m.surfaces(), 0.0) {}
+  // The deviatoric stress s (kDeviator components) at the deviatoric strain e, p updated.
+  void update(const double *e, double *s) {
+    constexpr int kDev = HystereticLayout<Dim>::kDeviator;
+    const int     n = model.surfaces();
+    for (int c = 0; c < kDev; ++c) s[c] = 0;
+    for (int i = 0; i < n; ++i) {
+      double d[kDev], dd = 0;
+      for (int c = 0; c < kDev; ++c) d[c] = e[c] - p[c * n + i];
+      // d:d with d_zz = -(d_xx + d_yy) and the shears counted twice.
+      for (int c = 0; c < kDev; ++c) dd += (c < 2 ? 1.0 : 2.0) * d[c] * d[c];
+      dd += (d[0] + d[1]) * (d[0] + d[1]);
+      const double r = model.radius()[i];
+      if (dd > r * r)
+        for (int c = 0; c < kDev; ++c) {
+          d[c] *= r / std::sqrt(dd);
+          p[c * n + i] = e[c] - d[c];
+        }
+      for (int c = 0; c < kDev; ++c) s[c] += model.twiceModulus()[i] * d[c];
+    }
+  }
+};
+
+template <int Dim>
+void tailIsTheModel() {
+  using L = HystereticLayout<Dim>;
+  const HystereticSoilModel m(kGmax, kBulk, darendeliBackbone(DarendeliSoil{}));
+  std::vector<double>       state(hystereticStateSize<Dim>(m), 0.0);
+  Oracle<Dim>               oracle(m);
+  double                    worst_stress = 0, worst_plastic = 0, worst_energy = 0, scale = 0;
+  int                       held = 0, steps = 0;
+  double                    visits = 0;
+  bool                      same_bits = true;
+  for (int k = 1; k <= 6000; ++k, ++steps) {
+    // Cycles of 200 updates whose amplitude walks from 5e-7 to 3e-3 and back, the direction
+    // turning slowly, a pause (the same strain) every 500 updates.
+    const double t = k % 500 < 20 ? 500.0 * (k / 500) : k, amp = 3e-3 * std::pow(6e-4, 0.5 + 0.5 * std::cos(2 * M_PI * t / 3000));
+    const double a = amp * std::sin(2 * M_PI * t / 200), turn = 1e-3 * t;
+    double       strain[L::kStrain] = {}, e[L::kDeviator], stress[L::kStress], eval[L::kStress], s_ref[L::kDeviator];
+    strain[0] = 0.3 * a * std::cos(turn), strain[1] = -0.2 * a * std::sin(0.7 * turn);
+    if constexpr (Dim == 2) {
+      strain[2] = 0.5 * a;
+    } else {
+      strain[2] = 0.1 * a * std::sin(turn), strain[3] = 0.5 * a, strain[4] = 0.2 * a * std::cos(1.3 * turn), strain[5] = -0.15 * a;
+    }
+    const double head = state[L::kHead];
+    hystereticUpdate<Dim>(m, state.data(), strain, eval, nullptr);
+    hystereticUpdate<Dim>(m, state.data(), strain, stress, state.data());
+    // The update counter runs while the tail holds; a sweep of every element restarts it.
+    held += state[L::kUpdates] > 0;
+    visits += state[L::kUpdates] > 0 ? head : m.surfaces();
+    for (int c = 0; c < L::kStress; ++c) same_bits = same_bits && eval[c] == stress[c];
+    // The oracle's deviator: the kernel's stress less its mean part, in the state's components.
+    const double tr = Dim == 2 ? strain[0] + strain[1] : strain[0] + strain[1] + strain[2];
+    e[0] = strain[0] - tr / 3, e[1] = strain[1] - tr / 3;
+    if constexpr (Dim == 2) {
+      e[2] = strain[2];
+    } else {
+      e[2] = strain[3], e[3] = strain[4], e[4] = strain[5];
+    }
+    oracle.update(e, s_ref);
+    // The stored energy, its tail from the header: the oracle's K tr^2 / 2 + sum_i G_i |e - p_i|^2.
+    double w_ref = 0.5 * kBulk * tr * tr;
+    for (int i = 0; i < m.surfaces(); ++i) {
+      double d[L::kDeviator], dd = 0;
+      for (int c = 0; c < L::kDeviator; ++c) d[c] = e[c] - oracle.p[c * m.surfaces() + i];
+      for (int c = 0; c < L::kDeviator; ++c) dd += (c < 2 ? 1.0 : 2.0) * d[c] * d[c];
+      w_ref += 0.5 * m.twiceModulus()[i] * (dd + (d[0] + d[1]) * (d[0] + d[1]));
+    }
+    worst_energy = std::max(worst_energy, std::fabs(hystereticStoredEnergy<Dim>(m, state.data(), strain) - w_ref));
+    const double got[3] = {stress[0] - kBulk * tr, stress[1] - kBulk * tr, Dim == 2 ? stress[2] : stress[3]};
+    for (int c = 0; c < 3; ++c) worst_stress = std::max(worst_stress, std::fabs(got[c] - s_ref[c]));
+    if constexpr (Dim == 3) worst_stress = std::max({worst_stress, std::fabs(stress[4] - s_ref[3]), std::fabs(stress[5] - s_ref[4])});
+    scale = std::max(scale, kGmax * amp);
+    for (int c = 0; c < L::kDeviator; ++c)
+      for (int i = 0; i < m.surfaces(); ++i)
+        worst_plastic = std::max(worst_plastic, std::fabs(plasticStrain<Dim>(m, state.data(), c, i) - oracle.p[c * m.surfaces() + i]));
+  }
+  char what[240];
+  std::snprintf(what, sizeof what, "%dD tail = the model's definition over %d updates: stress within %.1e of 2 Gmax e, plastic strains within %.1e (of 3e-3)", Dim, steps,
+                worst_stress / scale, worst_plastic);
+  // Round-off: the tail's stress is one product T e - P instead of N terms (1e-15 relative
+  // each, N = 24 of them), and the plastic strains carry the returns' rounding.
+  unit::check(worst_stress <= 1e-12 * scale && worst_plastic <= 1e-15, what);
+  // The tail's energy T |e|^2 / 2 - e:P + E cancels: round-off of the terms, G (3e-3)^2 each.
+  std::snprintf(what, sizeof what, "%dD stored energy with the tail from the header: within %.1e of Gmax (3e-3)^2 of the definition's", Dim,
+                worst_energy / (kGmax * 9e-6));
+  unit::check(worst_energy <= 1e-12 * kGmax * 9e-6, what);
+  std::snprintf(what, sizeof what, "%dD the tail held on %d of %d updates; elements visited per update %.1f of %d", Dim, held, steps, visits / steps, m.surfaces());
+  unit::check(held > steps / 2, what);
+  unit::check(same_bits, "evaluate-only gives the in-place update's stress bit for bit, in the tail too");
+}
+
 // The element set: moduli >= 0 summing to Gmax, yield strains ascending from the elastic limit,
 // the state size, and the backbones it must refuse.
 void elementSet() {
@@ -424,7 +531,7 @@ void elementSet() {
   unit::check(ok, "element moduli >= 0, yield strains ascending");
   unit::check(m.elementYieldStrain()[0] >= 1e-6 && m.elementYieldStrain()[0] <= 1e-6 * (1 + 1e-12), "first yield at the elastic limit 1e-6");
   unit::check(m.surfaces() == 24 && (int)m.knotStrains().size() == 24, "default N = 24 surfaces");
-  unit::check(hystereticStateSize<2>(m) == 73 && hystereticStateSize<3>(m) == 121, "state: 3N + 1 doubles in 2D, 5N + 1 in 3D");
+  unit::check(hystereticStateSize<2>(m) == 83 && hystereticStateSize<3>(m) == 135, "state: 3N + 11 doubles in 2D, 5N + 15 in 3D");
   auto throws = [](auto f) {
     try {
       f();
@@ -479,6 +586,8 @@ int main() {
   volumetricIsElastic();
   elasticBelowLimit();
   callingConventions();
+  tailIsTheModel<2>();
+  tailIsTheModel<3>();
   elementSet();
   nonConcaveBackbones();
   return unit::failures();

@@ -9,6 +9,9 @@
 //  - free_field_site.yaml (free-field columns, Rayleigh damping, incident SV wave),
 //  - a saturated box (pore pressure, drained top, P wave): the pressure update is a trial
 //    state too, and p at the end must be bit for bit unchanged as well,
+//  - a hysteretic box (MKZ, every cell; SV wave of 0.5 m/s, strains to ~2e-3): the Iwan states
+//    are kept once and brought to the accepted step's strains by the next force
+//    (medium/hysteresis.hpp), so a probe must neither advance them nor leave its strain behind,
 // each stepped to t = 0.1 s (0.5 s) twice: plainly, and with two extra RHS evaluations before every
 // step at a state the run never takes (t_{n+2}, u_n + 1 mm of noise). A pure RHS leaves the
 // second run bit for bit equal to the first (u, v, interface totals); an RHS that committed
@@ -116,7 +119,12 @@ PetscErrorCode Run(bool) {
                                                        "-material_soil_porosity 0.4 -material_soil_hydraulic_conductivity 0.08 -mesh_box_faces 4,16 -mesh_box_upper 8,32 "
                                                        "-bc_bottom_type absorbing -input_wave p -input_boundary bottom -input_stf ricker -input_f0 10 -input_t0 0.12 "
                                                        "-input_amplitude 0.1 -bc_top_fluid drained",
-                                                       0.15}};
+                                                       0.15},
+                                                      {"-regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -material_soil_model hysteretic "
+                                                       "-material_soil_backbone mkz -material_soil_reference_strain 1e-3 -mesh_box_faces 8,16 -mesh_box_upper 16,32 "
+                                                       "-bc_bottom_type absorbing -input_wave sv -input_boundary bottom -input_stf ricker -input_f0 10 -input_t0 0.12 "
+                                                       "-input_amplitude 0.5",
+                                                       0.2}};
   for (const auto &[scene, t_end] : scenes) {
     Final plain, probed;
     PetscCall(runScene(scene, t_end, false, &plain));

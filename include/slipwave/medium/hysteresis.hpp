@@ -9,11 +9,17 @@
 // f_relax is zero (to round-off) while every surface is elastic, and it enters the
 // acceleration like the constant-Q memory forces (problem/nodal_acceleration.hpp).
 //
-// State: per point the kernel's plastic strains (hystereticStateSize doubles), committed
-// and trial: the force at (t, u) is computed from the committed state into the trial one, so
-// the RHS asked twice at one time gives the same force; HysteresisCommit, once the step is
-// accepted, makes the trial the committed state. Off during the geostatic stage (the soil
-// starts virgin with the dynamic stage, whose displacement starts from zero).
+// State: per point the kernel's state (hystereticStateSize doubles), kept once, and the strain
+// of the last force. The force at (t, u) evaluates the Iwan stresses from the committed states
+// without writing them, so the RHS asked twice at one time gives the same force, and keeps the
+// strains; HysteresisCommit, once the step is accepted, marks those strains as the states' next
+// (pending), and the next force first brings each point's state to its strain in place, in the
+// same pass: each state is read once per step and written only where an element yields, not
+// copied into a trial state (the step is bound by this traffic: docs/performance.md). Readers
+// of the committed state in between (ledger, output, stations, checkpoint) bring a copy of a
+// point's state to its strain, the same update, so they see the same bits. Off during the
+// geostatic stage (the soil starts virgin with the dynamic stage, whose displacement starts
+// from zero).
 //
 // Degree p > 1: the points are the elements' GLL nodes with the GLL weights, the quadrature
 // of the spectral K (collocated), so K u - f_relax is again exactly the Iwan stress's force.
@@ -50,7 +56,10 @@ struct HystereticRegion {
   // degree p > 1 dxi_k/dx_j (dim x dim; the basis gradients come from the GLL derivative
   // matrix along the lines through the node).
   std::vector<double>                                 volume, gradient, jinv;
-  std::vector<double>                                 committed, trial;   // the kernel states, point-major
+  // The kernel states, point-major, in two arrays: the headers (read every step, so kept
+  // together and streamed) and the plastic strains (read only where an element can yield).
+  std::vector<double>                                 header, plastic;
+  std::vector<double>                                 strain;             // per point: the strain of the last force
 };
 
 struct Hysteresis {
@@ -59,7 +68,8 @@ struct Hysteresis {
   std::vector<PetscInt>         cell_element;    // per local cell: its element (output)
   std::vector<std::pair<PetscInt, PetscInt>> element_place; // per element: (index in regions, index in its elements), or -1s
   std::vector<HystereticRegion> regions;
-  bool                          has_trial = false;
+  bool                          has_trial = false; // a force since the last commit
+  bool                          pending   = false; // committed: the states wait for the strains of the last force
 };
 
 // The Iwan model of a region on its element moduli (fe.lame: the unrelaxed ones in a damped
@@ -70,14 +80,14 @@ PetscErrorCode HystereticElementModel(const RegionMaterialInfo &m, std::shared_p
 PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector<RegionMaterialInfo> &materials, Hysteresis **out);
 PetscErrorCode HysteresisDestroy(Hysteresis **h);
 // f_local += f_relax from the ghosted displacement u_local (this rank's cells; the caller
-// assembles), the states going into the trial.
+// assembles), the strains kept for HysteresisCommit.
 void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_local);
 // f_local += scale f_relax of region `region` alone (a no-op for a region that is not
 // hysteretic), from the committed states (evaluated, not updated): at the u of the last
 // HysteresisForce, its contribution of that region. For the constant-Q drive of a damped
 // hysteretic region that does not cover the mesh (medium/attenuation.hpp).
 void HysteresisAddRegionForce(const Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local);
-// The trial of the last HysteresisForce becomes the committed state (no-op without one).
+// The strains of the last HysteresisForce become the committed state (no-op without one).
 void HysteresisCommit(Hysteresis *h);
 // Committed state for checkpoints: this rank's points' states, region by region. The size is fixed by the mesh and the models (a checkpoint of another
 // scene is refused before, by the displacement's size).
@@ -86,8 +96,9 @@ PetscInt            HysteresisStateSize(const Hysteresis *h);
 void                HysteresisSetState(Hysteresis *h, const std::vector<double> &state);
 // Sum over this rank's points of (1/2 eps:C:eps - Iwan stored energy) w |det J| at the
 // committed state and the ghosted displacement u_local: what the linear strain energy
-// 1/2 u.K u holds beyond the soil's stored energy (energy ledger).
-double HysteresisRelaxationEnergy(const Hysteresis *h, const PetscScalar *u_local);
+// 1/2 u.K u holds beyond the soil's stored energy (energy ledger). It reads every state, so it
+// brings them to their pending strains in place first (the next force then has none to bring).
+double HysteresisRelaxationEnergy(Hysteresis *h, const PetscScalar *u_local);
 // Output, per local cell of a hysteretic region (other cells untouched), at the committed
 // state and the ghosted displacement u_local: relaxation (6 per cell: xx, yy, zz, xy, yz, xz)
 // the mean over the cell's points of C:eps - sigma, what the linear cell stress holds beyond

@@ -20,6 +20,14 @@
 // (zero: the virgin, stress-free state), so a region keeps one flat vector of them, copied or
 // checkpointed as it is. The update is a pure function of (model, state, total strain): it may
 // write a trial state apart from the committed one, work in place, or only evaluate.
+//
+// Cost: a point only visits the elements that can yield. Each update that sweeps every element
+// also finds a tail of elements (from `head` on) that stay elastic while the strain stays
+// within a slack of this update's strain (triangle inequality: |e - p_j| <= |e - e_ref| +
+// |e_ref - p_j| <= r_j); the state keeps that reference, the slack and the tail's plastic
+// stress sum_{j >= head} 2 G_j p_j, so that while the strain stays within it the tail's stress
+// is one multiply-add and its elements are neither read nor written. The head is chosen from
+// the measured drift of the strain per update (HystereticSoilModel::tailModulus, .cpp).
 #pragma once
 #include <vector>
 
@@ -32,15 +40,21 @@ namespace slipwave::physics {
 //           Dim 2 (plane strain, eps_zz = eps_xz = eps_yz = 0): xx, yy, xy.
 //   stress, Dim 3: xx, yy, zz, xy, yz, xz; Dim 2: xx, yy, xy, zz (the in-plane ones first, in
 //           the strain's order; sigma_zz != 0 in plane strain).
-//   state:  the plastic strains p_i, component-major (c * N + i), in the deviatoric
-//           components xx, yy, xy [, yz, xz] (zz = -(xx + yy)), then the largest equivalent
-//           shear strain reached (output).
+//   state:  kHead (the first element of the tail, an integer), kSlack, kUpdates (updates since
+//           the last full sweep), the reference deviatoric strain (kReference, kDeviator
+//           values), the tail's plastic stress sum_{j >= head} 2 G_j p_j (kTailStress,
+//           kDeviator) and energy sum_{j >= head} G_j |p_j|^2 (kTailEnergy), the largest
+//           equivalent shear strain reached (kMaxStrain, output), then the plastic strains p_i
+//           from kPlastic on, component-major (c * N + i), all deviators in the components
+//           xx, yy, xy [, yz, xz] (zz = -(xx + yy)).
 template <int Dim>
 struct HystereticLayout {
   static_assert(Dim == 2 || Dim == 3, "plane strain (2) or 3D");
   static constexpr int kStrain = Dim == 2 ? 3 : 6;
   static constexpr int kStress = Dim == 2 ? 4 : 6;
   static constexpr int kDeviator = Dim == 2 ? 3 : 5;
+  static constexpr int kHead = 0, kSlack = 1, kUpdates = 2, kReference = 3;
+  static constexpr int kTailStress = kReference + kDeviator, kTailEnergy = kTailStress + kDeviator, kMaxStrain = kTailEnergy + 1, kPlastic = kMaxStrain + 1;
 };
 
 struct HystereticSurfaces {
@@ -81,35 +95,59 @@ public:
   // concave backbone; else how far the concave majorant moved it (the options layer may warn).
   double knotDeviation() const { return knot_deviation_; }
 
-  // Per-element constants of the update, 2 G_i and r_i = gamma_i / sqrt(2).
+  // Per-element constants of the update, 2 G_i and r_i = gamma_i / sqrt(2), and the tail's
+  // modulus sum_{j >= k} 2 G_j for k = 0..N (N + 1 values).
   const double *twiceModulus() const { return twice_modulus_.data(); }
   const double *radius() const { return radius_.data(); }
+  const double *tailModulus() const { return tail_modulus_.data(); }
 
 private:
   double              shear_modulus_, bulk_modulus_, strength_, knot_deviation_ = 0;
-  std::vector<double> knots_, modulus_, yield_strain_, twice_modulus_, radius_;
+  std::vector<double> knots_, modulus_, yield_strain_, twice_modulus_, radius_, tail_modulus_;
 };
 
-// Doubles per quadrature point: kDeviator * N + 1.
+// Doubles per quadrature point: kDeviator * (N + 2) + 5.
 template <int Dim>
 int hystereticStateSize(const HystereticSoilModel &model) {
-  return HystereticLayout<Dim>::kDeviator * model.surfaces() + 1;
+  return HystereticLayout<Dim>::kPlastic + HystereticLayout<Dim>::kDeviator * model.surfaces();
+}
+// Element i's plastic strain, component c, in a state.
+template <int Dim>
+double plasticStrain(const HystereticSoilModel &model, const double *state, int c, int i) {
+  return state[HystereticLayout<Dim>::kPlastic + c * model.surfaces() + i];
 }
 
-// The update. From the state state_in and the total strain, writes the stress and, unless
-// state_out is null, the new state (state_out == state_in is allowed). Returns the energy the
+// The update. From the state state_in and the total strain, writes the stress (unless stress
+// is null) and, unless state_out is null, the new state (state_out == state_in is allowed; the
+// stress is the same bits whether or not a state is written). Returns the energy the
 // elements dissipate per unit volume in this update, sum_i R_i |dp_i| with R_i = 2 G_i r_i the
 // element's yield stress (>= 0; exactly the plastic work in 1D, where the return is exact for
 // any monotone increment). The strain path between the two states is taken as straight (one
 // radial return per element: backward Euler, exact in 1D, first order for a path that turns).
+// The same with the state in two arrays: its header (the first kPlastic doubles, which every
+// update reads) and its plastic strains (read only for the elements that can yield), so that a
+// region can keep its points' headers together and stream them. state_out and plastic_out are
+// both null or both given (either may be its input).
 template <int Dim>
-double hystereticUpdate(const HystereticSoilModel &model, const double *state_in, const double *strain, double *stress, double *state_out);
+double hystereticUpdate(const HystereticSoilModel &model, const double *state_in, const double *plastic_in, const double *strain, double *stress, double *state_out,
+                        double *plastic_out);
+template <int Dim>
+double hystereticUpdate(const HystereticSoilModel &model, const double *state_in, const double *strain, double *stress, double *state_out) {
+  constexpr int kPlastic = HystereticLayout<Dim>::kPlastic;
+  return hystereticUpdate<Dim>(model, state_in, state_in + kPlastic, strain, stress, state_out, state_out ? state_out + kPlastic : nullptr);
+}
 
 // Energy stored per unit volume at (state, strain): K tr(eps)^2 / 2 + sum_i G_i |e - p_i|^2,
-// for a state that the update returned for this strain (then |e - p_i| <= r_i). Work done on a
-// point = change of this + the dissipation the updates return.
+// for a state that the update returned for this strain (then |e - p_i| <= r_i); the tail's
+// elements from its header (sum G_j |e - p_j|^2 = T |e|^2 / 2 - e:P + E). Work done on a
+// point = change of this + the dissipation the updates return. The state in two arrays as for
+// the update, or in one.
 template <int Dim>
-double hystereticStoredEnergy(const HystereticSoilModel &model, const double *state, const double *strain);
+double hystereticStoredEnergy(const HystereticSoilModel &model, const double *state, const double *plastic, const double *strain);
+template <int Dim>
+double hystereticStoredEnergy(const HystereticSoilModel &model, const double *state, const double *strain) {
+  return hystereticStoredEnergy<Dim>(model, state, state + HystereticLayout<Dim>::kPlastic, strain);
+}
 
 // Equivalent (octahedral-type) shear strain sqrt(2 e:e) of a strain (= |gamma| in simple
 // shear), and equivalent shear stress sqrt(s:s / 2) of a stress (= |tau| in simple shear).
@@ -119,8 +157,8 @@ template <int Dim>
 double equivalentShearStress(const double *stress);
 // The largest equivalent shear strain the point has reached (kept in its state).
 template <int Dim>
-double maxShearStrain(const HystereticSoilModel &model, const double *state) {
-  return state[HystereticLayout<Dim>::kDeviator * model.surfaces()];
+double maxShearStrain(const HystereticSoilModel &, const double *state) {
+  return state[HystereticLayout<Dim>::kMaxStrain];
 }
 // Mobilised strength: equivalent shear stress / strength (1 when every element yields).
 template <int Dim>
