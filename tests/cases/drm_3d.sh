@@ -14,13 +14,17 @@
 # Bounds (issue): 2 % relative L2 inside Omega; outside the layer below 1 % of the incident peak.
 set -eu
 . tests/tools/lib.sh
+. tests/tools/together.sh
 model="-mesh_dim 3 -regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -mesh_box_faces 50,50,25 -mesh_box_lower -50,-50,-50
  -mesh_box_upper 50,50,0 -bc_left_type absorbing -bc_right_type absorbing -bc_front_type absorbing -bc_back_type absorbing -bc_bottom_type absorbing
  -input_method drm -drm_incidence_angle 20 -drm_stf ricker -drm_f0 2 -drm_t0 0.6 -drm_amplitude 0.1 -ts_max_time 1.2
  -output_fields 0 -progress_interval 100000 -station_coordinates 0,0,0,10,-20,-25,30,30,0,-40,40,-40,-49.5,0,-25,0,0,-49.5,49.5,49.5,-10
  -station_names s0,s1,s2,s3,out1,out2,out3"
-$SW $model -drm_wave sh -drm_azimuth 30 -output_dir "$WORK/sh"
-$SW $model -drm_wave sv -drm_azimuth 120 -output_dir "$WORK/sv"
+# The two runs are independent (one rank each): side by side (tests/tools/together.sh).
+together $SW $model -drm_wave sh -drm_azimuth 30 -output_dir "$WORK/sh" > "$WORK/sh.log"
+together $SW $model -drm_wave sv -drm_azimuth 120 -output_dir "$WORK/sv" > "$WORK/sv.log"
+together_wait
+cat "$WORK/sh.log" "$WORK/sv.log"
 $PY - "$WORK" <<'PY'
 import sys
 import numpy as np

@@ -29,30 +29,30 @@ model="-regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soi
  -station_names s1,s2,s3,mid,left_in,right_in,base_in,left_out,right_out,base_out,corner_out,right_top_out"
 q="-material_soil_damping_ratio 0.05"
 r="-damping_ratio 0.05 -damping_frequencies 1,10"
-$SW $model $q -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/q_sv" > "$WORK/q_sv.log"
-$SW $model $q -drm_wave p -drm_incidence_angle 30 -output_dir "$WORK/q_p" > "$WORK/q_p.log"
-$SW $model $r -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/r_sv" > "$WORK/r_sv.log"
-$SW $model $r -drm_wave p -drm_incidence_angle 30 -output_dir "$WORK/r_p" > "$WORK/r_p.log"
+# The 1-rank runs are independent but for the restart's (A after C, B after A, the file run
+# after C's report): two at a time (tests/tools/together.sh); the 2-rank runs alone.
+. tests/tools/together.sh
+together $SW $model $q $r -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/C" > "$WORK/C.log"
+together $SW $model $q -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/q_sv" > "$WORK/q_sv.log"
+together $SW $model $q -drm_wave p -drm_incidence_angle 30 -output_dir "$WORK/q_p" > "$WORK/q_p.log"
+together $SW $model $r -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/r_sv" > "$WORK/r_sv.log"
+together $SW $model $r -drm_wave p -drm_incidence_angle 30 -output_dir "$WORK/r_p" > "$WORK/r_p.log"
+together_wait
 $MPIEXEC -n 2 $SW $model $q -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/q_sv2" > /dev/null
 $MPIEXEC -n 2 $SW $model $r -drm_wave p -drm_incidence_angle 30 -output_dir "$WORK/r_p2" > /dev/null
 for run in q_sv r_sv; do $CHECK energy "$WORK/$run/energy.csv" --max-error 1e-9; done
 $CHECK stations-equal "$WORK/q_sv" "$WORK/q_sv2" --names s1,s2,mid,left_in,base_in --tol 1e-10
 $CHECK stations-equal "$WORK/r_p" "$WORK/r_p2" --names s1,s2,mid,left_in,base_in --tol 1e-10
-# 6. Restart halfway, both damping kinds at once.
-$SW $model $q $r -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/C" > "$WORK/C.log"
+# 6. Restart halfway, both damping kinds at once (C: the straight run, above).
 steps=$(tail -1 "$WORK/C/energy.csv" | cut -d, -f1)
 half=$((steps / 2))
-$SW $model $q $r -drm_wave sv -drm_incidence_angle 20 -ts_max_steps $half -checkpoint_interval $half -output_dir "$WORK/A" > /dev/null
-cp -r "$WORK/A" "$WORK/B"
-$SW $model $q $r -drm_wave sv -drm_incidence_angle 20 -restart "$WORK/B/checkpoint.bin" -output_dir "$WORK/B" | grep -E "^restart|^done"
-cmp "$WORK/B/energy.csv" "$WORK/C/energy.csv"
-for f in "$WORK"/C/stations/*.csv; do cmp "$f" "$WORK/B/stations/$(basename "$f")"; done
-echo "damped DRM restart: energy.csv and $(ls "$WORK"/C/stations/*.csv | wc -l) station files identical"
+together $SW $model $q $r -drm_wave sv -drm_incidence_angle 20 -ts_max_steps $half -checkpoint_interval $half -output_dir "$WORK/A" > /dev/null
 # 7. The same damped free field (constant Q and Rayleigh) read from HDF5 (-drm_free_field_file,
 #    the layer's nodes as in tests/cases/drm_free_field_file.sh, 1 ms samples): the memory and
 #    the half-step velocity are driven by the file's u0 alone; the records match run C's
 #    built-in plane wave within the file's linear interpolation, 1e-3 (drm_free_field_file.sh).
-$PY - "$WORK" <<'PY'
+# (The script into a file: a background run does not get its here-document as stdin.)
+cat > "$WORK/field.py" <<'PY'
 import sys
 import h5py
 import numpy as np
@@ -84,8 +84,17 @@ with h5py.File(f"{w}/field.h5", "w") as h:
     h["time"] = t
     h["displacement"] = np.transpose(u, (1, 2, 0))  # (points, samples, 2)
 PY
+together $PY "$WORK/field.py" "$WORK"
+together_wait
+cp -r "$WORK/A" "$WORK/B"
+together $SW $model $q $r -drm_wave sv -drm_incidence_angle 20 -restart "$WORK/B/checkpoint.bin" -output_dir "$WORK/B" > "$WORK/B.log"
 file_model=$(sed -e 's/-drm_stf ricker -drm_f0 3//' -e 's/-drm_t0 0.4 -drm_amplitude 0.1//' <<<"$model")
-$SW $file_model $q $r -drm_free_field_file "$WORK/field.h5" -output_dir "$WORK/file" > /dev/null
+together $SW $file_model $q $r -drm_free_field_file "$WORK/field.h5" -output_dir "$WORK/file" > /dev/null
+together_wait
+grep -E "^restart|^done" "$WORK/B.log"
+cmp "$WORK/B/energy.csv" "$WORK/C/energy.csv"
+for f in "$WORK"/C/stations/*.csv; do cmp "$f" "$WORK/B/stations/$(basename "$f")"; done
+echo "damped DRM restart: energy.csv and $(ls "$WORK"/C/stations/*.csv | wc -l) station files identical"
 $PY - "$WORK" <<'PY'
 import sys
 import numpy as np

@@ -23,19 +23,22 @@
 # 40-90 m from the stations: its scattering is below the mesh's own error).
 set -eu
 . tests/tools/lib.sh
+. tests/tools/together.sh
 model="-regions rock,soil -material_soil_rho 1900 -material_soil_vp 500 -material_soil_vs 200 -material_rock_rho 2400 -material_rock_vp 1600
  -material_rock_vs 800 -region_soil_box -60,60,-30,0 -mesh_box_faces 96,48 -mesh_box_lower -60,-60 -mesh_box_upper 60,0
  -bc_left_type absorbing -bc_right_type absorbing -bc_bottom_type absorbing -input_method drm -ts_max_time 4 -output_fields 0
  -progress_interval 100000 -station_coordinates 0,0,-40,0 -station_names centre,left
  -drm_stf ricker -drm_f0 2 -drm_t0 0.6 -drm_amplitude 0.1"
 q="-material_soil_damping_ratio 0.05"
-$SW $model $q -drm_wave sv -output_dir "$WORK/q_sv" > "$WORK/q_sv.log"
-$SW $model $q -drm_wave p -output_dir "$WORK/q_p" > "$WORK/q_p.log"
-$SW $model -damping_ratio 0.05 -damping_frequencies 1,10 -drm_wave sv -output_dir "$WORK/r_sv" > /dev/null
+# The four runs are independent (one rank each): two at a time (tests/tools/together.sh).
+together $SW $model $q -drm_wave sv -output_dir "$WORK/q_sv" > "$WORK/q_sv.log"
+together $SW $model $q -drm_wave p -output_dir "$WORK/q_p" > "$WORK/q_p.log"
+together $SW $model -damping_ratio 0.05 -damping_frequencies 1,10 -drm_wave sv -output_dir "$WORK/r_sv" > /dev/null
 bump=$(sed -e 's/-regions rock,soil /-regions rock,soil,air,bump -void_regions air -region_air_box -60,60,0,2.5 -region_bump_box 48.75,50,0,2.5 /' \
   -e 's/-mesh_box_faces 96,48/-mesh_box_faces 96,50/' -e 's/-mesh_box_upper 60,0/-mesh_box_upper 60,2.5/' <<<"$model")
 bump_material="-material_bump_rho 1900 -material_bump_vp 500 -material_bump_vs 200 -material_bump_damping_ratio 0.05"
-$SW $bump $bump_material $q -drm_wave sv -output_dir "$WORK/q_bump" > "$WORK/q_bump.log"
+together $SW $bump $bump_material $q -drm_wave sv -output_dir "$WORK/q_bump" > "$WORK/q_bump.log"
+together_wait
 grep -q "DRM free-field site (the mesh's first column): 30 m of 'soil'" "$WORK/q_bump.log"
 $PY - "$WORK" <<'PY'
 import sys

@@ -22,21 +22,26 @@
 #    tests/cases/mpi_ranks.sh): the layer's forces are per-cell sums scattered like K u.
 set -eu
 . tests/tools/lib.sh
+. tests/tools/together.sh
 model="-regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -mesh_box_faces 160,80 -mesh_box_lower -100,-100
  -mesh_box_upper 100,0 -bc_left_type absorbing -bc_right_type absorbing -bc_bottom_type absorbing -input_method drm -drm_stf ricker -drm_f0 3
  -drm_t0 0.4 -drm_amplitude 0.1 -ts_max_time 1.3 -output_fields 0 -progress_interval 100000
  -station_coordinates -60,0,0,0,60,0,0,-50,-96,-50,96,-30,0,-96,-99.5,-50,99.5,-50,0,-99.5,-99.5,-99.5,99.5,-10
  -station_names s1,s2,s3,mid,left_in,right_in,base_in,left_out,right_out,base_out,corner_out,right_top_out"
-$SW $model -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/sv"
-$SW $model -drm_wave p -drm_incidence_angle 30 -output_dir "$WORK/p"
-$SW $model -drm_wave sv -drm_incidence_angle 40 -output_dir "$WORK/sv40"
+# The 1-rank runs are independent: two at a time (tests/tools/together.sh); the 2-rank run
+# alone after them; then the checks.
+model_regions=$(sed 's/-regions soil /-regions soil,inner /' <<<"$model")
+together $SW $model -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/sv" > "$WORK/sv.log"
+together $SW $model -drm_wave p -drm_incidence_angle 30 -output_dir "$WORK/p" > "$WORK/p.log"
+together $SW $model -drm_wave sv -drm_incidence_angle 40 -output_dir "$WORK/sv40" > "$WORK/sv40.log"
+together $SW $model -drm_wave sv -drm_incidence_angle -20 -output_dir "$WORK/sv_mirror" > "$WORK/sv_mirror.log"
+together $SW $model_regions -material_inner_rho 2000 -material_inner_vp 400 -material_inner_vs 200 -region_inner_box -97.5,97.5,-97.5,0 -drm_regions inner \
+  -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/sv_regions" > "$WORK/sv_regions.log"
+together_wait
+cat "$WORK/sv.log" "$WORK/p.log" "$WORK/sv40.log" "$WORK/sv_mirror.log" "$WORK/sv_regions.log"
 $MPIEXEC -n 2 $SW $model -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/sv2"
-$SW $model -drm_wave sv -drm_incidence_angle -20 -output_dir "$WORK/sv_mirror"
 $CHECK energy "$WORK/sv/energy.csv" --max-error 1e-9
 $CHECK energy "$WORK/p/energy.csv" --max-error 1e-9
-model_regions=$(sed 's/-regions soil /-regions soil,inner /' <<<"$model")
-$SW $model_regions -material_inner_rho 2000 -material_inner_vp 400 -material_inner_vs 200 -region_inner_box -97.5,97.5,-97.5,0 -drm_regions inner \
-  -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/sv_regions"
 $CHECK stations-equal "$WORK/sv" "$WORK/sv_regions" --names s1,s2,mid,left_in,base_in --tol 1e-10
 $CHECK stations-equal "$WORK/sv" "$WORK/sv2" --names s1,s2,mid,left_in,base_in --tol 1e-10
 $PY - "$WORK" <<'PY'

@@ -14,13 +14,16 @@
 # reference convolves the closed-form v(t) with the same transfer function.
 set -eu
 . tests/tools/lib.sh
+. tests/tools/together.sh
 model="-regions rock,soil -material_soil_rho 1900 -material_soil_vp 500 -material_soil_vs 200 -material_rock_rho 2400 -material_rock_vp 1600
  -material_rock_vs 800 -region_soil_box -60,60,-30,0 -mesh_box_faces 96,48 -mesh_box_lower -60,-60 -mesh_box_upper 60,0
  -bc_left_type absorbing -bc_right_type absorbing -bc_bottom_type absorbing -input_method drm -ts_max_time 4 -output_fields 0
  -progress_interval 100000 -station_coordinates 0,0,-40,0,30,-15 -station_names centre,left,mid"
 ricker="-drm_stf ricker -drm_f0 2 -drm_t0 0.6 -drm_amplitude 0.1"
-$SW $model $ricker -drm_wave sv -output_dir "$WORK/sv"
-$SW $model $ricker -drm_wave p -output_dir "$WORK/p"
+# The three runs are independent (one rank each): two at a time (tests/tools/together.sh),
+# the record's run once its record is written.
+together $SW $model $ricker -drm_wave sv -output_dir "$WORK/sv" > "$WORK/sv.log"
+together $SW $model $ricker -drm_wave p -output_dir "$WORK/p" > "$WORK/p.log"
 $PY - "$WORK/record.csv" <<'PY'
 import sys
 import numpy as np
@@ -30,7 +33,9 @@ a = V0 * np.pi / T * (np.sin(2 * np.pi * t / T) * np.sin(4 * np.pi * t / T) + 4 
 a[t > T] = 0
 np.savetxt(sys.argv[1], np.column_stack([t, a]), delimiter=",", header="time,acceleration", comments="")
 PY
-$SW $model -drm_stf record -drm_record_motion incident -drm_record "$WORK/record.csv" -drm_wave sv -output_dir "$WORK/record"
+together $SW $model -drm_stf record -drm_record_motion incident -drm_record "$WORK/record.csv" -drm_wave sv -output_dir "$WORK/record" > "$WORK/record.log"
+together_wait
+cat "$WORK/sv.log" "$WORK/p.log" "$WORK/record.log"
 $PY - "$WORK" <<'PY'
 import sys
 import numpy as np

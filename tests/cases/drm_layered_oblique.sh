@@ -11,12 +11,16 @@
 # the surface (the snapshot sampled in time).
 set -eu
 . tests/tools/lib.sh
+. tests/tools/together.sh
 model="-regions rock,soil -material_soil_rho 1900 -material_soil_vp 500 -material_soil_vs 200 -material_rock_rho 2400 -material_rock_vp 1600
  -material_rock_vs 800 -region_soil_box -60,60,-30,0 -mesh_box_faces 96,48 -mesh_box_lower -60,-60 -mesh_box_upper 60,0
  -bc_left_type absorbing -bc_right_type absorbing -bc_bottom_type absorbing -input_method drm -drm_stf ricker -drm_f0 2 -drm_t0 0.6
  -drm_amplitude 0.1 -ts_max_time 4 -output_fields 0 -progress_interval 100000 -station_coordinates -40,0,0,0,40,0 -station_names a,b,c"
-$SW $model -drm_wave sv -drm_incidence_angle 15 -output_dir "$WORK/sv"
-$SW $model -drm_wave p -drm_incidence_angle 20 -output_dir "$WORK/p"
+# The two runs are independent (one rank each): side by side (tests/tools/together.sh).
+together $SW $model -drm_wave sv -drm_incidence_angle 15 -output_dir "$WORK/sv" > "$WORK/sv.log"
+together $SW $model -drm_wave p -drm_incidence_angle 20 -output_dir "$WORK/p" > "$WORK/p.log"
+together_wait
+cat "$WORK/sv.log" "$WORK/p.log"
 $PY - "$WORK" <<'PY'
 import sys
 import numpy as np

@@ -12,6 +12,7 @@
 # criterion of tests/cases/free_field_reflection.sh. Measured: about 1/6 of it.
 set -eu
 . tests/tools/lib.sh
+. tests/tools/together.sh
 common="-regions soil,footing -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -region_footing_box -5,5,-5,0
  -bc_left_type absorbing -bc_right_type absorbing -bc_bottom_type absorbing -input_method drm -drm_wave sv -drm_incidence_angle 20 -drm_stf ricker
  -drm_f0 3 -drm_t0 0.4 -drm_amplitude 0.1 -output_fields 0 -progress_interval 100000
@@ -20,9 +21,12 @@ stiff="-material_footing_rho 2400 -material_footing_vp 2000 -material_footing_vs
 soft="-material_footing_rho 2000 -material_footing_vp 400 -material_footing_vs 200"
 narrow="-region_soil_box -60,60,-60,0 -mesh_box_faces 96,48 -mesh_box_lower -60,-60 -mesh_box_upper 60,0 -ts_max_time 1.45"
 wide="-region_soil_box -180,180,-150,0 -mesh_box_faces 288,120 -mesh_box_lower -180,-150 -mesh_box_upper 180,0 -ts_max_time 2.1"
-$SW $common $stiff $narrow -output_dir "$WORK/narrow"
-$SW $common $stiff $wide -output_dir "$WORK/wide"
-$SW $common $soft $narrow -output_dir "$WORK/free"
+# The three runs are independent (one rank each): two at a time, the wide one first
+# (tests/tools/together.sh).
+together $SW $common $stiff $wide -output_dir "$WORK/wide" > "$WORK/wide.log"
+together $SW $common $stiff $narrow -output_dir "$WORK/narrow" > "$WORK/narrow.log"
+together $SW $common $soft $narrow -output_dir "$WORK/free" > "$WORK/free.log"
+together_wait
 $PY - "$WORK" <<'PY'
 import sys
 import numpy as np

@@ -103,36 +103,63 @@ echo "ok: control run succeeds"
 rm -rf "$runs/out"
 inputs_before=$(cd "$tmp" && find . | sort)
 
-fail=0; n=0
-while IFS= read -r line; do
-  [[ -z "${line// }" || "$line" == \#* ]] && continue
-  IFS='|' read -r name args regex <<<"$line"
-  name=$(xargs <<<"$name"); args=$(xargs <<<"$args"); regex=$(sed -e 's/^ *//' -e 's/ *$//' <<<"$regex")
-  args=${args//@SOIL@/$soil}; args=${args//@TMP@/$tmp}; args=${args//@STATIONS151@/$stations151}
-  n=$((n + 1))
+# Each case: one line "ok: ..." or "FAIL: ..." (and its detail lines) into $runs/result.N.
+run_case() { # N NAME ARGS REGEX
+  local n=$1 name=$2 args=$3 regex=$4 cwd err rc lines stray inputs_after
   cwd="$runs/$n"; mkdir "$cwd"
-  err=$(cd "$cwd" && "$bin" $base $args 2>&1 >"$runs/stdout"); rc=$?
+  err=$(cd "$cwd" && "$bin" $base $args 2>&1 >"$runs/stdout.$n"); rc=$?
   lines=$(printf '%s' "$err" | grep -c '')
   stray=$(cd "$cwd" && find . -mindepth 1 -not -path './out' -not -path './out/*')
   inputs_after=$(cd "$tmp" && find . | sort)
   if [ $rc -eq 0 ]; then
-    echo "FAIL: $name: exit 0 (expected an error)"; fail=1
+    echo "FAIL: $name: exit 0 (expected an error)"
   elif [ $rc -ge 128 ]; then
-    echo "FAIL: $name: killed by signal $((rc - 128)) (abort or crash):"; echo "$err" | head -4 | sed 's/^/    /'; fail=1
+    echo "FAIL: $name: killed by signal $((rc - 128)) (abort or crash):"; echo "$err" | head -4 | sed 's/^/    /'
   elif [ -n "$stray" ]; then
-    echo "FAIL: $name: wrote outside -output_dir: $stray"; fail=1
+    echo "FAIL: $name: wrote outside -output_dir: $stray"
   elif [ "$inputs_after" != "$inputs_before" ]; then
-    echo "FAIL: $name: changed the input directory:"; diff <(echo "$inputs_before") <(echo "$inputs_after") | sed 's/^/    /'; fail=1
+    echo "FAIL: $name: changed the input directory:"; diff <(echo "$inputs_before") <(echo "$inputs_after") | sed 's/^/    /'
   elif [ "$lines" -ne 1 ]; then
-    echo "FAIL: $name: $lines stderr lines (expected exactly one):"; echo "$err" | head -8 | sed 's/^/    /'; fail=1
+    echo "FAIL: $name: $lines stderr lines (expected exactly one):"; echo "$err" | head -8 | sed 's/^/    /'
   elif ! grep -Eq "^slipwave: error: $regex" <<<"$err"; then
-    echo "FAIL: $name: stderr does not match /^slipwave: error: $regex/:"; echo "    $err"; fail=1
-  elif grep -q 'PETSC ERROR\|terminate called' "$runs/stdout"; then
-    echo "FAIL: $name: PETSc traceback on stdout"; fail=1
+    echo "FAIL: $name: stderr does not match /^slipwave: error: $regex/:"; echo "    $err"
+  elif grep -q 'PETSC ERROR\|terminate called' "$runs/stdout.$n"; then
+    echo "FAIL: $name: PETSc traceback on stdout"
   else
     echo "ok: $name: $err"
-  fi
+  fi > "$runs/result.$n"
+}
+# The cases are independent (each its own working directory and output folder; the inputs
+# are only read): two at a time, one per core (the 2-core machine of make test), by two
+# workers taking the odd and the even cases; the results are printed in the file's order.
+fail=0; n=0
+cases=()
+while IFS= read -r line; do
+  [[ -z "${line// }" || "$line" == \#* ]] && continue
+  cases+=("$line")
 done < tests/errors/cases.txt
+worker() { # FIRST: cases FIRST, FIRST + 2, ... (numbered from 1)
+  local k line name args regex
+  # Its own Open MPI session directory (as tests/tools/together.sh gives each run): two
+  # isolated singletons would share one, and the first to end would remove it under the other.
+  export OMPI_MCA_orte_tmpdir_base="$runs/session.$1"; mkdir "$OMPI_MCA_orte_tmpdir_base"
+  for ((k = $1; k <= ${#cases[@]}; k += 2)); do
+    line=${cases[k - 1]}
+    IFS='|' read -r name args regex <<<"$line"
+    name=$(xargs <<<"$name"); args=$(xargs <<<"$args"); regex=$(sed -e 's/^ *//' -e 's/ *$//' <<<"$regex")
+    args=${args//@SOIL@/$soil}; args=${args//@TMP@/$tmp}; args=${args//@STATIONS151@/$stations151}
+    run_case "$k" "$name" "$args" "$regex"
+  done
+}
+worker 1 & w1=$!
+worker 2 & w2=$!
+wait $w1; wait $w2
+for ((n = 1; n <= ${#cases[@]}; n++)); do
+  [ -s "$runs/result.$n" ] || { echo "FAIL: case $n gave no result"; fail=1; continue; }
+  cat "$runs/result.$n"
+  grep -q '^FAIL: ' "$runs/result.$n" && fail=1
+done
+n=${#cases[@]}
 [ $n -ge 80 ] || { echo "FAIL: only $n cases read from tests/errors/cases.txt"; fail=1; }
 echo "$n cases"
 exit $fail

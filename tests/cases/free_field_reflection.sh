@@ -16,6 +16,7 @@
 #    below the scattered field's own peak near the side (wide model minus the free field).
 set -eu
 . tests/tools/lib.sh
+. tests/tools/together.sh
 site="-regions rock,soil,footing -material_soil_rho 1900 -material_soil_vp 500 -material_soil_vs 200 -material_rock_rho 2400 -material_rock_vp 1600
  -material_rock_vs 800 -region_footing_box -2,2,28,30 -bc_bottom_type absorbing -input_wave sv -input_boundary bottom -input_stf ricker -input_f0 2
  -input_t0 0.6 -input_amplitude 0.1 -ts_max_time 2.5 -output_fields 0 -progress_interval 100000"
@@ -25,17 +26,20 @@ soilfoot="-material_footing_rho 1900 -material_footing_vp 500 -material_footing_
 stiff="-material_footing_rho 2400 -material_footing_vp 2000 -material_footing_vs 1200"
 narrow="-mesh_box_faces 20,40 -mesh_box_lower -10,-10 -mesh_box_upper 10,30 -region_soil_box -10,10,0,30 -bc_left_type freefield -bc_right_type freefield
  -station_coordinates -10,30,-9,30,0,30,10,30,0,10 -station_names left,edge,centre,right,centre_10"
-$SW $site $damped $soilfoot $narrow -output_dir "$WORK/free"
+# The five runs are independent (one rank each): two at a time, the wide one first
+# (tests/tools/together.sh); the checks after them.
+together $SW $site $undamped $stiff -mesh_box_faces 400,40 -mesh_box_lower -200,-10 -mesh_box_upper 200,30 -region_soil_box -200,200,0,30 \
+  -bc_left_type fixed -bc_left_components y -bc_right_type fixed -bc_right_components y \
+  -station_coordinates -10,30,-9,30,0,30,10,30,0,10 -station_names left,edge,centre,right,centre_10 -output_dir "$WORK/wide" > "$WORK/wide.log"
+together $SW $site $damped $soilfoot $narrow -output_dir "$WORK/free" > "$WORK/free.log"
 # The 1D column: one cell (inside the footing box, which has the soil here), the x-motion only;
 # stations at the same heights.
-$SW $site $damped $soilfoot -mesh_box_faces 1,40 -mesh_box_lower -2,-10 -mesh_box_upper -1,30 -region_soil_box -10,10,0,30 -constrain_components y \
-  -station_coordinates -2,30,-2,30,-2,30,-2,30,-2,10 -station_names left,edge,centre,right,centre_10 -output_dir "$WORK/column"
+together $SW $site $damped $soilfoot -mesh_box_faces 1,40 -mesh_box_lower -2,-10 -mesh_box_upper -1,30 -region_soil_box -10,10,0,30 -constrain_components y \
+  -station_coordinates -2,30,-2,30,-2,30,-2,30,-2,10 -station_names left,edge,centre,right,centre_10 -output_dir "$WORK/column" > "$WORK/column.log"
+together $SW $site $undamped $soilfoot $narrow -output_dir "$WORK/free0" > "$WORK/free0.log"
+together $SW $site $undamped $stiff $narrow -output_dir "$WORK/narrow" > "$WORK/narrow.log"
+together_wait
 $CHECK stations-equal "$WORK/column" "$WORK/free" --names left,edge,centre,right,centre_10 --tol 1e-10
-$SW $site $undamped $soilfoot $narrow -output_dir "$WORK/free0"
-$SW $site $undamped $stiff $narrow -output_dir "$WORK/narrow"
-$SW $site $undamped $stiff -mesh_box_faces 400,40 -mesh_box_lower -200,-10 -mesh_box_upper 200,30 -region_soil_box -200,200,0,30 \
-  -bc_left_type fixed -bc_left_components y -bc_right_type fixed -bc_right_components y \
-  -station_coordinates -10,30,-9,30,0,30,10,30,0,10 -station_names left,edge,centre,right,centre_10 -output_dir "$WORK/wide"
 $PY - "$WORK" <<'PY'
 import sys
 import numpy as np

@@ -22,6 +22,7 @@
 #      on 1 and 2 ranks against serial on 1 rank.
 set -eu -o pipefail
 . tests/tools/lib.sh
+. tests/tools/together.sh
 IC="$PY tests/tools/contact_checks.py"
 command -v gmsh >/dev/null || { echo "FAIL: gmsh is not installed"; exit 1; }
 mesh() { # name dim, geo on stdin
@@ -79,12 +80,25 @@ run() { # name ranks options...
 }
 cells() { sed -n 's/.*mesh: .*, \([0-9]*\) cells,.*/\1/p' "$WORK/$1.log"; }
 pairs() { sed -n 's/.*: \([0-9]*\) node pairs;.*/\1/p' "$WORK/$1.log"; }
-# (a)
+column="$COLUMN -constrain_components y -input_wave sv -ts_max_time 1.2 -station_coordinates 1,100 -station_names top"
+# The runs of (a), (c) and (d): on 1 rank, then on 2.
 run coarse 1 $foot -mesh_refine 0
+run serial_np1 1 $foot -mesh_refine 2 -mesh_build serial
+run dist_np1 1 $foot -mesh_refine 2
+run box 1 -mesh_box_faces 4,100 -mesh_box_upper 2,100 $column
+run box_p2 1 -mesh_box_faces 2,50 -mesh_box_upper 2,100 -element_degree 2 $column
+run t_serial 1 $foot3 -mesh_refine 1 -mesh_build serial
+run t_np1 1 $foot3 -mesh_refine 1 -mesh_build distributed
+run serial_np2 2 $foot -mesh_refine 2 -mesh_build serial
+run dist_np2 2 $foot -mesh_refine 2
+run column 2 -mesh_file "$WORK/column.msh" -mesh_refine 2 $column
+run column_p2 2 -mesh_file "$WORK/column.msh" -mesh_refine 1 -element_degree 2 $column
+run t_np2 2 $foot3 -mesh_refine 1 -mesh_build distributed
+together_wait
+for name in "${runs[@]}"; do echo "$name:"; grep -E "mesh:|node pairs" "$WORK/$name.log"; done
+# (a)
 for n in 1 2; do
-  run serial_np$n $n $foot -mesh_refine 2 -mesh_build serial
   grep -q "footing.msh, refined 2 times on rank 0" "$WORK/serial_np$n.log"
-  run dist_np$n $n $foot -mesh_refine 2
   grep -q "footing.msh, built distributed: refined 2 times" "$WORK/dist_np$n.log"
 done
 for r in serial_np2 dist_np1 dist_np2; do
@@ -100,19 +114,12 @@ for r in serial_np1 dist_np2; do
 done
 echo "coarse $c0 cells, $p0 pairs; refined twice $(cells dist_np2) cells, $(pairs dist_np2) pairs"
 # (c)
-column="$COLUMN -constrain_components y -input_wave sv -ts_max_time 1.2 -station_coordinates 1,100 -station_names top"
-run box 1 -mesh_box_faces 4,100 -mesh_box_upper 2,100 $column
-run column 2 -mesh_file "$WORK/column.msh" -mesh_refine 2 $column
 grep -q "built distributed: refined 2 times" "$WORK/column.log"
 $CHECK stations-equal "$WORK/box" "$WORK/column" --names top --tol 1e-9
-run box_p2 1 -mesh_box_faces 2,50 -mesh_box_upper 2,100 -element_degree 2 $column
-run column_p2 2 -mesh_file "$WORK/column.msh" -mesh_refine 1 -element_degree 2 $column
 grep -q "column.msh, refined 1 times on rank 0, spectral elements of degree 2" "$WORK/column_p2.log"
 $CHECK stations-equal "$WORK/box_p2" "$WORK/column_p2" --names top --tol 1e-9
 # (d)
-run t_serial 1 $foot3 -mesh_refine 1 -mesh_build serial
 for n in 1 2; do
-  run t_np$n $n $foot3 -mesh_refine 1 -mesh_build distributed
   $CHECK stations-equal "$WORK/t_serial" "$WORK/t_np$n" --names block_top,surface --tol 1e-10
   $IC interface-equal "$WORK/t_serial" "$WORK/t_np$n" --name base --fields sigma_N,sigma_T --tol 1e-10
 done

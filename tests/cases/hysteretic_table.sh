@@ -10,6 +10,7 @@
 # run_info.json of the table run must carry its rows and source for scripts/soil_loops.py.
 set -eu
 . tests/tools/lib.sh
+. tests/tools/together.sh
 $PY - "$WORK/hyperbola.csv" <<'PY'
 import sys
 import numpy as np
@@ -21,8 +22,10 @@ with open(sys.argv[1], "w") as f:
 PY
 column="$COLUMN -regions rock,soil -region_soil_box 0,1,70,100 -material_rock_rho 2000 -material_rock_vp 400 -material_rock_vs 200
   -material_soil_model hysteretic -mesh_box_faces 1,400 -mesh_box_upper 1,100 -input_wave sv -constrain_components y -station_coordinates 0.5,100,0.5,85 -station_names top,layer -station_stress true"
-$SW $column -material_soil_backbone mkz -material_soil_reference_strain 1e-3 -output_dir "$WORK/mkz" > "$WORK/mkz.log"
-$SW $column -material_soil_backbone table -material_soil_backbone_file "$WORK/hyperbola.csv" -output_dir "$WORK/table" > "$WORK/table.log"
+# The two runs are independent (one rank each): side by side (tests/tools/together.sh).
+together $SW $column -material_soil_backbone mkz -material_soil_reference_strain 1e-3 -output_dir "$WORK/mkz" > "$WORK/mkz.log"
+together $SW $column -material_soil_backbone table -material_soil_backbone_file "$WORK/hyperbola.csv" -output_dir "$WORK/table" > "$WORK/table.log"
+together_wait
 grep -q "backbone table .*hyperbola.csv (281 rows; source: Hardin & Drnevich (1972) hyperbola" "$WORK/table.log"
 $CHECK energy "$WORK/table/energy.csv" --max-error 1e-9 --min-rows 2
 $PY - "$WORK/mkz/stations/top.csv" "$WORK/table/stations/top.csv" "$WORK/table/run_info.json" <<'PY'

@@ -36,14 +36,20 @@
 # (the ringing of the unloading front is merged into the contact, hence 2.5 % against 1.5 %).
 set -eu
 . tests/tools/lib.sh
+. tests/tools/together.sh
 IC="$PY tests/tools/contact_checks.py"
 c=$($PY -c "import math; print(math.sqrt(1e9/2000))")
 Z=$($PY -c "print(2000*$c)")
-# -energy_interval 1: the contact phase is read from energy.csv at every step.
-scene="-options_file config/scenes/two_bar_impact.yaml -output_fields 1 -energy_interval 1"
+# -energy_interval 1: the contact phase is read from energy.csv at every step. No volume
+# fields (-output_fields 0): the checks read energy.csv, the stations and the interface frames.
+scene="-options_file config/scenes/two_bar_impact.yaml -output_fields 0 -energy_interval 1"
+# The two runs are independent (one rank each): side by side (tests/tools/together.sh).
+together $SW $scene -output_dir "$WORK/a" > "$WORK/a.log"
+together $SW $scene -region_right_bar_box 5,20,0,0.05 -initial_velocity_left_bar 2,0 -initial_velocity_right_bar 0,0 -station_coordinates 2.5,0,12.5,0 -output_dir "$WORK/b" > "$WORK/b.log"
+together_wait
 
 echo "== A: identical bars, +1 and -1 m/s"
-$SW $scene -output_dir "$WORK/a"
+cat "$WORK/a.log"
 $IC bar-contact "$WORK/a" --name gap --E 2e10 --area 0.05 --duration "$($PY -c "print(2*10/$c)")" --duration-tol 0.018 --stress "$($PY -c "print($Z*2/2)")" --stress-tol 0.01
 $IC station-window "$WORK/a" --station left_mid --column v_x --t0 0.035 --t1 0.06 --expected -1 --tol 0.02
 $IC station-window "$WORK/a" --station right_mid --column v_x --t0 0.035 --t1 0.06 --expected 1 --tol 0.02
@@ -51,7 +57,7 @@ $IC open-traction "$WORK/a" --name gap --min-open 2
 $IC energy-growth "$WORK/a" --max-growth 0.01 --max-balance 1e-9
 
 echo "== B: L1 = 5 m at 2 m/s onto L2 = 15 m at rest"
-$SW $scene -region_right_bar_box 5,20,0,0.05 -initial_velocity_left_bar 2,0 -initial_velocity_right_bar 0,0 -station_coordinates 2.5,0,12.5,0 -output_dir "$WORK/b"
+cat "$WORK/b.log"
 t_sep=$($PY -c "print(2*5/$c)")
 $IC bar-contact "$WORK/b" --name gap --E 2e10 --area 0.05 --duration "$t_sep" --duration-tol 0.029 --stress "$($PY -c "print($Z*2/2)")" --stress-tol 0.01
 $IC station-window "$WORK/b" --station left_mid --column v_x --t0 0.02 --t1 0.06 --expected 0 --tol 0.06

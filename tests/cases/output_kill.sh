@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Output that survives a kill (issue 9): the 2D site-response scene (10 s, ~4 s wall on one core,
-# 3 stations, a frame every 0.2 s) is run once to the end (F), then killed at a random moment
-# by SIGTERM (T) and by SIGKILL (K). Expected, from the writers' contract (stations and
+# 3 stations, a frame every 0.2 s) is killed at a random moment by SIGTERM (T) and by SIGKILL
+# (K), and run uninterrupted (F) past the latest of those moments. Expected, from the writers' contract (stations and
 # energy.csv flushed at every output time, the XDMF index replaced after its datasets):
 # - SIGTERM: exit status non-zero, one stderr line "stopped by SIGTERM after step N"; the
 #   stations and energy.csv hold every step 0..N (flushed at the stop).
@@ -18,7 +18,6 @@ set -eu
 . tests/tools/lib.sh
 # -energy_interval 1: this test reads the ledger at every step (row count, per-step rows).
 O="-options_file config/scenes/site_response_2d.yaml -ts_max_time 10 -output_interval 0.2 -progress_interval 100 -energy_interval 1"
-$SW $O -output_dir "$WORK/F" > "$WORK/F.log"
 for run in TERM KILL TERM2; do
   sig=${run%2}
   launch="$SW"; [ "$run" = TERM2 ] && launch="$MPIEXEC -n 2 $SW"
@@ -33,6 +32,26 @@ for run in TERM KILL TERM2; do
   rc=0; wait "$pid" 2> /dev/null || rc=$?
   echo "$run: SIG$sig $delay s after the first step: exit status $rc"
   [ "$rc" -ne 0 ] || { echo "FAIL: the run ended before SIG$sig (delay $delay s): exit 0"; exit 1; }
+done
+# The uninterrupted run F: the same options (the step is -ts_max_time over a whole number of
+# steps, so -ts_max_time stays 10 s), stopped by -ts_max_steps 0.4 s (two output times) past
+# the last step any killed run reached: its steps are the 10 s run's (a step is computed from
+# the state before it only), so every step the killed runs hold is F's, and the next output
+# time after a killed run's last frame is in F's volume.xmf. (Run after the kills instead of
+# all 10 s before them: the kills land within 2 s of wall time.) A killed run with more rows
+# than F fails the comparisons below.
+steps=$($PY - "$WORK" <<'PY'
+import sys
+import numpy as np
+rows = [np.genfromtxt(f"{sys.argv[1]}/{run}/energy.csv", delimiter=",", skip_header=1, ndmin=2)[-1, :2] for run in ("TERM", "KILL", "TERM2")]
+step, t = max(rows, key=lambda r: r[0])
+print(int(step) + int(np.ceil(0.4 / (t / step))) + 1)
+PY
+)
+echo "uninterrupted run F: $steps steps"
+$SW $O -ts_max_steps "$steps" -output_dir "$WORK/F" > "$WORK/F.log"
+for run in TERM KILL TERM2; do
+  sig=${run%2}
   if [ "$sig" = TERM ]; then
     # mpiexec's own event loop may add "[warn] Epoll MOD(1) on fd N failed ..." as it tears
     # down after passing the signal on (libevent, Open MPI's launcher, not slipwave's ranks).

@@ -13,6 +13,9 @@
 set -eu
 . tests/tools/lib.sh
 printf 't,a\n0,3.92266\n0.2,3.92266\n0.2001,0\n1,0\n' > "$WORK/pulse.csv"
+# The scenes' runs are independent: two at a time (tests/tools/together.sh); so are the
+# scenes' figures: two worker processes (multiprocessing), each scene's checks in its worker.
+. tests/tools/together.sh
 for scene in config/scenes/*.yaml; do
   name=$(basename "$scene" .yaml)
   extra="-ts_max_time 0.04 -output_interval 0.01"
@@ -20,9 +23,11 @@ for scene in config/scenes/*.yaml; do
     two_bar_impact) extra="-ts_max_time 0.004 -output_interval 0.001" ;;
     sliding_block) extra="$extra -bc_bottom_record $WORK/pulse.csv" ;;
   esac
-  $SW -options_file "$scene" $extra -progress_interval 1000 -output_dir "$WORK/$name" > "$WORK/$name.log"
+  together $SW -options_file "$scene" $extra -progress_interval 1000 -output_dir "$WORK/$name" > "$WORK/$name.log"
 done
-$PY - "$WORK" <<'PY'
+together_wait
+cat > "$WORK/check_plots.py" <<'PY'
+import multiprocessing
 import os, sys
 sys.path.insert(0, "scripts")
 import numpy as np
@@ -54,10 +59,11 @@ def inspect(fig, path, written):
     seen.setdefault(os.path.basename(os.path.dirname(os.path.dirname(path))), {})[name] = fig
     original(fig, path, written)
 pr.save = inspect
-for scene in sorted(os.listdir(w)):
+
+
+def check_scene(scene):
+    """One scene's figures and checks (in a worker process; an AssertionError fails the test)."""
     out = os.path.join(w, scene)
-    if not os.path.isdir(out):
-        continue
     written = pr.make_figures(out, os.path.join(out, "plots"), layer=(30, 200) if scene == "default" else None)
     assert written, f"{scene}: nothing plotted"
     info = pr.run_info(pr.RunFolder(out))
@@ -66,15 +72,26 @@ for scene in sorted(os.listdir(w)):
             spans = [p for p in fig.axes[0].patches]
             edge = 1 / info["resolved_frequency_hz"]
             assert any(abs(p.get_xy()[:, 0].max() - edge) < 1e-9 for p in spans), f"{scene} {fig_name}: no band up to {edge} s"
-    print(f"ok - {scene}: {', '.join(sorted(seen.get(scene, {})))}")
-d = seen["default"]
-titles = [ax.get_title() for ax in d["stations_acceleration.png"].axes[::2]]
-expected = ["input (outcrop motion)", "'block_top'", "'block_base_left'", "'block_base_right'", "'block_base'", "'free_field'", "'bedrock'"]
-assert all(t.startswith(e) for t, e in zip(titles, expected)) and len(titles) == len(expected), titles
-legend = [t.get_text() for t in d["amplification.png"].axes[0].get_legend().get_texts()]
-assert any("= 0.6 s" in t for t in legend), legend
-assert "input (outcrop motion)" in [l.get_label() for l in d["spectra.png"].axes[0].lines]
-assert any(ax.get_ylabel() == "rocking angle [mrad]" for ax in d["interface_base_history.png"].axes)
-assert any("dissipated by interface slip" in l.get_label() for ax in d["energy.png"].axes for l in ax.lines)
+    lines = [f"ok - {scene}: {', '.join(sorted(seen.get(scene, {})))}"]
+    if scene == "default":
+        d = seen["default"]
+        titles = [ax.get_title() for ax in d["stations_acceleration.png"].axes[::2]]
+        expected = ["input (outcrop motion)", "'block_top'", "'block_base_left'", "'block_base_right'", "'block_base'", "'free_field'", "'bedrock'"]
+        assert all(t.startswith(e) for t, e in zip(titles, expected)) and len(titles) == len(expected), titles
+        legend = [t.get_text() for t in d["amplification.png"].axes[0].get_legend().get_texts()]
+        assert any("= 0.6 s" in t for t in legend), legend
+        assert "input (outcrop motion)" in [l.get_label() for l in d["spectra.png"].axes[0].lines]
+        assert any(ax.get_ylabel() == "rocking angle [mrad]" for ax in d["interface_base_history.png"].axes)
+        assert any("dissipated by interface slip" in l.get_label() for ax in d["energy.png"].axes for l in ax.lines)
+        lines.append("ok - default: station order, layer period, input spectrum, rocking panel, slip energy")
+    return lines
+
+
+scenes = sorted(s for s in os.listdir(w) if os.path.isdir(os.path.join(w, s)))
+assert "default" in scenes, scenes
+with multiprocessing.get_context("fork").Pool(2) as pool:
+    for lines in pool.imap(check_scene, scenes):
+        print("\n".join(lines))
 print("plot_results_scenes: OK")
 PY
+$PY "$WORK/check_plots.py" "$WORK"

@@ -2,7 +2,8 @@
 # test's runs on one rank each leave a core idle when run one after another. Sourced by the
 # tests that have such runs (after tests/tools/lib.sh). TEST_JOBS=1 runs them in sequence.
 # `together COMMAND...` starts COMMAND in the background (redirections given to `together`
-# apply to it), first waiting for the oldest run while TEST_JOBS are going; `together_wait`
+# apply to it, but not a here-document: a background command's stdin is /dev/null), first
+# waiting for a run to end while TEST_JOBS are going; `together_wait`
 # waits for the rest and fails if any run failed, so a failed run fails the test as it did
 # in sequence. Runs on 2 ranks (mpiexec) stay outside: they use both cores themselves.
 # Each run gets its own Open MPI session directory: the suite's singletons are isolated
@@ -12,11 +13,24 @@
 TEST_JOBS=${TEST_JOBS:-2}
 together_pids=()
 together_failed=0
+# A new run starts as soon as any running one has ended (not the oldest: a short run started
+# beside a long one would leave its core idle until the long one ends). The runs that ended
+# are found by polling (kill -0: bash reaps its children as they end), then waited for, which
+# gives their exit status (`wait -n` loses the status of a run that ended before it is called).
+together_reap() {
+  local pid alive
+  while :; do
+    alive=()
+    for pid in "${together_pids[@]}"; do
+      if kill -0 "$pid" 2> /dev/null; then alive+=("$pid"); else wait "$pid" || together_failed=1; fi
+    done
+    together_pids=("${alive[@]}")
+    [ ${#together_pids[@]} -lt "$TEST_JOBS" ] && return 0
+    sleep 0.1
+  done
+}
 together() {
-  if [ ${#together_pids[@]} -ge "$TEST_JOBS" ]; then
-    wait "${together_pids[0]}" || together_failed=1
-    together_pids=("${together_pids[@]:1}")
-  fi
+  [ ${#together_pids[@]} -lt "$TEST_JOBS" ] || together_reap
   local session
   session=$(mktemp -d "${TMPDIR:-/tmp}/together.XXXXXX")
   (
