@@ -41,11 +41,14 @@ std::string periodKey(const std::string &station, double T) {
   return key;
 }
 
+// The vertical displacement component: y in 2D, z in 3D.
+int verticalComponent(const problem::Elastodynamics &model) { return (int)model.dim - 1; }
+
 } // namespace
 
 PetscErrorCode RunAnswers::Setup(const problem::Elastodynamics &model, const io::Stations &stations) {
   MPI_Comm  comm     = model.comm;
-  const int vertical = (int)model.dim - 1; // y in 2D, z in 3D
+  const int vertical = verticalComponent(model);
   char      iface[256] = "base", structure[256] = "block_top", free_field[256] = "free_field", body[256] = "";
   char     *rocking[2] = {nullptr, nullptr};
   PetscInt  nrock = 2, nperiods = kMaxPeriods;
@@ -126,10 +129,10 @@ PetscErrorCode RunAnswers::SetGeostatic(const problem::Elastodynamics &model, io
   std::vector<double> v;
   PetscFunctionBeginUser;
   if (!active_ || structure_ < 0) PetscFunctionReturn(0);
-  PetscCall(stations.Values(model.dm, u_geo, u_geo, {{structure_, 0, (int)model.dim - 1}}, &v));
+  PetscCall(stations.Values(model.dm, u_geo, u_geo, {{structure_, 0, verticalComponent(model)}}, &v));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, v.data(), 1, MPI_DOUBLE, MPI_SUM, model.comm));
   geostatic_vertical_ = v[0];
-  geostatic_    = true;
+  geostatic_          = true;
   PetscFunctionReturn(0);
 }
 
@@ -163,7 +166,7 @@ PetscErrorCode RunAnswers::Update(const problem::Elastodynamics &model, io::Stat
     structure_spectrum_->add(t, v[0]);
     structure_ax_.push_back(v[0]);
     structure_peak_ = std::max(structure_peak_, std::fabs(v[0]));
-    structure_vertical_   = v[1];
+    structure_vertical_ = v[1];
     v += 2;
   }
   if (free_field_ >= 0) {
