@@ -19,7 +19,7 @@ namespace slipwave::app {
 namespace {
 
 constexpr PetscInt kMagic   = 0x53574350; // "SWCP"
-constexpr PetscInt kVersion = 10; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
+constexpr PetscInt kVersion = 11; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
                                  // 4: state only (no RHS force parts, no attenuation trial);
                                  // 5: the scene options after the header, a seal at the end;
                                  // 6: the pore pressure state and the ledger's fluid terms;
@@ -31,6 +31,7 @@ constexpr PetscInt kVersion = 10; // 2: ledger with `anelastic`, attenuation mem
                                  // 9: the pore pressure's cavities and the ledger's cavitation work
                                  // 10: each hysteretic point's state opens with a header (its
                                  //    tail, physics/hysteretic_soil.hpp)
+                                 // 11: each interface's count of open/closed switches after its drift
 constexpr PetscInt kHeader  = 10;
 
 // The ledger as a flat array, in a fixed order.
@@ -127,7 +128,12 @@ PetscErrorCode CheckpointWrite(const std::string &path, const CheckpointState &s
   std::vector<double> scalars = {time, dt, *s.next_output};
   for (double x : ledgerArray(*s.ledger)) scalars.push_back(x);
   for (PetscReal t : *s.frame_times) scalars.push_back(t);
-  for (const auto &iface : s.model->interfaces) scalars.push_back(iface.maxDrift());
+  for (const auto &iface : s.model->interfaces) {
+    interface::InterfaceTotals totals;
+    PetscCall(iface.Totals(&totals));
+    scalars.push_back(iface.maxDrift());
+    scalars.push_back((double)totals.switches);
+  }
   if (s.model->pore) scalars.push_back(s.model->pore->t);
   PetscCall(PetscViewerBinaryWrite(viewer, scalars.data(), (PetscInt)scalars.size(), PETSC_DOUBLE));
   for (Vec x : stateVectors(s)) PetscCall(VecView(x, viewer));
@@ -204,11 +210,12 @@ PetscErrorCode CheckpointVerify(MPI_Comm comm, const std::string &path) {
 
 PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s) {
   MPI_Comm    comm = s.model->comm;
-  PetscMPIInt size;
+  PetscMPIInt size, rank;
   PetscViewer viewer;
   PetscInt    header[kHeader];
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(PetscViewerBinaryOpen(comm, path.c_str(), FILE_MODE_READ, &viewer));
   PetscCall(PetscViewerBinarySetSkipInfo(viewer, PETSC_TRUE));
   PetscCall(readSceneHeader(comm, path, viewer, header));
@@ -220,7 +227,7 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
   PetscCheck(header[9] == (PetscInt)(s.model->pore != nullptr), comm, PETSC_ERR_USER_INPUT,
              "-restart = %s belongs to another scene (saturated regions: %s); allowed: the scene options of the run that wrote it", path.c_str(), header[9] ? "yes" : "no");
   const PetscInt      nframes = header[6], ninterfaces = header[5];
-  std::vector<double> scalars(3 + kLedgerSize + nframes + ninterfaces + header[9]);
+  std::vector<double> scalars(3 + kLedgerSize + nframes + 2 * ninterfaces + header[9]);
   PetscCall(PetscViewerBinaryRead(viewer, scalars.data(), (PetscInt)scalars.size(), nullptr, PETSC_DOUBLE));
   PetscCall(TSSetTime(s.ts, scalars[0]));
   PetscCall(TSSetTimeStep(s.ts, scalars[1]));
@@ -244,7 +251,9 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
     std::vector<double> state;
     PetscCall(loadLocalArray(comm, (PetscInt)iface.pairs().id.size() * iface.stateWidth(), viewer, &state));
     iface.loadState(state.data());
-    iface.setMaxDrift(scalars[3 + kLedgerSize + nframes + k]);
+    iface.setMaxDrift(scalars[3 + kLedgerSize + nframes + 2 * k]);
+    // The run's total so far, held by one rank (Totals sums the ranks).
+    iface.setSwitches(rank == 0 ? (PetscInt)scalars[3 + kLedgerSize + nframes + 2 * k + 1] : 0);
   }
   PetscCall(problem::ElastodynamicsDrainOpenGaps(s.model));
   // Every station has one row per step taken so far (steps 0 .. step).
@@ -284,7 +293,7 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
   for (Vec x : poreStateVectors(s)) PetscCall(VecLoad(x, viewer));
   if (s.model->pore) {
     // The pore pressure update's reference state is the restored one, not the first RHS's.
-    s.model->pore->t       = scalars[3 + kLedgerSize + nframes + ninterfaces];
+    s.model->pore->t       = scalars[3 + kLedgerSize + nframes + 2 * ninterfaces];
     s.model->pore->started = true;
     PetscCall(porous::PorePressureDiffuseStep(s.model->pore, scalars[1]));
     // The interfaces' law starts the next step from the restored pressure.

@@ -379,7 +379,9 @@ PetscErrorCode solve(Run *r, TS ts) {
   PetscCall(closeOutputs(r));
   // Listed from the folder itself: it held none of these files before the run (output_dir.hpp).
   // The steps this process ran (after a restart, not those before it).
-  PetscCall(ReportEnd(r->model, r->ledger, OutputDirRunFiles(r->opt.output_dir), steps - r->restart_step, wall_end - r->wall_start, r->opt.output_dir));
+  PetscReal dt;
+  PetscCall(TSGetTimeStep(ts, &dt));
+  PetscCall(ReportEnd(r->model, r->ledger, r->step, dt, OutputDirRunFiles(r->opt.output_dir), steps - r->restart_step, wall_end - r->wall_start, r->opt.output_dir));
   if (r->answers.active()) {
     std::string answers;
     PetscCall(r->answers.Finish(r->model, r->opt.restart[0] != 0, r->opt.output_dir, &answers));

@@ -263,8 +263,20 @@ void InterfaceAssembler::openSoilDofs(std::vector<PetscInt> *dofs) const {
   }
 }
 
+namespace {
+
+template <int Dim>
+PetscInt switchedPairs(const std::vector<physics::InterfaceState<Dim>> &before, const std::vector<physics::InterfaceState<Dim>> &after) {
+  PetscInt n = 0;
+  for (size_t p = 0; p < after.size(); ++p) n += (before[p].status == physics::InterfaceStatus::Open) != (after[p].status == physics::InterfaceStatus::Open);
+  return n;
+}
+
+} // namespace
+
 void InterfaceAssembler::Commit() {
   if (!has_trial_) return;
+  switches_ += dim_ == 2 ? switchedPairs<2>(states2_, trial_states2_) : switchedPairs<3>(states3_, trial_states3_);
   states2_.swap(trial_states2_);
   states3_.swap(trial_states3_);
   jump_prev_.swap(trial_jump_);
@@ -388,12 +400,12 @@ PetscErrorCode InterfaceAssembler::Totals(InterfaceTotals *t) const {
   if (dim_ == 2) totalsOf<2>(law, pairs_, states2_, &local);
   else totalsOf<3>(law, pairs_, states3_, &local);
   double   sums[2] = {local.stored, local.dissipated};
-  PetscInt counts[3] = {local.n_stick, local.n_slip, local.n_open};
+  PetscInt counts[4] = {local.n_stick, local.n_slip, local.n_open, switches_};
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, counts, 3, MPIU_INT, MPI_SUM, comm_));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, counts, 4, MPIU_INT, MPI_SUM, comm_));
   double drift = max_drift_;
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &drift, 1, MPI_DOUBLE, MPI_MAX, comm_));
-  *t = InterfaceTotals{sums[0], sums[1], drift, counts[0], counts[1], counts[2]};
+  *t = InterfaceTotals{sums[0], sums[1], drift, counts[0], counts[1], counts[2], counts[3]};
   PetscFunctionReturn(0);
 }
 

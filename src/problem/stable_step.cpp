@@ -11,12 +11,8 @@
 namespace slipwave::problem {
 namespace {
 
-// Default fractions of the stable step. With contact interfaces the open/close switching of a
-// pair is not covered by the linear bound: in the two-bar impact (penalty factor 1) the energy
-// grew by 2.5 % at 0.9 of the limit, 1.1 % at 0.7 and 0.5 % at 0.5 (the spec saw +0.09 % at
-// half the limit and +180 % at it), so interfaces get 0.5.
-constexpr PetscReal kSafetyBulk       = 0.9;
-constexpr PetscReal kSafetyInterfaces = 0.5;
+// Default fraction of the stable step without interfaces (with them: kSafetyInterfaces).
+constexpr PetscReal kSafetyBulk = 0.9;
 
 // K <= diag(rows) (Gershgorin row sums, or the spectral element bound times M): every
 // eigenvalue omega^2 of M^{-1} K is at most max_i rows_i / m_i. Held dofs do not vibrate.

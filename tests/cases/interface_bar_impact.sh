@@ -55,6 +55,8 @@ $IC station-window "$WORK/a" --station left_mid --column v_x --t0 0.035 --t1 0.0
 $IC station-window "$WORK/a" --station right_mid --column v_x --t0 0.035 --t1 0.06 --expected 1 --tol 0.02
 $IC open-traction "$WORK/a" --name gap --min-open 2
 $IC energy-growth "$WORK/a" --max-growth 0.01 --max-balance 1e-9
+# At the interfaces' default step (0.5 of the limit) the report says nothing of the switching.
+if grep -q "open/closed switches" "$WORK/a.log"; then echo "FAIL: a switching warning at the default step"; exit 1; fi
 
 echo "== B: L1 = 5 m at 2 m/s onto L2 = 15 m at rest"
 cat "$WORK/b.log"
@@ -66,3 +68,16 @@ $IC station-window "$WORK/b" --station right_mid --column v_x --t0 "$($PY -c "pr
 # after it, before the reflection returns: at rest, displaced by v0 L1 / c
 $IC station-window "$WORK/b" --station right_mid --column u_x --t0 "$($PY -c "print(7.5/$c + $t_sep + 0.0015)")" --t1 "$($PY -c "print(22.5/$c - 0.0015)")" --expected "$($PY -c "print(2*5/$c)")" --tol "$($PY -c "print(0.03*2*5/$c)")"
 $IC energy-growth "$WORK/b" --max-growth 0.01 --max-balance 1e-9
+
+echo "== C: A at 0.9 of the stable limit: the report counts the open/closed switches and warns"
+# A's two pairs start closed and open once each at the separation (no re-contact): 2 switches.
+# The count is checkpointed: a run stopped after the separation (step 1000 of 1588, t = 37.8 ms
+# against 2L/c = 28.3 ms) and restarted from there reports the same 2 at its end.
+line="warning: 2 open/closed switches of pairs on interface gap with the step at 0.90 of the stable limit"
+$SW $scene -time_step_safety 0.9 -output_dir "$WORK/c" > "$WORK/c.log"
+grep "open/closed switches" "$WORK/c.log"
+grep -q "$line" "$WORK/c.log"
+$SW $scene -time_step_safety 0.9 -ts_max_steps 1000 -checkpoint_interval 1000 -output_dir "$WORK/d" > "$WORK/d.log"
+$SW $scene -time_step_safety 0.9 -restart "$WORK/d/checkpoint.bin" -output_dir "$WORK/d" > "$WORK/d2.log"
+grep -q "$line" "$WORK/d2.log"
+echo "restarted after the separation: the same 2 switches"

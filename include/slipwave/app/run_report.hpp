@@ -32,9 +32,10 @@ void WriteRunInfo(const problem::Elastodynamics &model, const std::string &outpu
 // report's own resolved frequency asks for 10 nodes per wavelength at p = 1, this for 8).
 double LowPassCornerFrequency(const problem::Elastodynamics &model);
 
-// The interfaces' final states, the contact dashpots' work, steps and wall time, the energy
-// balance error and where the output is: files, the names of the run's files in it.
-PetscErrorCode ReportEnd(const problem::Elastodynamics &model, const problem::EnergyLedger &ledger, const std::vector<std::string> &files, PetscInt steps, double wall,
-                         const std::string &output_dir);
+// The interfaces' final states (and a warning when pairs opened or closed while the step, dt of the limit
+// `step`, was above kSafetyInterfaces of it), the contact dashpots' work, steps and wall time,
+// the energy balance error and where the output is: files, the names of the run's files in it.
+PetscErrorCode ReportEnd(const problem::Elastodynamics &model, const problem::EnergyLedger &ledger, const problem::StableStep &step, double dt, const std::vector<std::string> &files,
+                         PetscInt steps, double wall, const std::string &output_dir);
 
 } // namespace slipwave::app

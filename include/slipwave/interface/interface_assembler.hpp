@@ -23,6 +23,7 @@ struct InterfaceTotals {
   double dissipated  = 0; // plastic work plus energy lost at openings [J]
   double max_drift   = 0; // largest yield-surface drift returned so far [Pa]
   PetscInt n_stick = 0, n_slip = 0, n_open = 0;
+  PetscInt switches  = 0; // times a pair opened or closed (impacts), summed over the pairs and the run
 };
 
 class InterfaceAssembler {
@@ -77,6 +78,9 @@ public:
   void   loadState(const double *in);
   double maxDrift() const { return max_drift_; }
   void   setMaxDrift(double drift) { max_drift_ = drift; }
+  // Open/closed switches counted on this rank (Totals sums them); a restart gives the run's
+  // total to one rank.
+  void setSwitches(PetscInt n) { switches_ = n; }
   // Pairs (over all ranks) whose soil and structure nodes are owned by different ranks.
   PetscErrorCode CountCutPairs(Vec u_template, PetscInt *cut) const;
   // Per-pair fields of this rank's pairs for output, each value with its pair id.
@@ -118,6 +122,9 @@ private:
   double              contact_damping_ = 0;
   std::vector<double> dashpot_;   // normal dashpot c per pair [N s/m]
   double              max_drift_ = 0;
+  // Pairs that opened or closed at a commit: the switching the linear stable-step bound does
+  // not cover (problem/stable_step.hpp).
+  PetscInt            switches_ = 0;
   VecScatter          scatter_ = nullptr;
   Vec                 pair_u_ = nullptr, pair_f_ = nullptr;
   VecScatter          pore_scatter_ = nullptr; // the soil nodes' pore pressure (saturated soil side), or null
