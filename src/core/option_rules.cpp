@@ -211,9 +211,10 @@ bool numberAllowed(const Rule &rule, const std::string &entry) {
   if (rule.kind == Kind::RealOrAuto && entry == "auto") return true;
   if (rule.kind == Kind::RealOrNone && entry == "none") return true;
   double x = 0;
-  // A word PETSc cannot convert (or a fraction for an integer) is left to its parser, whose
-  // one-line message names the option already.
-  if (!fullNumber(entry, &x)) return true;
+  // A word PETSc's parser took (checkOne: its named constants) or a fraction for an integer:
+  // its parser's to judge where the option is read. Another word where a keyword may stand:
+  // the rule's message, which names the keyword.
+  if (!fullNumber(entry, &x)) return rule.kind == Kind::Real || rule.kind == Kind::Int;
   if (rule.kind == Kind::Int && std::isfinite(x) && x != std::floor(x)) return true;
   return inRange(x, rule.range);
 }
@@ -263,6 +264,16 @@ PetscErrorCode checkOne(MPI_Comm comm, const std::string &option, const char *va
   case Kind::Names:
     PetscCheck(n >= rule->min_entries && n <= rule->max_entries, comm, PETSC_ERR_USER_INPUT, "%s has %d values; allowed: %s", option.c_str(), n, rule->allowed);
     for (const std::string &e : parts) {
+      // A word for a plain number: PETSc's own parser now, before anything is written (it
+      // takes its named constants, DEFAULT, DECIDE, ...; its message for any other word gets
+      // the option's name). A number-or-keyword rule names its keyword below instead.
+      double x = 0;
+      if ((rule->kind == Kind::Real || rule->kind == Kind::Int) && !fullNumber(e, &x)) {
+        PetscReal real;
+        PetscInt  integer;
+        if (rule->kind == Kind::Int) PetscCall(PetscOptionsStringToInt(e.c_str(), &integer));
+        else PetscCall(PetscOptionsStringToReal(e.c_str(), &real));
+      }
       const bool bad = rule->kind == Kind::Names ? !IsSafeFileName(e) : !numberAllowed(*rule, e);
       PetscCheck(!bad, comm, PETSC_ERR_USER_INPUT, "%s = %s; allowed: %s", option.c_str(), value.c_str(), rule->allowed);
     }

@@ -100,6 +100,14 @@ stations151=$(seq 1 151 | awk '{printf "%s0.5,%g", (NR > 1 ? "," : ""), 0.5 + 0.
 control=$(cd "$runs" && "$bin" $base $soil 2>&1) || { echo "FAIL: the control run (base options + valid material) exits non-zero:"; echo "$control"; exit 1; }
 grep -q "stable step: 2.0412e-03 s" <<<"$control" || { echo "FAIL: the control's stable step changed; update dt_above_stable_limit:"; echo "$control"; exit 1; }
 echo "ok: control run succeeds"
+# A word where a number belongs is caught before anything is written: a real run (no
+# -dry_run) stops with its line and leaves no output folder behind.
+for word in "-ts_max_time abc" "-mesh_box_faces 1,x" "-material_soil_rho heavy"; do
+  rm -rf "$runs/word"; mkdir "$runs/word"
+  (cd "$runs/word" && "$bin" ${base/-dry_run/} $soil $word > /dev/null 2>&1) && { echo "FAIL: $word accepted"; exit 1; }
+  [ -z "$(ls -A "$runs/word")" ] || { echo "FAIL: $word left $(ls -A "$runs/word") behind"; exit 1; }
+done
+echo "ok: a word for a number stops before the output folder is made"
 rm -rf "$runs/out"
 inputs_before=$(cd "$tmp" && find . | sort)
 
