@@ -376,6 +376,17 @@ void BulkOperator::elementStiffness(PetscInt e, double *K) const {
   std::memcpy(K, &stiffness_[(size_t)cell_matrix_[e] * n * n], n * n * sizeof(double));
 }
 
+void BulkOperator::elementStiffnessTimes(PetscInt e, const double *ue, double *fe) const {
+  if (degree_ > 1) return spectral_.elementForce(e, ue, fe);
+  const PetscInt n = nen_ * dim_;
+  const double  *K = &stiffness_[(size_t)cell_matrix_[e] * n * n];
+  for (PetscInt r = 0; r < n; ++r) {
+    double s = 0;
+    for (PetscInt c = 0; c < n; ++c) s += K[r * n + c] * ue[c];
+    fe[r] = s;
+  }
+}
+
 void BulkOperator::cellStress(const PetscScalar *u, PetscScalar *stress) const {
   double sigma[kStressComponents];
   for (PetscInt c = 0; c < ncell_; ++c) {

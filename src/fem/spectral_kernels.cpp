@@ -114,9 +114,13 @@ void spectralLumpedMass(int dim, int p, const double *wdet, double rho, double *
 }
 
 void spectralElementForce(int dim, int p, const double *wdet, const double *jinv, const LameParameters &m, const double *ue, double *fe) {
-  const Gll1D   g(p);
+  const Gll1D g(p);
+  spectralElementForce(dim, p, g.D, wdet, jinv, m, ue, fe);
+}
+
+void spectralElementForce(int dim, int p, const double *D, const double *wdet, const double *jinv, const LameParameters &m, const double *ue, double *fe) {
   const ForceFn f = dim == 2 ? forceOfDegree<2>(p) : forceOfDegree<3>(p);
-  f(g.D, wdet, jinv, m, ue, fe);
+  f(D, wdet, jinv, m, ue, fe);
 }
 
 namespace {

@@ -218,6 +218,11 @@ void SpectralOperator::elementStiffness(PetscInt e, double *K) const {
   spectralElementStiffness((int)dim_, (int)degree_, &wdet_[(size_t)r * nq_], &jinv_[(size_t)r * nq_ * dim_ * dim_], record_material_[r].lame, K);
 }
 
+void SpectralOperator::elementForce(PetscInt e, const double *ue, double *fe) const {
+  const PetscInt r = record_[e];
+  spectralElementForce((int)dim_, (int)degree_, D_.data(), &wdet_[(size_t)r * nq_], &jinv_[(size_t)r * nq_ * dim_ * dim_], record_material_[r].lame, ue, fe);
+}
+
 void SpectralOperator::stressAt(PetscInt e, const double *xi, const PetscScalar *u, double *sigma, const LameParameters *lame) const {
   double ue[kMaxSpectralDofs];
   for (PetscInt a = 0; a < nq_; ++a)

@@ -21,15 +21,18 @@ struct Drm {
   double                      surface = 0;                // vertical coordinate of the free surface
   double                      reference_depth = 0, radial_min = 0;
   std::vector<double>         depths;                     // distinct depths of this rank's DRM nodes
-  // This rank's DRM nodes (nodes of its layer cells): local dof offset, depth index, delay p (xi - xi_min).
+  // This rank's DRM nodes (nodes of its layer elements, every GLL node at degree p > 1):
+  // local dof offset, depth index, delay p (xi - xi_min).
   std::vector<PetscInt>       node_offset;
   std::vector<size_t>         node_depth;
   std::vector<double>         node_delay;
   std::vector<double>         node_coords;                // dim per DRM node
-  // This rank's layer cells; per cell node: index into the DRM nodes and whether it is a b node.
-  std::vector<PetscInt>       cells;
-  std::vector<size_t>         cell_node;
-  std::vector<char>           cell_node_is_b;
+  // This rank's layer elements (the bulk operator's: the cells at degree 1); per element node:
+  // index into the DRM nodes and whether it is a b node.
+  std::vector<PetscInt>       elements;
+  std::vector<size_t>         element_node;
+  std::vector<char>           element_node_is_b;
+  std::vector<double>         scratch;                    // one layer element's vectors (DrmAddForce)
   physics::PlaneWaveHistories histories;
   std::string                 file;                       // -drm_free_field_file, or "" for the plane wave
   FieldFileHistories          file_histories;
@@ -37,14 +40,14 @@ struct Drm {
   std::vector<double>         u0;                         // dim per DRM node, at the current time
   // Damping of the forces (docs/drm.md, "Damped sites"): the stiffness-proportional Rayleigh
   // term beta K v0 with the solver's half-step velocity, and the constant-Q memory of each
-  // layer cell's rows, both from the committed state (the last accepted step), as the
+  // layer element's rows, both from the committed state (the last accepted step), as the
   // solver's own memory (medium/attenuation.hpp) is.
   double                      beta = 0;                   // Rayleigh's stiffness coefficient [s]
   std::vector<double>         omega;                      // relaxation frequencies w_l [rad/s]; empty: no constant Q
-  std::vector<double>         cell_weight;                // per layer cell: its region's Y_l (omega.size() each)
+  std::vector<double>         element_weight;             // per layer element: its region's Y_l (omega.size() each)
   std::vector<double>         u0_committed, v0;           // dim per DRM node: u0 at the committed time, the half-step velocity
-  std::vector<double>         memory_committed, memory_trial; // per layer cell row and mechanism
-  std::vector<double>         drive_committed, drive_trial;   // per layer cell row: its K_be u0_e or K_eb u0_b
+  std::vector<double>         memory_committed, memory_trial; // per layer element row and mechanism
+  std::vector<double>         drive_committed, drive_trial;   // per layer element row: its K_be u0_e or K_eb u0_b
   bool                        started = false, has_trial = false;
   double                      committed_time = 0, trial_time = 0;
   Vec                         f_local = nullptr, f_global = nullptr;
@@ -81,9 +84,9 @@ PetscErrorCode readOptions(MPI_Comm comm, PetscInt dim, Drm *d, DrmOptions *o, b
     PetscCall(PetscOptionsReal("-drm_incidence_angle", "angle of the incident wave from the vertical in the half-space [deg]: 0 <= angle < 90 (2D: -90 < angle < 90, negative travels toward -x)",
                                "DrmCreate", o->angle, &o->angle, &angle_set));
     PetscCall(PetscOptionsReal("-drm_azimuth", "3D: horizontal direction of travel [deg] from +x toward +y, any value", "DrmCreate", o->azimuth, &o->azimuth, &azimuth_set));
-    PetscCall(PetscOptionsRealArray("-drm_box", "interior Omega: cells with the centroid in xmin,xmax,ymin (2D) or xmin,xmax,ymin,ymax,zmin (3D) [m], open upward",
+    PetscCall(PetscOptionsRealArray("-drm_box", "interior Omega: elements with the centroid in xmin,xmax,ymin (2D) or xmin,xmax,ymin,ymax,zmin (3D) [m], open upward",
                                     "DrmCreate", box, &nbox, &box_set));
-    PetscCall(PetscOptionsInt("-drm_offset", "default interior: the mesh's bounding box shrunk by this many cells (h_min) on the sides and base, >= 1", "DrmCreate",
+    PetscCall(PetscOptionsInt("-drm_offset", "default interior: the mesh's bounding box shrunk by this many elements (the smallest one's size) on the sides and base, >= 1", "DrmCreate",
                               o->offset, &o->offset, nullptr));
     PetscCall(PetscOptionsString("-drm_regions", "interior Omega: these regions a,b (instead of -drm_box)", "DrmCreate", regions, regions, sizeof regions, &regions_set));
     PetscCall(d->incident.Read(comm, "drm_", HistoryRole::IncidentWave, PetscOptionsObject));
@@ -118,23 +121,26 @@ PetscErrorCode readOptions(MPI_Comm comm, PetscInt dim, Drm *d, DrmOptions *o, b
   PetscFunctionReturn(0);
 }
 
-void cellBounds(const fem::BulkOperator &bulk, PetscInt c, double lo[3], double hi[3]) {
+// The interior, the layer and the forces are made of the bulk operator's elements (degree 1:
+// the cells; degree p > 1: the spectral elements, with all their GLL nodes), so that the
+// forces are rows of the very operator the solver applies.
+void elementBounds(const fem::BulkOperator &bulk, PetscInt e, double lo[3], double hi[3]) {
   const PetscInt dim = bulk.dimension();
   for (int i = 0; i < 3; ++i) lo[i] = 1e300, hi[i] = -1e300;
-  for (PetscInt a = 0; a < bulk.nodesPerCell(); ++a)
+  for (PetscInt a = 0; a < bulk.nodesPerElement(); ++a)
     for (PetscInt i = 0; i < dim; ++i) {
-      lo[i] = std::min(lo[i], bulk.cellCoordinates(c)[a * dim + i]);
-      hi[i] = std::max(hi[i], bulk.cellCoordinates(c)[a * dim + i]);
+      lo[i] = std::min(lo[i], bulk.elementCoordinates(e)[a * dim + i]);
+      hi[i] = std::max(hi[i], bulk.elementCoordinates(e)[a * dim + i]);
     }
 }
 
-// Global bounding box of the mesh's nodes, through the cells' coordinates.
+// Global bounding box of the mesh's nodes, through the elements' coordinates.
 PetscErrorCode boundingBox(MPI_Comm comm, const fem::BulkOperator &bulk, double lo[3], double hi[3]) {
   PetscFunctionBeginUser;
   for (int i = 0; i < 3; ++i) lo[i] = 1e300, hi[i] = -1e300;
-  for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
+  for (PetscInt e = 0; e < bulk.elementCount(); ++e) {
     double clo[3], chi[3];
-    cellBounds(bulk, c, clo, chi);
+    elementBounds(bulk, e, clo, chi);
     for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], clo[i]), hi[i] = std::max(hi[i], chi[i]);
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, lo, 3, MPI_DOUBLE, MPI_MIN, comm));
@@ -265,12 +271,14 @@ PetscErrorCode sumOverRanks(DM dm, Vec local, Vec global, const std::function<vo
   PetscFunctionReturn(0);
 }
 
-// Omega (interior) flags per local cell; the b nodes (in Omega and in an exterior cell, on
-// any rank) as a ghosted local array with 1 on them.
-PetscErrorCode classify(const DrmSetting &m, const DrmOptions &o, const double lo[3], const double hi[3], double h, std::vector<char> *interior,
+// Omega (interior) flags per local element; the b nodes (in Omega and in an exterior element,
+// on any rank) as a ghosted local array with 1 on them. h_element, the smallest element's size,
+// is the unit of -drm_offset. At degree p > 1 a GLL node is a b node exactly when it lies on a
+// face between Omega and the exterior: a layer element's other GLL nodes are e nodes.
+PetscErrorCode classify(const DrmSetting &m, const DrmOptions &o, const double lo[3], const double hi[3], double h_element, std::vector<char> *interior,
                         std::vector<double> *b_flag) {
   const fem::BulkOperator &bulk = m.bulk;
-  const PetscInt           dim  = m.dim, nen = bulk.nodesPerCell();
+  const PetscInt           dim  = m.dim, nen = bulk.nodesPerElement();
   PetscFunctionBeginUser;
   std::vector<PetscInt> regions;
   for (const std::string &name : o.regions) {
@@ -280,34 +288,36 @@ PetscErrorCode classify(const DrmSetting &m, const DrmOptions &o, const double l
   }
   // Box: [xmin, xmax] x [ymin, ymax] horizontally (2D: x only) and above zmin.
   double blo[3], bhi[3];
-  for (PetscInt i = 0; i < dim; ++i) blo[i] = lo[i] + o.offset * h, bhi[i] = hi[i] - o.offset * h;
+  for (PetscInt i = 0; i < dim; ++i) blo[i] = lo[i] + o.offset * h_element, bhi[i] = hi[i] - o.offset * h_element;
   bhi[dim - 1] = 1e300;
   if (!o.box.empty()) {
     for (PetscInt i = 0; i + 1 < dim; ++i) blo[i] = o.box[2 * i], bhi[i] = o.box[2 * i + 1];
     blo[dim - 1] = o.box[2 * (dim - 1)];
   }
-  interior->assign(bulk.cellCount(), 0);
-  for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
+  interior->assign(bulk.elementCount(), 0);
+  for (PetscInt e = 0; e < bulk.elementCount(); ++e) {
     if (!o.regions.empty()) {
-      (*interior)[c] = std::find(regions.begin(), regions.end(), bulk.cellRegion(c)) != regions.end();
+      (*interior)[e] = std::find(regions.begin(), regions.end(), bulk.elementRegion(e)) != regions.end();
       continue;
     }
+    // The centroid as the mean of the element's nodes: at p > 1 the GLL nodes lie symmetric
+    // about the reference centre, so on the mesh's Q1 map it is the mean of the corners.
     bool in = true;
     for (PetscInt i = 0; i < dim; ++i) {
       double x = 0;
-      for (PetscInt a = 0; a < nen; ++a) x += bulk.cellCoordinates(c)[a * dim + i] / nen;
+      for (PetscInt a = 0; a < nen; ++a) x += bulk.elementCoordinates(e)[a * dim + i] / nen;
       in = in && blo[i] <= x && x <= bhi[i];
     }
-    (*interior)[c] = in;
+    (*interior)[e] = in;
   }
-  // Component 0 counts interior cells at a node, component 1 exterior ones.
+  // Component 0 counts interior elements at a node, component 1 exterior ones.
   Vec          local, global;
   PetscScalar *a;
   PetscCall(DMGetLocalVector(m.dm, &local));
   PetscCall(DMGetGlobalVector(m.dm, &global));
   PetscCall(sumOverRanks(m.dm, local, global, [&](PetscScalar *v) {
-    for (PetscInt c = 0; c < bulk.cellCount(); ++c)
-      for (PetscInt k = 0; k < nen; ++k) v[bulk.cellNodeOffset(c, k) + ((*interior)[c] ? 0 : 1)] += 1;
+    for (PetscInt e = 0; e < bulk.elementCount(); ++e)
+      for (PetscInt k = 0; k < nen; ++k) v[bulk.elementNodeOffset(e, k) + ((*interior)[e] ? 0 : 1)] += 1;
   }));
   PetscCall(DMGlobalToLocal(m.dm, global, INSERT_VALUES, local));
   PetscInt n;
@@ -321,34 +331,34 @@ PetscErrorCode classify(const DrmSetting &m, const DrmOptions &o, const double l
   PetscFunctionReturn(0);
 }
 
-// The layer: this rank's exterior cells with a b node, their nodes (coordinates, radial
+// The layer: this rank's exterior elements with a b node, their nodes (coordinates, radial
 // coordinate in node_delay for now, depth), and the global counts and extremes. With a site
-// (the plane wave) every layer cell must hold the site's material and damping at its depth.
+// (the plane wave) every layer element must hold the site's material and damping at its depth.
 PetscErrorCode collectLayer(const DrmSetting &m, Drm *d, const std::vector<char> &interior, const std::vector<double> &b_flag, const physics::LayeredSite *site,
                             const std::vector<PetscInt> &site_regions, PetscInt counts[3], double *deepest_out) {
   const MPI_Comm comm = m.comm;
-  const PetscInt dim = m.dim, vert = dim - 1, nen = m.bulk.nodesPerCell();
+  const PetscInt dim = m.dim, vert = dim - 1, nen = m.bulk.nodesPerElement();
   PetscFunctionBeginUser;
   std::vector<PetscInt> node_of_offset(b_flag.size(), -1);
   double                deepest = 0, radial_min = 1e300;
-  double                foreign_depth = -1;      // deepest layer cell whose material is not the site's there
-  for (PetscInt c = 0; c < m.bulk.cellCount(); ++c) {
-    if (interior[c]) continue;
+  double                foreign_depth = -1;      // deepest layer element whose material is not the site's there
+  for (PetscInt e = 0; e < m.bulk.elementCount(); ++e) {
+    if (interior[e]) continue;
     bool touches = false;
-    for (PetscInt a = 0; a < nen; ++a) touches = touches || b_flag[m.bulk.cellNodeOffset(c, a)] > 0;
+    for (PetscInt a = 0; a < nen; ++a) touches = touches || b_flag[m.bulk.elementNodeOffset(e, a)] > 0;
     if (!touches) continue;
     double clo[3], chi[3];
-    cellBounds(m.bulk, c, clo, chi);
+    elementBounds(m.bulk, e, clo, chi);
     const double                   zc   = d->surface - 0.5 * (clo[vert] + chi[vert]);
-    if (site && !sameMedium(m, site_regions[mediumAt(*site, zc)], m.bulk.cellRegion(c))) foreign_depth = std::max(foreign_depth, zc);
-    d->cells.push_back(c);
+    if (site && !sameMedium(m, site_regions[mediumAt(*site, zc)], m.bulk.elementRegion(e))) foreign_depth = std::max(foreign_depth, zc);
+    d->elements.push_back(e);
     ++counts[0];
     for (PetscInt a = 0; a < nen; ++a) {
-      const PetscInt off = m.bulk.cellNodeOffset(c, a);
+      const PetscInt off = m.bulk.elementNodeOffset(e, a);
       if (node_of_offset[off] < 0) {
         node_of_offset[off] = (PetscInt)d->node_offset.size();
         d->node_offset.push_back(off);
-        const double *x = &m.bulk.cellCoordinates(c)[a * dim];
+        const double *x = &m.bulk.elementCoordinates(e)[a * dim];
         d->node_coords.insert(d->node_coords.end(), x, x + dim);
         double        xi = 0;
         for (PetscInt i = 0; i < vert; ++i) xi += x[i] * d->radial[i];
@@ -357,8 +367,8 @@ PetscErrorCode collectLayer(const DrmSetting &m, Drm *d, const std::vector<char>
         deepest    = std::max(deepest, d->surface - x[vert]);
         d->depths.push_back(d->surface - x[vert]);
       }
-      d->cell_node.push_back((size_t)node_of_offset[off]);
-      d->cell_node_is_b.push_back(b_flag[off] > 0);
+      d->element_node.push_back((size_t)node_of_offset[off]);
+      d->element_node_is_b.push_back(b_flag[off] > 0);
     }
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &radial_min, 1, MPI_DOUBLE, MPI_MIN, comm));
@@ -366,10 +376,10 @@ PetscErrorCode collectLayer(const DrmSetting &m, Drm *d, const std::vector<char>
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, counts, 1, MPIU_INT, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &foreign_depth, 1, MPI_DOUBLE, MPI_MAX, comm));
   PetscCheck(foreign_depth < 0, comm, PETSC_ERR_USER_INPUT,
-             "-input_method drm: a DRM layer cell at depth %g m has a material or damping other than the free-field site's there (the mesh's first column); allowed: a layer "
+             "-input_method drm: a DRM layer element at depth %g m has a material or damping other than the free-field site's there (the mesh's first column); allowed: a layer "
              "in the horizontally layered soil, away from the structure",
              foreign_depth);
-  PetscCheck(counts[0] > 0, comm, PETSC_ERR_USER_INPUT, "-input_method drm: the DRM layer is empty (no cell outside the interior touches it); check -drm_box / -drm_regions");
+  PetscCheck(counts[0] > 0, comm, PETSC_ERR_USER_INPUT, "-input_method drm: the DRM layer is empty (no element outside the interior touches it); check -drm_box / -drm_regions");
   d->radial_min = radial_min;
   *deepest_out  = deepest;
   PetscFunctionReturn(0);
@@ -411,14 +421,14 @@ PetscErrorCode countNodes(const DrmSetting &m, const Drm *d, const std::vector<d
 
 // The damped forces' state: zero memory, the free field at rest.
 void setupDamping(const DrmSetting &m, Drm *d) {
-  const size_t rows = d->cells.size() * m.bulk.nodesPerCell() * m.dim;
+  const size_t rows = d->elements.size() * m.bulk.nodesPerElement() * m.dim;
   d->beta           = m.rayleigh.beta;
   if (m.attenuation) {
     d->omega = m.attenuation->omega;
-    for (PetscInt c : d->cells) {
-      const std::vector<double> &y = m.attenuation->region_models[m.bulk.cellRegion(c)].weight;
-      if (y.empty()) d->cell_weight.insert(d->cell_weight.end(), d->omega.size(), 0.0); // an elastic region's cell
-      else d->cell_weight.insert(d->cell_weight.end(), y.begin(), y.end());
+    for (PetscInt e : d->elements) {
+      const std::vector<double> &y = m.attenuation->region_models[m.bulk.elementRegion(e)].weight;
+      if (y.empty()) d->element_weight.insert(d->element_weight.end(), d->omega.size(), 0.0); // an elastic region's element
+      else d->element_weight.insert(d->element_weight.end(), y.begin(), y.end());
     }
   }
   d->u0_committed.assign(d->u0.size(), 0.0);
@@ -439,7 +449,7 @@ PetscErrorCode report(const DrmSetting &m, Drm *d, const DrmOptions &o, const Pe
     std::snprintf(buf, sizeof buf, "  input: Domain Reduction Method, free field from %s: %zu samples every %g s from %g s", d->file.c_str(), d->file_histories.samples,
                   d->file_histories.dt, d->file_histories.t0);
     d->report.push_back(buf);
-    std::snprintf(buf, sizeof buf, "    DRM layer: %" PetscInt_FMT " cells, %" PetscInt_FMT " boundary (b) and %" PetscInt_FMT " exterior (e) nodes", counts[0], counts[1],
+    std::snprintf(buf, sizeof buf, "    DRM layer: %" PetscInt_FMT " elements, %" PetscInt_FMT " boundary (b) and %" PetscInt_FMT " exterior (e) nodes", counts[0], counts[1],
                   counts[2]);
     d->report.push_back(buf);
     PetscFunctionReturn(0);
@@ -450,7 +460,7 @@ PetscErrorCode report(const DrmSetting &m, Drm *d, const DrmOptions &o, const Pe
   std::snprintf(buf, sizeof buf, "  input: Domain Reduction Method, %s wave at %g deg from the vertical%s, p = %.4g s/m; %s", kWaves[o.wave], d->angle, direction,
                 d->field.horizontalSlowness(), d->incident.describe().c_str());
   d->report.push_back(buf);
-  std::snprintf(buf, sizeof buf, "    DRM layer: %" PetscInt_FMT " cells, %" PetscInt_FMT " boundary (b) and %" PetscInt_FMT " exterior (e) nodes; the wave's reference point: depth %g m, %s = %g m",
+  std::snprintf(buf, sizeof buf, "    DRM layer: %" PetscInt_FMT " elements, %" PetscInt_FMT " boundary (b) and %" PetscInt_FMT " exterior (e) nodes; the wave's reference point: depth %g m, %s = %g m",
                 counts[0], counts[1], counts[2], d->reference_depth, dim == 2 ? "x" : "radial coordinate", d->radial_min);
   d->report.push_back(buf);
   std::string layers;
@@ -486,10 +496,6 @@ PetscErrorCode DrmCreate(const DrmSetting &m, Drm **out) {
     delete d;
     PetscFunctionReturn(0);
   }
-  // The layer forces use each cell's Q1 stiffness (cellStiffness), which spectral elements
-  // do not have: the layer would be the sub-cells', not the elements' operator.
-  PetscCheck(m.bulk.degree() == 1, comm, PETSC_ERR_USER_INPUT,
-             "-input_method drm with -element_degree = %" PetscInt_FMT "; allowed: -element_degree 1, or -input_method base", m.bulk.degree());
   PetscCheck(m.input_wave == InputWave::None, comm, PETSC_ERR_USER_INPUT,
              "-input_wave = %s with -input_method drm; allowed: -input_wave none (DRM brings the wave in through its layer, -drm_wave)", inputWaveName(m.input_wave));
   d->wave    = (physics::PlaneWaveType)o.wave;
@@ -516,8 +522,8 @@ PetscErrorCode DrmCreate(const DrmSetting &m, Drm **out) {
 
   std::vector<char>   interior;
   std::vector<double> b_flag;
-  PetscCall(classify(m, o, lo, hi, h, &interior, &b_flag));
-  PetscInt counts[3] = {0, 0, 0}; // layer cells, b nodes, e nodes
+  PetscCall(classify(m, o, lo, hi, m.bulk.minElementSize(), &interior, &b_flag));
+  PetscInt counts[3] = {0, 0, 0}; // layer elements, b nodes, e nodes
   double   deepest;
   PetscCall(collectLayer(m, d, interior, b_flag, plane ? &site : nullptr, site_regions, counts, &deepest));
   d->reference_depth = plane ? std::max(deepest, d->field.halfspaceDepth()) : 0;
@@ -580,7 +586,7 @@ void planeWaveDisplacements(Drm *d, PetscInt dim, double t) {
 
 PetscErrorCode DrmAddForce(Drm *d, const DrmSetting &m, TS ts, PetscReal t, Vec f) {
   constexpr int  kMaxMechanisms = 8;
-  const PetscInt dim = m.dim, nen = m.bulk.nodesPerCell(), nd = nen * dim;
+  const PetscInt dim = m.dim, nen = m.bulk.nodesPerElement(), nd = nen * dim;
   const size_t   L = d->omega.size();
   PetscFunctionBeginUser;
   // Before the first commit the trial starts at t (a zero interval), like the solver's memory.
@@ -602,28 +608,38 @@ PetscErrorCode DrmAddForce(Drm *d, const DrmSetting &m, TS ts, PetscReal t, Vec 
     for (size_t k = 0; k < d->u0.size(); ++k) d->v0[k] = t > t_committed ? (d->u0[k] - d->u0_committed[k]) / (t - t_committed) : 0.0;
   physics::MemoryUpdate upd[kMaxMechanisms];
   for (size_t l = 0; l < L; ++l) upd[l] = physics::memoryUpdate(d->omega[l], t - t_committed);
+  // A layer element's rows: K applied to u0 on its e nodes alone (zero on its b nodes) is
+  // K_be u0_e on its b rows, and applied to u0 on its b nodes alone, K_eb u0_b on its e rows.
+  // Each is one product of the solver's own element operator (degree > 1 its sum-factorised
+  // kernel: cheaper than a stored element matrix, docs/drm.md), and two more give K v0.
+  d->scratch.resize(5 * (size_t)nd);
+  double *part = d->scratch.data();                              // u0 or v0 on one side's nodes
+  double *ku[2] = {part + nd, part + 2 * nd}, *kv[2] = {part + 3 * nd, part + 4 * nd}; // [0]: of the e part, [1]: of the b part
   PetscScalar *fl;
   PetscCall(VecZeroEntries(d->f_local));
   PetscCall(VecGetArray(d->f_local, &fl));
-  for (size_t ci = 0; ci < d->cells.size(); ++ci) {
-    const double *K     = m.bulk.cellStiffness(d->cells[ci]);
-    const size_t *nodes = &d->cell_node[ci * nen];
-    const char   *is_b  = &d->cell_node_is_b[ci * nen];
+  for (size_t ei = 0; ei < d->elements.size(); ++ei) {
+    const PetscInt e     = d->elements[ei];
+    const size_t  *nodes = &d->element_node[ei * nen];
+    const char    *is_b  = &d->element_node_is_b[ei * nen];
+    auto product = [&](const std::vector<double> &field, bool b_side, double *out) {
+      for (PetscInt a = 0; a < nen; ++a)
+        for (PetscInt i = 0; i < dim; ++i) part[a * dim + i] = (is_b[a] != 0) == b_side ? field[dim * nodes[a] + i] : 0.0;
+      m.bulk.elementStiffnessTimes(e, part, out);
+    };
+    for (int side = 0; side < 2; ++side) {
+      product(d->u0, side == 1, ku[side]);
+      if (d->beta > 0) product(d->v0, side == 1, kv[side]);
+    }
     for (PetscInt a = 0; a < nen; ++a)
       for (PetscInt i = 0; i < dim; ++i) {
         // P_b = -F_be u0_e on b rows, P_e = +F_eb u0_b on e rows, F the layer's internal force:
         // K u0 + beta K v0 - (constant-Q memory driven by K u0).
-        double s = 0, sv = 0;
-        for (PetscInt b = 0; b < nen; ++b) {
-          if (is_b[a] == is_b[b]) continue;
-          for (PetscInt j = 0; j < dim; ++j) {
-            s += K[(a * dim + i) * nd + b * dim + j] * d->u0[dim * nodes[b] + j];
-            sv += K[(a * dim + i) * nd + b * dim + j] * d->v0[dim * nodes[b] + j];
-          }
-        }
-        double        force = s + d->beta * sv;
-        const size_t  row   = ci * nd + a * dim + i;
-        const double *y     = L ? &d->cell_weight[ci * L] : nullptr;
+        const int     other = is_b[a] ? 0 : 1;
+        const size_t  r     = a * dim + i, row = ei * nd + r;
+        const double  s     = ku[other][r];
+        double        force = s + (d->beta > 0 ? d->beta * kv[other][r] : 0.0);
+        const double *y     = L ? &d->element_weight[ei * L] : nullptr;
         for (size_t l = 0; l < L; ++l) {
           const double z = upd[l].decay * d->memory_committed[row * L + l] + y[l] * (upd[l].end * s + upd[l].start * d->drive_committed[row]);
           d->memory_trial[row * L + l] = z;

@@ -19,14 +19,21 @@
 # 5. A negative angle travels toward -x: the mirror image of the +20 deg run (the model is
 #    symmetric about x = 0): v_x(60, 0) = -v_x(-60, 0) and v_y equal, to round-off (1e-10 of the peak).
 # 6. 2 ranks give the 1-rank records to round-off inside Omega (1e-10 of each quantity's peak, the bound of
-#    tests/cases/mpi_ranks.sh): the layer's forces are per-cell sums scattered like K u.
+#    tests/cases/mpi_ranks.sh): the layer's forces are per-element sums scattered like K u.
+# SEM_DEGREE=p runs it with ceil(160 / p) x ceil(80 / p) elements of degree p (the same GLL
+# nodes, tests/cases/sem_drm.sh): the layer is one element (e = 1.25 p m) thick, 2 elements
+# in, and the stations next to it and the reference point move with it.
 set -eu
 . tests/tools/lib.sh
 . tests/tools/together.sh
-model="-regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -mesh_box_faces 160,80 -mesh_box_lower -100,-100
+e=$($PY -c "print(200 / $(elements 160))")  # element size [m]
+inner=$($PY -c "print(100 - 2 * $e)")       # Omega: |x| <= inner, y >= -inner
+near=$($PY -c "print($inner - 1.5)")        # stations 1.5 m inside Omega's sides and base
+model="-regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -mesh_box_faces $(elements 160),$(elements 80)
+ -element_degree $DEGREE -mesh_box_lower -100,-100
  -mesh_box_upper 100,0 -bc_left_type absorbing -bc_right_type absorbing -bc_bottom_type absorbing -input_method drm -drm_stf ricker -drm_f0 3
  -drm_t0 0.4 -drm_amplitude 0.1 -ts_max_time 1.3 -output_fields 0 -progress_interval 100000
- -station_coordinates -60,0,0,0,60,0,0,-50,-96,-50,96,-30,0,-96,-99.5,-50,99.5,-50,0,-99.5,-99.5,-99.5,99.5,-10
+ -station_coordinates -60,0,0,0,60,0,0,-50,-$near,-50,$near,-30,0,-$near,-99.5,-50,99.5,-50,0,-99.5,-99.5,-99.5,99.5,-10
  -station_names s1,s2,s3,mid,left_in,right_in,base_in,left_out,right_out,base_out,corner_out,right_top_out"
 # The 1-rank runs are independent: two at a time (tests/tools/together.sh); the 2-rank run
 # alone after them; then the checks.
@@ -35,7 +42,7 @@ together $SW $model -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/sv" 
 together $SW $model -drm_wave p -drm_incidence_angle 30 -output_dir "$WORK/p" > "$WORK/p.log"
 together $SW $model -drm_wave sv -drm_incidence_angle 40 -output_dir "$WORK/sv40" > "$WORK/sv40.log"
 together $SW $model -drm_wave sv -drm_incidence_angle -20 -output_dir "$WORK/sv_mirror" > "$WORK/sv_mirror.log"
-together $SW $model_regions -material_inner_rho 2000 -material_inner_vp 400 -material_inner_vs 200 -region_inner_box -97.5,97.5,-97.5,0 -drm_regions inner \
+together $SW $model_regions -material_inner_rho 2000 -material_inner_vp 400 -material_inner_vs 200 -region_inner_box -$inner,$inner,-$inner,0 -drm_regions inner \
   -drm_wave sv -drm_incidence_angle 20 -output_dir "$WORK/sv_regions" > "$WORK/sv_regions.log"
 together_wait
 cat "$WORK/sv.log" "$WORK/p.log" "$WORK/sv40.log" "$WORK/sv_mirror.log" "$WORK/sv_regions.log"
@@ -44,20 +51,21 @@ $CHECK energy "$WORK/sv/energy.csv" --max-error 1e-9
 $CHECK energy "$WORK/p/energy.csv" --max-error 1e-9
 $CHECK stations-equal "$WORK/sv" "$WORK/sv_regions" --names s1,s2,mid,left_in,base_in --tol 1e-10
 $CHECK stations-equal "$WORK/sv" "$WORK/sv2" --names s1,s2,mid,left_in,base_in --tol 1e-10
-$PY - "$WORK" <<'PY'
+$PY - "$WORK" "$e" <<'PY'
 import sys
 import numpy as np
 sys.path.insert(0, "tests/tools")
 from plane_wave_halfspace import HalfspacePlaneWave, beyond_critical_velocity, ricker_velocity
-w = sys.argv[1]
-inside = dict(s1=(-60, 0), s2=(0, 0), s3=(60, 0), mid=(0, -50), left_in=(-96, -50), right_in=(96, -30), base_in=(0, -96))
+w, e = sys.argv[1], float(sys.argv[2])
+near = 100 - 2 * e - 1.5
+inside = dict(s1=(-60, 0), s2=(0, 0), s3=(60, 0), mid=(0, -50), left_in=(-near, -50), right_in=(near, -30), base_in=(0, -near))
 outside = ("left_out", "right_out", "base_out", "corner_out", "right_top_out")
 v = lambda t: ricker_velocity(t, 0.1, 3.0, 0.4)
 ok = True
 for run, wave, angle in (("sv", "sv", 20), ("p", "p", 30), ("sv40", "sv", 40)):
-    # The reference point the run reports: the upstream e nodes (x = -100 + h, h = 1.25 m: Omega starts 2 cells in at
-    # -97.5 and the layer is one cell thick), at the depth of the deepest e nodes, 100 - h.
-    xr, zr = -98.75, 98.75
+    # The reference point the run reports: the upstream e nodes (x = -100 + e: Omega starts 2 elements in at
+    # -100 + 2 e and the layer is one element thick), at the depth of the deepest e nodes, 100 - e.
+    xr, zr = -100 + e, 100 - e
     for n, (x, y) in inside.items():
         d = np.genfromtxt(f"{w}/{run}/stations/{n}.csv", delimiter=",", names=True)
         if wave == "p" or angle < 30:  # below SV's critical angle asin(vs/vp) = 30 deg: real coefficients

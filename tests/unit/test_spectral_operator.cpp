@@ -84,6 +84,13 @@ PetscErrorCode checkForce(int dim, int p, bool warped) {
       for (PetscInt c = 0; c < n; ++c) want[op.elementNodeOffset(e, r / dim) + r % dim] += K[r * n + c] * u[op.elementNodeOffset(e, c / dim) + c % dim];
     op.addStiffnessTimes(op.subset({e}), u.data(), fe.data());
     unit::near(roundoffDifference(fe, want, rowabs, u), 0, 0, 1e-14, tag + "elementStiffness x u = the operator on that element");
+    // elementForce on the element's own vector (node-major), scattered like the operator.
+    std::vector<double> ue(n), ke(n);
+    for (PetscInt r = 0; r < n; ++r) ue[r] = u[op.elementNodeOffset(e, r / dim) + r % dim];
+    op.elementForce(e, ue.data(), ke.data());
+    std::fill(fe.begin(), fe.end(), 0.0);
+    for (PetscInt r = 0; r < n; ++r) fe[op.elementNodeOffset(e, r / dim) + r % dim] += ke[r];
+    unit::near(roundoffDifference(fe, want, rowabs, u), 0, 0, 1e-14, tag + "elementForce(u_e) = elementStiffness x u_e");
   }
   // Mass of the block: rho x its volume per component (box: 4 x 3 (x 2) unit cubes).
   std::vector<double> mass(m.ndof, 0.0);

@@ -60,9 +60,11 @@ public:
   PetscInt      elementRegion(PetscInt e) const { return degree_ == 1 ? cell_region_[e] : spectral_.elementRegion(e); }
   const double *elementCoordinates(PetscInt e) const { return degree_ == 1 ? cellCoordinates(e) : spectral_.elementCoordinates(e); }
   PetscInt      cellElement(PetscInt c) const { return degree_ == 1 ? c : cell_element_[c]; }
-  // Degree 1 only: the stiffness of cell c in the cells' node order (cellNodeOffset), kept in
-  // place for loops that read it every step (the DRM layer).
-  const double *cellStiffness(PetscInt c) const { return &stiffness_[(size_t)cell_matrix_[c] * nen_ * dim_ * nen_ * dim_]; }
+  // fe = K_e ue for element e alone (node-major, nodesPerElement dim values each; fe
+  // overwritten), the matrix addStiffnessTimes applies: degree 1 the stored cell matrix,
+  // degree > 1 the sum-factorised kernel. For element vectors that are no mesh field (the DRM
+  // layer's free field on one side of the layer).
+  void elementStiffnessTimes(PetscInt e, const double *ue, double *fe) const;
   // Stress (6 per cell: xx,yy,zz,xy,yz,xz) at the centroid of each of this rank's cells, in cell
   // order (degree > 1: by the element's basis at the sub-cell's centre).
   void cellStress(const PetscScalar *u_local, PetscScalar *stress) const;

@@ -33,6 +33,9 @@ void spectralLumpedMass(int dim, int p, const double *wdet, double rho, double *
 
 // fe = K ue by sum factorisation (fe overwritten; ue, fe node-major, dim * (p+1)^dim each).
 void spectralElementForce(int dim, int p, const double *wdet, const double *jinv, const LameParameters &m, const double *ue, double *fe);
+// The same with the 1D derivative matrix D of degree p given (numerics::lagrangeDerivativeMatrix
+// on the GLL points), for callers that apply it every step and keep D.
+void spectralElementForce(int dim, int p, const double *D, const double *wdet, const double *jinv, const LameParameters &m, const double *ue, double *fe);
 
 // The dense element matrix K (N x N row-major, N = dim (p+1)^dim), column by column with
 // the same kernel, so it is exactly the operator the force applies.

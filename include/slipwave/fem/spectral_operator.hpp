@@ -54,6 +54,10 @@ public:
   // Element matrix of element e: (dim (p+1)^dim)^2 values row-major, row a*dim+i (node-major),
   // the operator addStiffnessTimes applies (for assembling K where a static solve needs it).
   void elementStiffness(PetscInt e, double *K) const;
+  // fe = K_e ue for element e alone, by the same sum-factorised kernel (ue, fe node-major,
+  // dim (p+1)^dim values; fe overwritten): for element vectors that are no mesh field, such as
+  // the DRM layer's free field on one side of the layer (input/drm).
+  void elementForce(PetscInt e, const double *ue, double *fe) const;
   // Stress (xx, yy, zz, xy, yz, xz) in element e at the reference point xi; lame: other
   // moduli than the element's (null: the element's).
   void stressAt(PetscInt e, const double *xi, const PetscScalar *u_local, double *sigma, const LameParameters *lame = nullptr) const;

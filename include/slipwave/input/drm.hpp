@@ -4,15 +4,17 @@
 // total motion and the exterior only the scattered one, which the absorbing sides and base
 // take away.
 //
-// Geometry. Omega is a set of cells: those whose centroid lies in -drm_box (2D
-// xmin,xmax,ymin; 3D xmin,xmax,ymin,ymax,zmin; open upward), by default the mesh's bounding
-// box shrunk by -drm_offset cells (default 2) on the sides and the base, or the cells of the
-// regions -drm_regions a,b (Gmsh meshes). The boundary nodes b are the nodes shared by Omega
-// and the other cells; the layer is the exterior cells touching a b node; the exterior
-// nodes e are the layer's other nodes. With the layer's element matrices only (Bielak et al.
-// eq. 21):
+// Geometry. Omega is a set of elements (the cells at degree 1, the spectral elements at
+// -element_degree p > 1): those whose centroid lies in -drm_box (2D xmin,xmax,ymin; 3D
+// xmin,xmax,ymin,ymax,zmin; open upward), by default the mesh's bounding box shrunk by
+// -drm_offset elements (default 2) on the sides and the base, or the elements of the regions
+// -drm_regions a,b (Gmsh meshes). The boundary nodes b are the nodes shared by Omega and the
+// other elements; the layer is the exterior elements touching a b node; the exterior nodes e
+// are the layer's other nodes (at p > 1 every GLL node of a layer element off its faces on
+// Omega). With the layer's element matrices only (Bielak et al. eq. 21):
 //   P_b = -M_be u0''_e - K_be u0_e,   P_e = +M_eb u0''_b + K_eb u0_b.
-// The mass is lumped (diagonal), so M_be = M_eb = 0 and only the stiffness terms remain.
+// The mass is lumped (diagonal, GLL at p > 1), so M_be = M_eb = 0 and only the stiffness
+// terms remain: the bulk operator's own element kernel applied to the b or e part of u0.
 //
 // Free field: a plane P, SV or SH wave (-drm_wave, -drm_incidence_angle from the vertical,
 // -drm_azimuth of the horizontal direction of travel in 3D; in 2D a negative angle travels
@@ -27,7 +29,7 @@
 // Damped sites (docs/drm.md, "Damped sites"): the free field uses each medium's complex
 // density and moduli (physics/damped_medium.hpp); the forces use the layer's whole internal
 // force F u0 = K u0 + beta K v0 - (constant-Q memory driven by K u0), the memory of each
-// layer cell's rows updated exactly as the solver's (physics::memoryUpdate) from the last
+// layer element's rows updated exactly as the solver's (physics::memoryUpdate) from the last
 // committed step, v0 the free field's half-step velocity. The mass-proportional terms (alpha M,
 // lumped) couple no b and e nodes. The base input (-input_wave) is refused with drm.
 //
