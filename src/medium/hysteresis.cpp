@@ -206,8 +206,8 @@ void trialForce(const Hysteresis &h, HystereticRegion &reg, bool settle, const P
       for (int c = 0; c < physics::HystereticLayout<Dim>::kDeviator; ++c) __builtin_prefetch(&reg.plastic[(p + kAhead) * size + c * n], 1);
     // (The update's return, the plastic work, is not booked: the ledger's dissipation is the
     // work against the relaxation force plus E_r, closed to round-off; energy_ledger.hpp.)
-    if (settle) physics::hystereticUpdate<Dim>(*reg.model, header, plastic, strain, nullptr, header, plastic);
-    physics::hystereticUpdate<Dim>(*reg.model, header, plastic, eps, sigma, nullptr, nullptr);
+    if (settle) physics::hystereticSettleEvaluate<Dim>(*reg.model, header, plastic, strain, eps, sigma);
+    else physics::hystereticUpdate<Dim>(*reg.model, header, plastic, eps, sigma, nullptr, nullptr);
     std::copy(eps, eps + kStrain, strain);
   });
 }

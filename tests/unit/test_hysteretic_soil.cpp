@@ -517,6 +517,68 @@ void tailIsTheModel() {
   unit::check(same_bits, "evaluate-only gives the in-place update's stress bit for bit, in the tail too");
 }
 
+// The bulk force's step (medium/hysteresis.cpp): the state settled to the accepted strain and
+// the stress at the next one evaluated, fused into one pass, must be the two updates it
+// replaces bit for bit (state, stress, dissipation). A random walk of the strain (steps from
+// 1e-7 to 1e-3, log-uniform, in turning directions, within 3e-3) takes each branch of the
+// fused pass often: the settle leaving the tail (a sweep and a new tail), the settle in the
+// tail with the evaluation in it, and with the evaluation outside it.
+template <int Dim>
+void settleEvaluateIsTwoUpdates() {
+  using L = HystereticLayout<Dim>;
+  // Knots up to 1e-3 only, so that the walk's jumps reach past every tail; N = 22, not a
+  // multiple of four, for the elements past the groups of four.
+  HystereticSurfaces surfaces;
+  surfaces.count     = 22;
+  surfaces.last_knot = 1e-3;
+  const HystereticSoilModel m(kGmax, kBulk, darendeliBackbone(DarendeliSoil{}), surfaces);
+  const int                 size = hystereticStateSize<Dim>(m);
+  std::vector<double>       fused(size, 0.0), apart(size, 0.0);
+  double                    settled[L::kStrain] = {}, strain[L::kStrain] = {};
+  unsigned long long        seed = 12345;
+  auto uniform = [&seed] { // [0, 1), a 64-bit LCG (Knuth's MMIX constants)
+    seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(seed >> 11) / 9007199254740992.0;
+  };
+  // |e - e_ref|^2 of a strain against the header's reference (e_zz = -(e_xx + e_yy), the
+  // shears counted twice): which branch the step takes.
+  auto drift2 = [&](const double *eps) {
+    const double tr = Dim == 2 ? eps[0] + eps[1] : eps[0] + eps[1] + eps[2];
+    double       d[L::kDeviator] = {eps[0] - tr / 3, eps[1] - tr / 3}, sum = 0;
+    for (int c = 2; c < L::kDeviator; ++c) d[c] = eps[c + L::kStrain - L::kDeviator];
+    for (int c = 0; c < L::kDeviator; ++c) {
+      d[c] -= apart[L::kReference + c];
+      sum += (c < 2 ? 1.0 : 2.0) * d[c] * d[c];
+    }
+    return sum + (d[0] + d[1]) * (d[0] + d[1]);
+  };
+  bool same = true;
+  int  leaves = 0, both_in = 0, evaluation_out = 0;
+  for (int k = 1; k <= 20000; ++k) {
+    // A jump to a strain of amplitude 1e-6 to 3e-3 (log-uniform) on one update in four, else a
+    // creep of 1e-9.
+    const bool   jump = uniform() < 0.25;
+    const double amp = 1e-6 * std::pow(3e3, uniform());
+    for (int c = 0; c < L::kStrain; ++c) strain[c] = jump ? amp * (2 * uniform() - 1) : settled[c] + 1e-9 * (2 * uniform() - 1);
+    const double d1 = drift2(settled), d2 = drift2(strain), slack2 = apart[L::kSlack] * apart[L::kSlack];
+    leaves += d1 > slack2;
+    both_in += d1 <= slack2 && d2 <= slack2;
+    evaluation_out += d1 <= slack2 && d2 > slack2;
+    double       s_fused[L::kStress], s_apart[L::kStress];
+    const double w_fused = hystereticSettleEvaluate<Dim>(m, fused.data(), fused.data() + L::kPlastic, settled, strain, s_fused);
+    const double w_apart = hystereticUpdate<Dim>(m, apart.data(), settled, nullptr, apart.data());
+    hystereticUpdate<Dim>(m, apart.data(), strain, s_apart, nullptr);
+    same = same && w_fused == w_apart && fused == apart;
+    for (int c = 0; c < L::kStress; ++c) same = same && s_fused[c] == s_apart[c];
+    std::copy(strain, strain + L::kStrain, settled);
+  }
+  char what[200];
+  std::snprintf(what, sizeof what, "%dD settle + evaluate in one pass = the two updates bit for bit (20000 steps: the settle leaves the tail %d, both in it %d, evaluation out %d)",
+                Dim, leaves, both_in, evaluation_out);
+  unit::check(same, what);
+  unit::check(leaves > 1000 && both_in > 1000 && evaluation_out > 1000, "each branch of the fused pass taken over 1000 times");
+}
+
 // The element set: moduli >= 0 summing to Gmax, yield strains ascending from the elastic limit,
 // the state size, and the backbones it must refuse.
 void elementSet() {
@@ -588,6 +650,8 @@ int main() {
   callingConventions();
   tailIsTheModel<2>();
   tailIsTheModel<3>();
+  settleEvaluateIsTwoUpdates<2>();
+  settleEvaluateIsTwoUpdates<3>();
   elementSet();
   nonConcaveBackbones();
   return unit::failures();

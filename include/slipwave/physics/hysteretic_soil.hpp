@@ -137,6 +137,15 @@ double hystereticUpdate(const HystereticSoilModel &model, const double *state_in
   return hystereticUpdate<Dim>(model, state_in, state_in + kPlastic, strain, stress, state_out, state_out ? state_out + kPlastic : nullptr);
 }
 
+// A point's step in one pass over its elements: its state (header, plastic), in place, brought
+// to the accepted strain `settled`, then the stress at `strain` evaluated from that (the state
+// not written by it). The same bits as
+//   hystereticUpdate(model, header, plastic, settled, nullptr, header, plastic);
+//   hystereticUpdate(model, header, plastic, strain, stress, nullptr, nullptr);
+// with each element that both visit read once; returns the first's dissipation.
+template <int Dim>
+double hystereticSettleEvaluate(const HystereticSoilModel &model, double *header, double *plastic, const double *settled, const double *strain, double *stress);
+
 // Energy stored per unit volume at (state, strain): K tr(eps)^2 / 2 + sum_i G_i |e - p_i|^2,
 // for a state that the update returned for this strain (then |e - p_i| <= r_i); the tail's
 // elements from its header (sum G_j |e - p_j|^2 = T |e|^2 / 2 - e:P + E). Work done on a
