@@ -134,9 +134,13 @@ void scatter(const Hysteresis &h, const HystereticRegion &reg, size_t k, int q, 
   }
 }
 
-// C:eps - sigma as a symmetric tensor (xx, yy, zz, xy, yz, xz) from the kernel's stress.
+// C:eps - sigma as a symmetric tensor (xx, yy, zz, xy, yz, xz) from the kernel's stress. One
+// compiled copy for every caller (noipa: neither inlined nor cloned): the project compiles
+// with FMA contraction, which fuses these products into the sums differently in each inlined
+// copy, and the force, the relaxation it keeps for the constant-Q drive, a restart's first
+// drive and the output must round alike.
 template <int Dim>
-void relaxationStress(const HystereticRegion &reg, const double *eps, const double *sigma, double r[6]) {
+__attribute__((noipa)) void relaxationStress(const HystereticRegion &reg, const double *eps, const double *sigma, double r[6]) {
   if constexpr (Dim == 2) {
     const double tr = eps[0] + eps[1];
     r[0] = reg.lambda * tr + 2 * reg.mu * eps[0] - sigma[0];
@@ -170,18 +174,30 @@ PointState committedState(const Hysteresis &h, const HystereticRegion &reg, size
   return {buffer.data(), buffer.data() + kHeader};
 }
 
+// f_local += vol B^T r at point q of element k, r the relaxation stress (xx, yy, zz, xy, yz, xz).
+template <int Dim>
+void scatterRelaxation(const Hysteresis &h, const HystereticRegion &reg, size_t k, int q, size_t p, const double *r, double vol, PetscScalar *f_local) {
+  // Tensor rows (xx, xy, xz), (xy, yy, yz), (xz, yz, zz) of r.
+  const double T[3][3] = {{r[0], r[3], r[5]}, {r[3], r[1], r[4]}, {r[5], r[4], r[2]}};
+  scatter<Dim>(h, reg, k, q, p, T, vol, f_local);
+}
+
+// The relaxation stress a point keeps for HysteresisAddRegionForce: its first kStress
+// components (in 2D r_yz = r_xz = 0).
+template <int Dim>
+constexpr int kKept = physics::HystereticLayout<Dim>::kStress;
+
 // f_local += scale f_relax of the region, the Iwan stress of each point from stress(p, eps,
-// sigma).
+// sigma); with `kept`, each point's relaxation stress kept there too.
 template <int Dim, class Stress>
-void regionForce(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, double scale, PetscScalar *f_local, Stress stress) {
+void regionForce(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, double scale, PetscScalar *f_local, double *kept, Stress stress) {
   constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
   forEachPoint<Dim>(h, reg, u_local, [&](size_t p, size_t k, int q, double vol, const double *eps) {
     double sigma[kStress], r[6];
     stress(p, eps, sigma);
     relaxationStress<Dim>(reg, eps, sigma, r);
-    // Tensor rows (xx, xy, xz), (xy, yy, yz), (xz, yz, zz) of r.
-    const double T[3][3] = {{r[0], r[3], r[5]}, {r[3], r[1], r[4]}, {r[5], r[4], r[2]}};
-    scatter<Dim>(h, reg, k, q, p, T, scale * vol, f_local);
+    if (kept) std::copy(r, r + kKept<Dim>, kept + p * kKept<Dim>);
+    scatterRelaxation<Dim>(h, reg, k, q, p, r, scale * vol, f_local);
   });
 }
 
@@ -198,7 +214,8 @@ void trialForce(const Hysteresis &h, HystereticRegion &reg, bool settle, const P
   const int     size    = physics::hystereticStateSize<Dim>(*reg.model) - kHeader;
   const size_t  points  = reg.volume.size();
   const int     n       = reg.model->surfaces();
-  regionForce<Dim>(h, reg, u_local, 1.0, f_local, [&](size_t p, const double *eps, double *sigma) {
+  double *kept = reg.relaxation.empty() ? nullptr : reg.relaxation.data();
+  regionForce<Dim>(h, reg, u_local, 1.0, f_local, kept, [&](size_t p, const double *eps, double *sigma) {
     double *header = &reg.header[p * kHeader], *plastic = &reg.plastic[p * size], *strain = &reg.strain[p * kStrain];
     // The headers stream; the plastic strains of a point with a head are hundreds of bytes
     // from the last one's: ask for them a few points ahead, or each such point waits for memory.
@@ -216,10 +233,24 @@ void trialForce(const Hysteresis &h, HystereticRegion &reg, bool settle, const P
 template <int Dim>
 void committedForce(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, double scale, PetscScalar *f_local) {
   std::vector<double> buffer;
-  regionForce<Dim>(h, reg, u_local, scale, f_local, [&](size_t p, const double *eps, double *sigma) {
+  regionForce<Dim>(h, reg, u_local, scale, f_local, nullptr, [&](size_t p, const double *eps, double *sigma) {
     const PointState state = committedState<Dim>(h, reg, p, buffer);
     physics::hystereticUpdate<Dim>(*reg.model, state.header, state.plastic, eps, sigma, nullptr, nullptr);
   });
+}
+
+// The same from the relaxation stresses the last force kept: the same bits (the force
+// evaluated the same states at the same strains), without a strain or an update.
+template <int Dim>
+void keptForce(const Hysteresis &h, const HystereticRegion &reg, double scale, PetscScalar *f_local) {
+  const size_t points = (size_t)reg.points;
+  for (size_t k = 0; k < reg.elements.size(); ++k)
+    for (size_t q = 0; q < points; ++q) {
+      const size_t p = k * points + q;
+      double       r[6] = {};
+      std::copy(&reg.relaxation[p * kKept<Dim>], &reg.relaxation[p * kKept<Dim>] + kKept<Dim>, r);
+      scatterRelaxation<Dim>(h, reg, k, (int)q, p, r, scale * reg.volume[p], f_local);
+    }
 }
 
 // Brings every point's state to its pending strain in place: what the next force would do
@@ -431,11 +462,20 @@ void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_l
   h->has_trial = true;
 }
 
-void HysteresisAddRegionForce(const Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local) {
-  for (const HystereticRegion &reg : h->regions) {
+void HysteresisAddRegionForce(Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local) {
+  for (HystereticRegion &reg : h->regions) {
     if (reg.region != region) continue;
+    const int kept = h->dim == 2 ? kKept<2> : kKept<3>;
+    // Kept by the last force (a force since the last commit, with the region keeping): scatter.
+    if (h->has_trial && !reg.relaxation.empty()) {
+      if (h->dim == 2) keptForce<2>(*h, reg, scale, f_local);
+      else keptForce<3>(*h, reg, scale, f_local);
+      continue;
+    }
     if (h->dim == 2) committedForce<2>(*h, reg, u_local, scale, f_local);
     else committedForce<3>(*h, reg, u_local, scale, f_local);
+    // Asked once, asked every step: from now on the forces keep this region's stresses.
+    reg.relaxation.assign(reg.volume.size() * kept, 0.0);
   }
 }
 

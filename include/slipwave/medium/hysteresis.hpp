@@ -60,6 +60,9 @@ struct HystereticRegion {
   // together and streamed) and the plastic strains (read only where an element can yield).
   std::vector<double>                                 header, plastic;
   std::vector<double>                                 strain;             // per point: the strain of the last force
+  // Per point, once HysteresisAddRegionForce has asked for the region: the relaxation stress
+  // C:eps - sigma of the last force (kStress values), so that the call scatters it again.
+  std::vector<double>                                 relaxation;
 };
 
 struct Hysteresis {
@@ -85,8 +88,11 @@ void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_l
 // f_local += scale f_relax of region `region` alone (a no-op for a region that is not
 // hysteretic), from the committed states (evaluated, not updated): at the u of the last
 // HysteresisForce, its contribution of that region. For the constant-Q drive of a damped
-// hysteretic region that does not cover the mesh (medium/attenuation.hpp).
-void HysteresisAddRegionForce(const Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local);
+// hysteretic region that does not cover the mesh (medium/attenuation.hpp), every step: the
+// first call evaluates the stresses and marks the region, whose relaxation stresses each
+// later HysteresisForce then keeps (kStress doubles per point), so that a call after a force
+// (before the commit) scatters them: the same bits, without a second evaluation.
+void HysteresisAddRegionForce(Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local);
 // The strains of the last HysteresisForce become the committed state (no-op without one).
 void HysteresisCommit(Hysteresis *h);
 // Committed state for checkpoints: this rank's points' states, region by region. The size is fixed by the mesh and the models (a checkpoint of another
