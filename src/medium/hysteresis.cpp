@@ -39,11 +39,17 @@ struct LinePoint {
   int on(int k, int m) const { return node + (m - along[k]) * stride[k]; }
 };
 
+// Every element.
+struct EveryElement {
+  bool operator()(size_t, const double *) const { return false; }
+};
+
 // Runs fn(point index, element index k, point in the element, w |det J|, strain) over the
-// points of the region's elements k in [first, last) on this rank (default: all of them).
+// points of the region's elements k in [first, last) on this rank (default: all of them),
+// but those of an element that skip(k, its nodes' displacements) passes over.
 // Nen: the nodes of a degree-1 element (its loops unrolled), or 0 at degree p > 1.
-template <int Dim, int Nen, class Fn>
-void forEachPointOf(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first, size_t last) {
+template <int Dim, int Nen, class Fn, class Skip>
+void forEachPointOf(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first, size_t last, Skip skip) {
   constexpr int  kStrain = physics::HystereticLayout<Dim>::kStrain;
   const PetscInt nen = Nen ? Nen : h.nodes, nq = reg.points;
   const int      n1  = (int)h.degree + 1;
@@ -51,6 +57,7 @@ void forEachPointOf(const Hysteresis &h, const HystereticRegion &reg, const Pets
   for (size_t k = first; k < std::min(last, reg.dofs.size() / nen); ++k) {
     for (PetscInt a = 0; a < nen; ++a)
       for (int i = 0; i < Dim; ++i) u[a * Dim + i] = PetscRealPart(u_local[reg.dofs[k * nen + a] + i]);
+    if (skip(k, u.data())) continue;
     for (PetscInt q = 0; q < nq; ++q) {
       const size_t p = k * nq + q;
       double       G[3][3] = {};
@@ -81,13 +88,25 @@ void forEachPointOf(const Hysteresis &h, const HystereticRegion &reg, const Pets
   }
 }
 
-template <int Dim, class Fn>
-void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first = 0, size_t last = SIZE_MAX) {
+template <int Dim, class Fn, class Skip = EveryElement>
+void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first = 0, size_t last = SIZE_MAX, Skip skip = {}) {
   // Degree 1: triangles (3 nodes), quadrilaterals and tetrahedra (4), hexahedra (8).
-  if (h.degree > 1) forEachPointOf<Dim, 0>(h, reg, u_local, fn, first, last);
-  else if (h.nodes == 3) forEachPointOf<Dim, 3>(h, reg, u_local, fn, first, last);
-  else if (h.nodes == 4) forEachPointOf<Dim, 4>(h, reg, u_local, fn, first, last);
-  else forEachPointOf<Dim, 8>(h, reg, u_local, fn, first, last);
+  if (h.degree > 1) forEachPointOf<Dim, 0>(h, reg, u_local, fn, first, last, skip);
+  else if (h.nodes == 3) forEachPointOf<Dim, 3>(h, reg, u_local, fn, first, last, skip);
+  else if (h.nodes == 4) forEachPointOf<Dim, 4>(h, reg, u_local, fn, first, last, skip);
+  else forEachPointOf<Dim, 8>(h, reg, u_local, fn, first, last, skip);
+}
+
+// An element whose points are virgin at a zero strain (none has had a nonzero strain, the last
+// force's included) and whose nodes are at rest (u exactly 0): its points' updates change
+// nothing and their relaxation stress is zero (the kernel's contract), so a pass over them
+// may skip it. Ahead of a wave most of a mesh is such (the explicit step moves the front by
+// one element per step).
+bool untouched(const HystereticRegion &reg, size_t k, const double *u, size_t values) {
+  if (reg.stirred[k]) return false;
+  for (size_t i = 0; i < values; ++i)
+    if (u[i] != 0) return false;
+  return true;
 }
 
 // f_local += vol B^T T at a point of a degree-1 element of Nen nodes (dN: the point's shape
@@ -170,7 +189,8 @@ PointState committedState(const Hysteresis &h, const HystereticRegion &reg, size
   const double *header = &reg.header[p * kHeader], *plastic = &reg.plastic[p * size];
   if (!h.pending) return {header, plastic};
   buffer.resize(kHeader + size);
-  physics::hystereticUpdate<Dim>(*reg.model, header, plastic, &reg.strain[p * physics::HystereticLayout<Dim>::kStrain], nullptr, buffer.data(), buffer.data() + kHeader);
+  physics::hystereticUpdate<Dim>(*reg.model, header, plastic, &reg.strain[p * physics::HystereticLayout<Dim>::kStrain], nullptr, buffer.data(), buffer.data() + kHeader,
+                                 h.settles + 1);
   return {buffer.data(), buffer.data() + kHeader};
 }
 
@@ -189,32 +209,45 @@ constexpr int kKept = physics::HystereticLayout<Dim>::kStress;
 
 // f_local += scale f_relax of the region, the Iwan stress of each point from stress(p, eps,
 // sigma); with `kept`, each point's relaxation stress kept there too.
-template <int Dim, class Stress>
-void regionForce(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, double scale, PetscScalar *f_local, double *kept, Stress stress) {
+template <int Dim, class Stress, class Skip = EveryElement>
+void regionForce(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, double scale, PetscScalar *f_local, double *kept, Stress stress,
+                 Skip skip = {}) {
   constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
-  forEachPoint<Dim>(h, reg, u_local, [&](size_t p, size_t k, int q, double vol, const double *eps) {
-    double sigma[kStress], r[6];
-    stress(p, eps, sigma);
-    relaxationStress<Dim>(reg, eps, sigma, r);
-    if (kept) std::copy(r, r + kKept<Dim>, kept + p * kKept<Dim>);
-    scatterRelaxation<Dim>(h, reg, k, q, p, r, scale * vol, f_local);
-  });
+  forEachPoint<Dim>(
+    h, reg, u_local,
+    [&](size_t p, size_t k, int q, double vol, const double *eps) {
+      double sigma[kStress], r[6];
+      stress(p, eps, sigma);
+      relaxationStress<Dim>(reg, eps, sigma, r);
+      if (kept) std::copy(r, r + kKept<Dim>, kept + p * kKept<Dim>);
+      scatterRelaxation<Dim>(h, reg, k, q, p, r, scale * vol, f_local);
+    },
+    0, SIZE_MAX, skip);
 }
 
 // Points ahead whose plastic strains are fetched early.
 constexpr size_t kAhead = 6;
 
 // HysteresisForce of one region: each point's state first brought to the accepted step's strain
-// in place (when `settle`), then the stress of the new strain evaluated from it (nothing
-// written), the strain kept. One pass, each state read once and only the elements that yield
-// written: the step is bound by this traffic (docs/performance.md).
+// in place (when `settle`: update number h.settles + 1), then the stress of the new strain
+// evaluated from it (nothing written), the strain kept. One pass, each state read once and
+// only the elements that yield written: the step is bound by this traffic
+// (docs/performance.md). The untouched elements are skipped, and an element is marked stirred
+// as soon as its nodes move.
 template <int Dim>
 void trialForce(const Hysteresis &h, HystereticRegion &reg, bool settle, const PetscScalar *u_local, PetscScalar *f_local) {
   constexpr int kStrain = physics::HystereticLayout<Dim>::kStrain, kHeader = physics::HystereticLayout<Dim>::kPlastic;
   const int     size    = physics::hystereticStateSize<Dim>(*reg.model) - kHeader;
   const size_t  points  = reg.volume.size();
   const int     n       = reg.model->surfaces();
-  double *kept = reg.relaxation.empty() ? nullptr : reg.relaxation.data();
+  const double update = h.settles + 1;
+  const size_t values = (size_t)h.nodes * Dim;
+  double      *kept   = reg.relaxation.empty() ? nullptr : reg.relaxation.data();
+  auto         skip   = [&](size_t k, const double *u) {
+    if (untouched(reg, k, u, values)) return true;
+    reg.stirred[k] = 1;
+    return false;
+  };
   regionForce<Dim>(h, reg, u_local, 1.0, f_local, kept, [&](size_t p, const double *eps, double *sigma) {
     double *header = &reg.header[p * kHeader], *plastic = &reg.plastic[p * size], *strain = &reg.strain[p * kStrain];
     // The headers stream; the plastic strains of a point with a head are hundreds of bytes
@@ -223,10 +256,10 @@ void trialForce(const Hysteresis &h, HystereticRegion &reg, bool settle, const P
       for (int c = 0; c < physics::HystereticLayout<Dim>::kDeviator; ++c) __builtin_prefetch(&reg.plastic[(p + kAhead) * size + c * n], 1);
     // (The update's return, the plastic work, is not booked: the ledger's dissipation is the
     // work against the relaxation force plus E_r, closed to round-off; energy_ledger.hpp.)
-    if (settle) physics::hystereticSettleEvaluate<Dim>(*reg.model, header, plastic, strain, eps, sigma);
-    else physics::hystereticUpdate<Dim>(*reg.model, header, plastic, eps, sigma, nullptr, nullptr);
+    if (settle) physics::hystereticSettleEvaluate<Dim>(*reg.model, header, plastic, strain, update, eps, sigma);
+    else physics::hystereticUpdate<Dim>(*reg.model, header, plastic, eps, sigma, nullptr, nullptr, 0);
     std::copy(eps, eps + kStrain, strain);
-  });
+  }, skip);
 }
 
 // f_local += scale f_relax of the region from its committed states (evaluated, not updated).
@@ -235,7 +268,7 @@ void committedForce(const Hysteresis &h, const HystereticRegion &reg, const Pets
   std::vector<double> buffer;
   regionForce<Dim>(h, reg, u_local, scale, f_local, nullptr, [&](size_t p, const double *eps, double *sigma) {
     const PointState state = committedState<Dim>(h, reg, p, buffer);
-    physics::hystereticUpdate<Dim>(*reg.model, state.header, state.plastic, eps, sigma, nullptr, nullptr);
+    physics::hystereticUpdate<Dim>(*reg.model, state.header, state.plastic, eps, sigma, nullptr, nullptr, 0);
   });
 }
 
@@ -262,10 +295,13 @@ void settle(Hysteresis *h) {
   for (HystereticRegion &reg : h->regions) {
     const size_t size = physics::hystereticStateSize<Dim>(*reg.model) - kHeader;
     for (size_t p = 0; p < reg.volume.size(); ++p) {
+      // An element not stirred is virgin at a zero strain: nothing to bring.
+      if (!reg.stirred[p / reg.points]) continue;
       double *header = &reg.header[p * kHeader], *plastic = &reg.plastic[p * size];
-      physics::hystereticUpdate<Dim>(*reg.model, header, plastic, &reg.strain[p * kStrain], nullptr, header, plastic);
+      physics::hystereticUpdate<Dim>(*reg.model, header, plastic, &reg.strain[p * kStrain], nullptr, header, plastic, h->settles + 1);
     }
   }
+  h->settles += 1;
   h->pending = false;
 }
 
@@ -275,14 +311,20 @@ double relaxationEnergy(Hysteresis *h, const PetscScalar *u_local) {
   std::vector<double> buffer;
   settle<Dim>(h);
   for (const HystereticRegion &reg : h->regions) {
-    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t, int, double vol, const double *eps) {
-      double tr = 0, ee = 0;
-      for (int c = 0; c < Dim; ++c) tr += eps[c];
-      for (int c = 0; c < physics::HystereticLayout<Dim>::kStrain; ++c) ee += (c < 3 && c < Dim ? 1.0 : 2.0) * eps[c] * eps[c];
-      const double     linear = 0.5 * reg.lambda * tr * tr + reg.mu * ee;
-      const PointState state  = committedState<Dim>(*h, reg, p, buffer);
-      sum += vol * (linear - physics::hystereticStoredEnergy<Dim>(*reg.model, state.header, state.plastic, eps));
-    });
+    // An untouched element holds no energy beyond the linear one (zero strain, virgin states).
+    const size_t values = (size_t)h->nodes * Dim;
+    auto         skip   = [&](size_t k, const double *u) { return untouched(reg, k, u, values); };
+    forEachPoint<Dim>(
+      *h, reg, u_local,
+      [&](size_t p, size_t, int, double vol, const double *eps) {
+        double tr = 0, ee = 0;
+        for (int c = 0; c < Dim; ++c) tr += eps[c];
+        for (int c = 0; c < physics::HystereticLayout<Dim>::kStrain; ++c) ee += (c < 3 && c < Dim ? 1.0 : 2.0) * eps[c] * eps[c];
+        const double     linear = 0.5 * reg.lambda * tr * tr + reg.mu * ee;
+        const PointState state  = committedState<Dim>(*h, reg, p, buffer);
+        sum += vol * (linear - physics::hystereticStoredEnergy<Dim>(*reg.model, state.header, state.plastic, eps));
+      },
+      0, SIZE_MAX, skip);
   }
   return sum;
 }
@@ -301,7 +343,7 @@ void elementFields(const HystereticRegion &reg, const Hysteresis &h, const Petsc
       double        sigma[kStress], r[6];
       const PointState state = committedState<Dim>(h, reg, p, buffer);
       // Evaluate only (no state out): the committed state stays as it is.
-      physics::hystereticUpdate<Dim>(*reg.model, state.header, state.plastic, eps, sigma, nullptr, nullptr);
+      physics::hystereticUpdate<Dim>(*reg.model, state.header, state.plastic, eps, sigma, nullptr, nullptr, 0);
       relaxationStress<Dim>(reg, eps, sigma, r);
       for (int j = 0; j < 6; ++j) mean[6 * (k - first) + j] += r[j] / reg.points;
       largest[k - first] = std::max(largest[k - first], physics::maxShearStrain<Dim>(*reg.model, state.header));
@@ -440,6 +482,7 @@ PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector
     reg.header.assign(reg.volume.size() * header, 0.0);
     reg.plastic.assign(reg.volume.size() * (size - header), 0.0);
     reg.strain.assign(reg.volume.size() * (dim == 2 ? physics::HystereticLayout<2>::kStrain : physics::HystereticLayout<3>::kStrain), 0.0);
+    reg.stirred.assign(reg.elements.size(), 0);
     h->regions.push_back(std::move(reg));
   }
   *out = h;
@@ -458,6 +501,7 @@ void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_l
     if (h->dim == 2) trialForce<2>(*h, reg, h->pending, u_local, f_local);
     else trialForce<3>(*h, reg, h->pending, u_local, f_local);
   }
+  if (h->pending) h->settles += 1;
   h->pending   = false;
   h->has_trial = true;
 }
@@ -485,14 +529,20 @@ void HysteresisCommit(Hysteresis *h) {
   h->has_trial = false;
 }
 
-// Checkpoints hold each point's state as one array (header, then plastic strains).
+// Checkpoints hold each point's state as one array (header, then plastic strains), with the
+// tail's age (updates since it was set) in kSince's slot: the count of updates starts again
+// with the restarted run (HysteresisSetState), and the file is the same as when the state kept
+// that age itself (version 10).
 std::vector<double> HysteresisState(const Hysteresis *h) {
   std::vector<double> s, buffer;
+  // The committed states have had the settles so far, and the pending one if any.
+  const double now = h->settles + (h->pending ? 1 : 0);
   for (const HystereticRegion &reg : h->regions) {
     const size_t header = reg.header.size() / reg.volume.size(), size = reg.plastic.size() / reg.volume.size();
     for (size_t p = 0; p < reg.volume.size(); ++p) {
       const PointState state = h->dim == 2 ? committedState<2>(*h, reg, p, buffer) : committedState<3>(*h, reg, p, buffer);
       s.insert(s.end(), state.header, state.header + header);
+      physics::swapTailAge(&s[s.size() - header], now);
       s.insert(s.end(), state.plastic, state.plastic + size);
     }
   }
@@ -506,14 +556,27 @@ PetscInt HysteresisStateSize(const Hysteresis *h) {
 }
 
 void HysteresisSetState(Hysteresis *h, const std::vector<double> &s) {
-  auto o = s.begin();
+  auto         o     = s.begin();
+  const size_t since = physics::HystereticLayout<2>::kSince;
+  h->settles         = 0;
   for (HystereticRegion &reg : h->regions) {
     const size_t header = reg.header.size() / reg.volume.size(), size = reg.plastic.size() / reg.volume.size();
+    std::fill(reg.stirred.begin(), reg.stirred.end(), 0);
     for (size_t p = 0; p < reg.volume.size(); ++p) {
-      std::copy_n(o, header, reg.header.begin() + p * header);
+      double *state = &reg.header[p * header];
+      std::copy_n(o, header, state);
       std::copy_n(o + header, size, reg.plastic.begin() + p * size);
       o += header + size;
+      // The age back to the update that set the tail, in the count that starts here.
+      physics::swapTailAge(state, h->settles);
+      // A point with anything in its header but that has had a strain.
+      for (size_t j = 0; j < header; ++j)
+        if (j != since && state[j] != 0) reg.stirred[p / reg.points] = 1;
     }
+    // No strain is pending (pending is false): the untouched elements' must be zero.
+    std::fill(reg.strain.begin(), reg.strain.end(), 0.0);
+    // The relaxation kept for an untouched element is zero (it is not written while skipped).
+    std::fill(reg.relaxation.begin(), reg.relaxation.end(), 0.0);
   }
   h->pending   = false;
   h->has_trial = false;

@@ -363,7 +363,7 @@ double settleEvaluateSweep(const HystereticSoilModel &model, double *plastic, co
 // since the last sweep. The k of least cost k + 1.5 N rate / m_k is kept (N: no tail, a sweep
 // every update, 1.5 N).
 template <int Dim>
-void chooseTail(const HystereticSoilModel &model, double *state, const double *p, const double *e, double rate, const double *slack) {
+void chooseTail(const HystereticSoilModel &model, double *state, const double *p, const double *e, double update, double rate, const double *slack) {
   using L = HystereticLayout<Dim>;
   const int n = model.surfaces(), groups = n / 4;
   double    best_cost = 1.5 * n, best_slack = 0, m = n % 4 ? slack[groups] : std::numeric_limits<double>::infinity();
@@ -380,7 +380,7 @@ void chooseTail(const HystereticSoilModel &model, double *state, const double *p
   }
   state[L::kHead] = best;
   state[L::kSlack] = best_slack;
-  state[L::kUpdates] = 0;
+  state[L::kSince] = update;
   const double *two_g = model.twiceModulus();
   for (int c = 0; c < L::kDeviator; ++c) {
     double tail = 0;
@@ -429,7 +429,7 @@ void keepLargestStrain(double *header, const double *e) {
 
 template <int Dim>
 double hystereticUpdate(const HystereticSoilModel &model, const double *state_in, const double *plastic_in, const double *strain, double *stress, double *state_out,
-                        double *plastic_out) {
+                        double *plastic_out, double update) {
   using L = HystereticLayout<Dim>;
   constexpr int kDev = L::kDeviator;
   const int     n = model.surfaces();
@@ -456,14 +456,14 @@ double hystereticUpdate(const HystereticSoilModel &model, const double *state_in
   if (stress) writeStress<Dim>(model, tr, s, stress);
   if (state_out) {
     keepLargestStrain<Dim>(state_out, e);
-    if (tail_holds) state_out[L::kUpdates] += 1;
-    else chooseTail<Dim>(model, state_out, plastic_out, e, std::sqrt(drift2) / (state_out[L::kUpdates] + 1), group_slack);
+    // The drift per update since the tail was set (the updates in between all held it).
+    if (!tail_holds) chooseTail<Dim>(model, state_out, plastic_out, e, update, std::sqrt(drift2) / (update - state_out[L::kSince]), group_slack);
   }
   return dissipation;
 }
 
 template <int Dim>
-double hystereticSettleEvaluate(const HystereticSoilModel &model, double *header, double *plastic, const double *settled, const double *strain, double *stress) {
+double hystereticSettleEvaluate(const HystereticSoilModel &model, double *header, double *plastic, const double *settled, double update, const double *strain, double *stress) {
   using L = HystereticLayout<Dim>;
   constexpr int kDev = L::kDeviator;
   double        e1[kDev], drift[kDev];
@@ -473,8 +473,8 @@ double hystereticSettleEvaluate(const HystereticSoilModel &model, double *header
   // The settle leaves the tail: it sweeps every element and sets the next tail, from which the
   // stress is then evaluated (rare: a point sets its tail for the updates to come).
   if (!(contracted<Dim>(drift) <= slack * slack)) {
-    const double dissipation = hystereticUpdate<Dim>(model, header, plastic, settled, nullptr, header, plastic);
-    hystereticUpdate<Dim>(model, header, plastic, strain, stress, nullptr, nullptr);
+    const double dissipation = hystereticUpdate<Dim>(model, header, plastic, settled, nullptr, header, plastic, update);
+    hystereticUpdate<Dim>(model, header, plastic, strain, stress, nullptr, nullptr, 0);
     return dissipation;
   }
   // The tail holds for the settle: it keeps the header's tail, so the evaluation's tail test
@@ -489,7 +489,6 @@ double hystereticSettleEvaluate(const HystereticSoilModel &model, double *header
     for (int c = 0; c < kDev; ++c) s[c] += model.tailModulus()[head] * e2[c] - header[L::kTailStress + c];
   writeStress<Dim>(model, tr, s, stress);
   keepLargestStrain<Dim>(header, e1);
-  header[L::kUpdates] += 1;
   return dissipation;
 }
 
@@ -540,10 +539,10 @@ double equivalentShearStress(const double *stress) {
   return std::sqrt(0.5 * contracted<Dim>(sd));
 }
 
-template double hystereticUpdate<2>(const HystereticSoilModel &, const double *, const double *, const double *, double *, double *, double *);
-template double hystereticUpdate<3>(const HystereticSoilModel &, const double *, const double *, const double *, double *, double *, double *);
-template double hystereticSettleEvaluate<2>(const HystereticSoilModel &, double *, double *, const double *, const double *, double *);
-template double hystereticSettleEvaluate<3>(const HystereticSoilModel &, double *, double *, const double *, const double *, double *);
+template double hystereticUpdate<2>(const HystereticSoilModel &, const double *, const double *, const double *, double *, double *, double *, double);
+template double hystereticUpdate<3>(const HystereticSoilModel &, const double *, const double *, const double *, double *, double *, double *, double);
+template double hystereticSettleEvaluate<2>(const HystereticSoilModel &, double *, double *, const double *, double, const double *, double *);
+template double hystereticSettleEvaluate<3>(const HystereticSoilModel &, double *, double *, const double *, double, const double *, double *);
 template double hystereticStoredEnergy<2>(const HystereticSoilModel &, const double *, const double *, const double *);
 template double hystereticStoredEnergy<3>(const HystereticSoilModel &, const double *, const double *, const double *);
 template double equivalentShearStrain<2>(const double *);

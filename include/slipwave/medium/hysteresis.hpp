@@ -63,6 +63,9 @@ struct HystereticRegion {
   // Per point, once HysteresisAddRegionForce has asked for the region: the relaxation stress
   // C:eps - sigma of the last force (kStress values), so that the call scatters it again.
   std::vector<double>                                 relaxation;
+  // Per element: whether any of its points has had a nonzero strain (else its states are
+  // virgin at a zero strain, and a pass over the points skips it while its nodes rest).
+  std::vector<unsigned char>                          stirred;
 };
 
 struct Hysteresis {
@@ -73,6 +76,7 @@ struct Hysteresis {
   std::vector<HystereticRegion> regions;
   bool                          has_trial = false; // a force since the last commit
   bool                          pending   = false; // committed: the states wait for the strains of the last force
+  double                        settles   = 0;     // the states brought to their pending strains so far: the kernel's update count
 };
 
 // The Iwan model of a region on its element moduli (fe.lame: the unrelaxed ones in a damped
