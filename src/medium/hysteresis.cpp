@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "slipwave/numerics/gll_basis.hpp"
+#include "slipwave/numerics/rounded_apart.hpp"
 #include "slipwave/numerics/reference_cell.hpp"
 
 namespace slipwave::medium {
@@ -153,24 +154,25 @@ void scatter(const Hysteresis &h, const HystereticRegion &reg, size_t k, int q, 
   }
 }
 
-// C:eps - sigma as a symmetric tensor (xx, yy, zz, xy, yz, xz) from the kernel's stress. One
-// compiled copy for every caller (noipa: neither inlined nor cloned): the project compiles
-// with FMA contraction, which fuses these products into the sums differently in each inlined
-// copy, and the force, the relaxation it keeps for the constant-Q drive, a restart's first
-// drive and the output must round alike.
+// C:eps - sigma as a symmetric tensor (xx, yy, zz, xy, yz, xz) from the kernel's stress. Its
+// products rounded apart (numerics/rounded_apart.hpp): the force, the relaxation it keeps for
+// the constant-Q drive, a restart's first drive and the output compute it in different
+// places and must round alike.
 template <int Dim>
-__attribute__((noipa)) void relaxationStress(const HystereticRegion &reg, const double *eps, const double *sigma, double r[6]) {
+void relaxationStress(const HystereticRegion &reg, const double *eps, const double *sigma, double r[6]) {
+  using numerics::roundedApart;
+  const double mu2 = 2 * reg.mu;
   if constexpr (Dim == 2) {
-    const double tr = eps[0] + eps[1];
-    r[0] = reg.lambda * tr + 2 * reg.mu * eps[0] - sigma[0];
-    r[1] = reg.lambda * tr + 2 * reg.mu * eps[1] - sigma[1];
-    r[2] = reg.lambda * tr - sigma[3];
-    r[3] = 2 * reg.mu * eps[2] - sigma[2];
+    const double tr = roundedApart(reg.lambda * (eps[0] + eps[1]));
+    r[0] = tr + roundedApart(mu2 * eps[0]) - sigma[0];
+    r[1] = tr + roundedApart(mu2 * eps[1]) - sigma[1];
+    r[2] = tr - sigma[3];
+    r[3] = roundedApart(mu2 * eps[2]) - sigma[2];
     r[4] = r[5] = 0;
   } else {
-    const double tr = eps[0] + eps[1] + eps[2];
-    for (int c = 0; c < 3; ++c) r[c] = reg.lambda * tr + 2 * reg.mu * eps[c] - sigma[c];
-    for (int c = 3; c < 6; ++c) r[c] = 2 * reg.mu * eps[c] - sigma[c];
+    const double tr = roundedApart(reg.lambda * (eps[0] + eps[1] + eps[2]));
+    for (int c = 0; c < 3; ++c) r[c] = tr + roundedApart(mu2 * eps[c]) - sigma[c];
+    for (int c = 3; c < 6; ++c) r[c] = roundedApart(mu2 * eps[c]) - sigma[c];
   }
 }
 
@@ -219,7 +221,8 @@ void regionForce(const Hysteresis &h, const HystereticRegion &reg, const PetscSc
       double sigma[kStress], r[6];
       stress(p, eps, sigma);
       relaxationStress<Dim>(reg, eps, sigma, r);
-      if (kept) std::copy(r, r + kKept<Dim>, kept + p * kKept<Dim>);
+      if (kept)
+        for (int c = 0; c < kKept<Dim>; ++c) kept[p * kKept<Dim> + c] = r[c];
       scatterRelaxation<Dim>(h, reg, k, q, p, r, scale * vol, f_local);
     },
     0, SIZE_MAX, skip);
@@ -258,7 +261,7 @@ void trialForce(const Hysteresis &h, HystereticRegion &reg, bool settle, const P
     // work against the relaxation force plus E_r, closed to round-off; energy_ledger.hpp.)
     if (settle) physics::hystereticSettleEvaluate<Dim>(*reg.model, header, plastic, strain, update, eps, sigma);
     else physics::hystereticUpdate<Dim>(*reg.model, header, plastic, eps, sigma, nullptr, nullptr, 0);
-    std::copy(eps, eps + kStrain, strain);
+    for (int c = 0; c < kStrain; ++c) strain[c] = eps[c];
   }, skip);
 }
 

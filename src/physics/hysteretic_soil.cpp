@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "slipwave/numerics/rounded_apart.hpp"
+
 namespace slipwave::physics {
 namespace {
 
@@ -209,19 +211,9 @@ inline Lanes laneSqrt(Lanes x) {
 #endif
 }
 
-// x rounded on its own. The project compiles with FMA contraction (GCC's default,
-// -ffp-contract=fast), which fuses a product into a later sum only where the product has no
-// other use: a returned d that one pass uses once (the settle's p = e - d) and another twice
-// (the update's p and stress) would round differently. Kept apart, every pass has the same bits.
-template <class T>
-inline T roundedApart(T x) {
-#ifdef __SSE2__
-  asm("" : "+x"(x));
-#else
-  asm("" : "+m"(x));
-#endif
-  return x;
-}
+// A returned d is rounded apart (numerics/rounded_apart.hpp): one pass uses it once (the
+// settle's p = e - d), another twice (the update's p and stress), and they must agree.
+using numerics::roundedApart;
 
 // An element counts as elastic in a tail only with this share of its radius to spare: the
 // slack and the strains are rounded, and the tail must not hold an element that a sweep would
@@ -418,11 +410,15 @@ void writeStress(const HystereticSoilModel &model, double tr, const double *s, d
 }
 
 // The header's largest equivalent shear strain after an update to the deviatoric strain e,
-// written only where it grows (a point at rest leaves the line clean).
+// written only where it grows (a point at rest leaves the line clean). The root only where it
+// may: sqrt(x) <= m for x <= m^2 (a correctly rounded root of the rounded square of m is m,
+// where m^2 is a normal number).
 template <int Dim>
 void keepLargestStrain(double *header, const double *e) {
-  const double gamma = std::sqrt(2 * contracted<Dim>(e));
-  if (gamma > header[HystereticLayout<Dim>::kMaxStrain]) header[HystereticLayout<Dim>::kMaxStrain] = gamma;
+  const double x = 2 * contracted<Dim>(e), largest = header[HystereticLayout<Dim>::kMaxStrain];
+  if (x <= largest * largest && largest >= 1e-150) return;
+  const double gamma = std::sqrt(x);
+  if (gamma > largest) header[HystereticLayout<Dim>::kMaxStrain] = gamma;
 }
 
 } // namespace
@@ -484,7 +480,10 @@ double hystereticSettleEvaluate(const HystereticSoilModel &model, double *header
   for (int c = 0; c < kDev; ++c) drift[c] = e2[c] - header[L::kReference + c];
   const bool   tail_holds = contracted<Dim>(drift) <= slack * slack;
   const int    n = model.surfaces(), head = (int)header[L::kHead];
-  const double dissipation = settleEvaluateSweep<Dim>(model, plastic, e1, head, e2, tail_holds ? head : n, s);
+  double       dissipation = 0;
+  // No element to visit (a point at rest in its elastic range): the sweep of none sums zeros.
+  if (head == 0 && tail_holds) std::fill(s, s + kDev, 0.0);
+  else dissipation = settleEvaluateSweep<Dim>(model, plastic, e1, head, e2, tail_holds ? head : n, s);
   if (tail_holds)
     for (int c = 0; c < kDev; ++c) s[c] += model.tailModulus()[head] * e2[c] - header[L::kTailStress + c];
   writeStress<Dim>(model, tr, s, stress);
