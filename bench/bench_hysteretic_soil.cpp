@@ -42,7 +42,7 @@ double nsPerUpdate(int surfaces, double amplitude, double *sink, double *yield_f
     const auto t0 = std::chrono::steady_clock::now();
     for (int p = 0; p < points; ++p) {
       double *s = &state[(size_t)p * size];
-      const double d = hystereticUpdate<Dim>(model, s, &strain[(size_t)p * Layout::kStrain], &stress[(size_t)p * Layout::kStress], s);
+      const double d = hystereticUpdate<Dim>(model, s, &strain[(size_t)p * Layout::kStrain], &stress[(size_t)p * Layout::kStress], s, w + 1);
       *sink += d;
       dissipating += d > 0;
     }

@@ -173,7 +173,7 @@ PetscErrorCode AttenuationDestroy(Attenuation **att) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator &bulk, Vec u_local, Vec f_internal, const Hysteresis *hysteresis, Vec f_hysteretic,
+PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator &bulk, Vec u_local, Vec f_internal, Hysteresis *hysteresis, Vec f_hysteretic,
                                 PetscReal t, Vec f) {
   constexpr int kMaxMechanisms = 8;
   PetscFunctionBeginUser;

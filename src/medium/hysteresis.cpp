@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "slipwave/numerics/gll_basis.hpp"
+#include "slipwave/numerics/rounded_apart.hpp"
 #include "slipwave/numerics/reference_cell.hpp"
 
 namespace slipwave::medium {
@@ -39,11 +40,17 @@ struct LinePoint {
   int on(int k, int m) const { return node + (m - along[k]) * stride[k]; }
 };
 
+// Every element.
+struct EveryElement {
+  bool operator()(size_t, const double *) const { return false; }
+};
+
 // Runs fn(point index, element index k, point in the element, w |det J|, strain) over the
-// points of the region's elements k in [first, last) on this rank (default: all of them).
+// points of the region's elements k in [first, last) on this rank (default: all of them),
+// but those of an element that skip(k, its nodes' displacements) passes over.
 // Nen: the nodes of a degree-1 element (its loops unrolled), or 0 at degree p > 1.
-template <int Dim, int Nen, class Fn>
-void forEachPointOf(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first, size_t last) {
+template <int Dim, int Nen, class Fn, class Skip>
+void forEachPointOf(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first, size_t last, Skip skip) {
   constexpr int  kStrain = physics::HystereticLayout<Dim>::kStrain;
   const PetscInt nen = Nen ? Nen : h.nodes, nq = reg.points;
   const int      n1  = (int)h.degree + 1;
@@ -51,6 +58,7 @@ void forEachPointOf(const Hysteresis &h, const HystereticRegion &reg, const Pets
   for (size_t k = first; k < std::min(last, reg.dofs.size() / nen); ++k) {
     for (PetscInt a = 0; a < nen; ++a)
       for (int i = 0; i < Dim; ++i) u[a * Dim + i] = PetscRealPart(u_local[reg.dofs[k * nen + a] + i]);
+    if (skip(k, u.data())) continue;
     for (PetscInt q = 0; q < nq; ++q) {
       const size_t p = k * nq + q;
       double       G[3][3] = {};
@@ -81,13 +89,25 @@ void forEachPointOf(const Hysteresis &h, const HystereticRegion &reg, const Pets
   }
 }
 
-template <int Dim, class Fn>
-void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first = 0, size_t last = SIZE_MAX) {
+template <int Dim, class Fn, class Skip = EveryElement>
+void forEachPoint(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first = 0, size_t last = SIZE_MAX, Skip skip = {}) {
   // Degree 1: triangles (3 nodes), quadrilaterals and tetrahedra (4), hexahedra (8).
-  if (h.degree > 1) forEachPointOf<Dim, 0>(h, reg, u_local, fn, first, last);
-  else if (h.nodes == 3) forEachPointOf<Dim, 3>(h, reg, u_local, fn, first, last);
-  else if (h.nodes == 4) forEachPointOf<Dim, 4>(h, reg, u_local, fn, first, last);
-  else forEachPointOf<Dim, 8>(h, reg, u_local, fn, first, last);
+  if (h.degree > 1) forEachPointOf<Dim, 0>(h, reg, u_local, fn, first, last, skip);
+  else if (h.nodes == 3) forEachPointOf<Dim, 3>(h, reg, u_local, fn, first, last, skip);
+  else if (h.nodes == 4) forEachPointOf<Dim, 4>(h, reg, u_local, fn, first, last, skip);
+  else forEachPointOf<Dim, 8>(h, reg, u_local, fn, first, last, skip);
+}
+
+// An element whose points are virgin at a zero strain (none has had a nonzero strain, the last
+// force's included) and whose nodes are at rest (u exactly 0): its points' updates change
+// nothing and their relaxation stress is zero (the kernel's contract), so a pass over them
+// may skip it. Ahead of a wave most of a mesh is such (the explicit step moves the front by
+// one element per step).
+bool untouched(const HystereticRegion &reg, size_t k, const double *u, size_t values) {
+  if (reg.stirred[k]) return false;
+  for (size_t i = 0; i < values; ++i)
+    if (u[i] != 0) return false;
+  return true;
 }
 
 // f_local += vol B^T T at a point of a degree-1 element of Nen nodes (dN: the point's shape
@@ -134,20 +154,25 @@ void scatter(const Hysteresis &h, const HystereticRegion &reg, size_t k, int q, 
   }
 }
 
-// C:eps - sigma as a symmetric tensor (xx, yy, zz, xy, yz, xz) from the kernel's stress.
+// C:eps - sigma as a symmetric tensor (xx, yy, zz, xy, yz, xz) from the kernel's stress. Its
+// products rounded apart (numerics/rounded_apart.hpp): the force, the relaxation it keeps for
+// the constant-Q drive, a restart's first drive and the output compute it in different
+// places and must round alike.
 template <int Dim>
 void relaxationStress(const HystereticRegion &reg, const double *eps, const double *sigma, double r[6]) {
+  using numerics::roundedApart;
+  const double mu2 = 2 * reg.mu;
   if constexpr (Dim == 2) {
-    const double tr = eps[0] + eps[1];
-    r[0] = reg.lambda * tr + 2 * reg.mu * eps[0] - sigma[0];
-    r[1] = reg.lambda * tr + 2 * reg.mu * eps[1] - sigma[1];
-    r[2] = reg.lambda * tr - sigma[3];
-    r[3] = 2 * reg.mu * eps[2] - sigma[2];
+    const double tr = roundedApart(reg.lambda * (eps[0] + eps[1]));
+    r[0] = tr + roundedApart(mu2 * eps[0]) - sigma[0];
+    r[1] = tr + roundedApart(mu2 * eps[1]) - sigma[1];
+    r[2] = tr - sigma[3];
+    r[3] = roundedApart(mu2 * eps[2]) - sigma[2];
     r[4] = r[5] = 0;
   } else {
-    const double tr = eps[0] + eps[1] + eps[2];
-    for (int c = 0; c < 3; ++c) r[c] = reg.lambda * tr + 2 * reg.mu * eps[c] - sigma[c];
-    for (int c = 3; c < 6; ++c) r[c] = 2 * reg.mu * eps[c] - sigma[c];
+    const double tr = roundedApart(reg.lambda * (eps[0] + eps[1] + eps[2]));
+    for (int c = 0; c < 3; ++c) r[c] = tr + roundedApart(mu2 * eps[c]) - sigma[c];
+    for (int c = 3; c < 6; ++c) r[c] = roundedApart(mu2 * eps[c]) - sigma[c];
   }
 }
 
@@ -166,39 +191,67 @@ PointState committedState(const Hysteresis &h, const HystereticRegion &reg, size
   const double *header = &reg.header[p * kHeader], *plastic = &reg.plastic[p * size];
   if (!h.pending) return {header, plastic};
   buffer.resize(kHeader + size);
-  physics::hystereticUpdate<Dim>(*reg.model, header, plastic, &reg.strain[p * physics::HystereticLayout<Dim>::kStrain], nullptr, buffer.data(), buffer.data() + kHeader);
+  physics::hystereticUpdate<Dim>(*reg.model, header, plastic, &reg.strain[p * physics::HystereticLayout<Dim>::kStrain], nullptr, buffer.data(), buffer.data() + kHeader,
+                                 h.settles + 1);
   return {buffer.data(), buffer.data() + kHeader};
 }
 
+// f_local += vol B^T r at point q of element k, r the relaxation stress (xx, yy, zz, xy, yz, xz).
+template <int Dim>
+void scatterRelaxation(const Hysteresis &h, const HystereticRegion &reg, size_t k, int q, size_t p, const double *r, double vol, PetscScalar *f_local) {
+  // Tensor rows (xx, xy, xz), (xy, yy, yz), (xz, yz, zz) of r.
+  const double T[3][3] = {{r[0], r[3], r[5]}, {r[3], r[1], r[4]}, {r[5], r[4], r[2]}};
+  scatter<Dim>(h, reg, k, q, p, T, vol, f_local);
+}
+
+// The relaxation stress a point keeps for HysteresisAddRegionForce: its first kStress
+// components (in 2D r_yz = r_xz = 0).
+template <int Dim>
+constexpr int kKept = physics::HystereticLayout<Dim>::kStress;
+
 // f_local += scale f_relax of the region, the Iwan stress of each point from stress(p, eps,
-// sigma).
-template <int Dim, class Stress>
-void regionForce(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, double scale, PetscScalar *f_local, Stress stress) {
+// sigma); with `kept`, each point's relaxation stress kept there too.
+template <int Dim, class Stress, class Skip = EveryElement>
+void regionForce(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, double scale, PetscScalar *f_local, double *kept, Stress stress,
+                 Skip skip = {}) {
   constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
-  forEachPoint<Dim>(h, reg, u_local, [&](size_t p, size_t k, int q, double vol, const double *eps) {
-    double sigma[kStress], r[6];
-    stress(p, eps, sigma);
-    relaxationStress<Dim>(reg, eps, sigma, r);
-    // Tensor rows (xx, xy, xz), (xy, yy, yz), (xz, yz, zz) of r.
-    const double T[3][3] = {{r[0], r[3], r[5]}, {r[3], r[1], r[4]}, {r[5], r[4], r[2]}};
-    scatter<Dim>(h, reg, k, q, p, T, scale * vol, f_local);
-  });
+  forEachPoint<Dim>(
+    h, reg, u_local,
+    [&](size_t p, size_t k, int q, double vol, const double *eps) {
+      double sigma[kStress], r[6];
+      stress(p, eps, sigma);
+      relaxationStress<Dim>(reg, eps, sigma, r);
+      if (kept)
+        for (int c = 0; c < kKept<Dim>; ++c) kept[p * kKept<Dim> + c] = r[c];
+      scatterRelaxation<Dim>(h, reg, k, q, p, r, scale * vol, f_local);
+    },
+    0, SIZE_MAX, skip);
 }
 
 // Points ahead whose plastic strains are fetched early.
 constexpr size_t kAhead = 6;
 
 // HysteresisForce of one region: each point's state first brought to the accepted step's strain
-// in place (when `settle`), then the stress of the new strain evaluated from it (nothing
-// written), the strain kept. One pass, each state read once and only the elements that yield
-// written: the step is bound by this traffic (docs/performance.md).
+// in place (when `settle`: update number h.settles + 1), then the stress of the new strain
+// evaluated from it (nothing written), the strain kept. One pass, each state read once and
+// only the elements that yield written: the step is bound by this traffic
+// (docs/performance.md). The untouched elements are skipped, and an element is marked stirred
+// as soon as its nodes move.
 template <int Dim>
 void trialForce(const Hysteresis &h, HystereticRegion &reg, bool settle, const PetscScalar *u_local, PetscScalar *f_local) {
   constexpr int kStrain = physics::HystereticLayout<Dim>::kStrain, kHeader = physics::HystereticLayout<Dim>::kPlastic;
   const int     size    = physics::hystereticStateSize<Dim>(*reg.model) - kHeader;
   const size_t  points  = reg.volume.size();
   const int     n       = reg.model->surfaces();
-  regionForce<Dim>(h, reg, u_local, 1.0, f_local, [&](size_t p, const double *eps, double *sigma) {
+  const double update = h.settles + 1;
+  const size_t values = (size_t)h.nodes * Dim;
+  double      *kept   = reg.relaxation.empty() ? nullptr : reg.relaxation.data();
+  auto         skip   = [&](size_t k, const double *u) {
+    if (untouched(reg, k, u, values)) return true;
+    reg.stirred[k] = 1;
+    return false;
+  };
+  regionForce<Dim>(h, reg, u_local, 1.0, f_local, kept, [&](size_t p, const double *eps, double *sigma) {
     double *header = &reg.header[p * kHeader], *plastic = &reg.plastic[p * size], *strain = &reg.strain[p * kStrain];
     // The headers stream; the plastic strains of a point with a head are hundreds of bytes
     // from the last one's: ask for them a few points ahead, or each such point waits for memory.
@@ -206,20 +259,34 @@ void trialForce(const Hysteresis &h, HystereticRegion &reg, bool settle, const P
       for (int c = 0; c < physics::HystereticLayout<Dim>::kDeviator; ++c) __builtin_prefetch(&reg.plastic[(p + kAhead) * size + c * n], 1);
     // (The update's return, the plastic work, is not booked: the ledger's dissipation is the
     // work against the relaxation force plus E_r, closed to round-off; energy_ledger.hpp.)
-    if (settle) physics::hystereticUpdate<Dim>(*reg.model, header, plastic, strain, nullptr, header, plastic);
-    physics::hystereticUpdate<Dim>(*reg.model, header, plastic, eps, sigma, nullptr, nullptr);
-    std::copy(eps, eps + kStrain, strain);
-  });
+    if (settle) physics::hystereticSettleEvaluate<Dim>(*reg.model, header, plastic, strain, update, eps, sigma);
+    else physics::hystereticUpdate<Dim>(*reg.model, header, plastic, eps, sigma, nullptr, nullptr, 0);
+    for (int c = 0; c < kStrain; ++c) strain[c] = eps[c];
+  }, skip);
 }
 
 // f_local += scale f_relax of the region from its committed states (evaluated, not updated).
 template <int Dim>
 void committedForce(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, double scale, PetscScalar *f_local) {
   std::vector<double> buffer;
-  regionForce<Dim>(h, reg, u_local, scale, f_local, [&](size_t p, const double *eps, double *sigma) {
+  regionForce<Dim>(h, reg, u_local, scale, f_local, nullptr, [&](size_t p, const double *eps, double *sigma) {
     const PointState state = committedState<Dim>(h, reg, p, buffer);
-    physics::hystereticUpdate<Dim>(*reg.model, state.header, state.plastic, eps, sigma, nullptr, nullptr);
+    physics::hystereticUpdate<Dim>(*reg.model, state.header, state.plastic, eps, sigma, nullptr, nullptr, 0);
   });
+}
+
+// The same from the relaxation stresses the last force kept: the same bits (the force
+// evaluated the same states at the same strains), without a strain or an update.
+template <int Dim>
+void keptForce(const Hysteresis &h, const HystereticRegion &reg, double scale, PetscScalar *f_local) {
+  const size_t points = (size_t)reg.points;
+  for (size_t k = 0; k < reg.elements.size(); ++k)
+    for (size_t q = 0; q < points; ++q) {
+      const size_t p = k * points + q;
+      double       r[6] = {};
+      std::copy(&reg.relaxation[p * kKept<Dim>], &reg.relaxation[p * kKept<Dim>] + kKept<Dim>, r);
+      scatterRelaxation<Dim>(h, reg, k, (int)q, p, r, scale * reg.volume[p], f_local);
+    }
 }
 
 // Brings every point's state to its pending strain in place: what the next force would do
@@ -231,10 +298,13 @@ void settle(Hysteresis *h) {
   for (HystereticRegion &reg : h->regions) {
     const size_t size = physics::hystereticStateSize<Dim>(*reg.model) - kHeader;
     for (size_t p = 0; p < reg.volume.size(); ++p) {
+      // An element not stirred is virgin at a zero strain: nothing to bring.
+      if (!reg.stirred[p / reg.points]) continue;
       double *header = &reg.header[p * kHeader], *plastic = &reg.plastic[p * size];
-      physics::hystereticUpdate<Dim>(*reg.model, header, plastic, &reg.strain[p * kStrain], nullptr, header, plastic);
+      physics::hystereticUpdate<Dim>(*reg.model, header, plastic, &reg.strain[p * kStrain], nullptr, header, plastic, h->settles + 1);
     }
   }
+  h->settles += 1;
   h->pending = false;
 }
 
@@ -244,14 +314,20 @@ double relaxationEnergy(Hysteresis *h, const PetscScalar *u_local) {
   std::vector<double> buffer;
   settle<Dim>(h);
   for (const HystereticRegion &reg : h->regions) {
-    forEachPoint<Dim>(*h, reg, u_local, [&](size_t p, size_t, int, double vol, const double *eps) {
-      double tr = 0, ee = 0;
-      for (int c = 0; c < Dim; ++c) tr += eps[c];
-      for (int c = 0; c < physics::HystereticLayout<Dim>::kStrain; ++c) ee += (c < 3 && c < Dim ? 1.0 : 2.0) * eps[c] * eps[c];
-      const double     linear = 0.5 * reg.lambda * tr * tr + reg.mu * ee;
-      const PointState state  = committedState<Dim>(*h, reg, p, buffer);
-      sum += vol * (linear - physics::hystereticStoredEnergy<Dim>(*reg.model, state.header, state.plastic, eps));
-    });
+    // An untouched element holds no energy beyond the linear one (zero strain, virgin states).
+    const size_t values = (size_t)h->nodes * Dim;
+    auto         skip   = [&](size_t k, const double *u) { return untouched(reg, k, u, values); };
+    forEachPoint<Dim>(
+      *h, reg, u_local,
+      [&](size_t p, size_t, int, double vol, const double *eps) {
+        double tr = 0, ee = 0;
+        for (int c = 0; c < Dim; ++c) tr += eps[c];
+        for (int c = 0; c < physics::HystereticLayout<Dim>::kStrain; ++c) ee += (c < 3 && c < Dim ? 1.0 : 2.0) * eps[c] * eps[c];
+        const double     linear = 0.5 * reg.lambda * tr * tr + reg.mu * ee;
+        const PointState state  = committedState<Dim>(*h, reg, p, buffer);
+        sum += vol * (linear - physics::hystereticStoredEnergy<Dim>(*reg.model, state.header, state.plastic, eps));
+      },
+      0, SIZE_MAX, skip);
   }
   return sum;
 }
@@ -270,7 +346,7 @@ void elementFields(const HystereticRegion &reg, const Hysteresis &h, const Petsc
       double        sigma[kStress], r[6];
       const PointState state = committedState<Dim>(h, reg, p, buffer);
       // Evaluate only (no state out): the committed state stays as it is.
-      physics::hystereticUpdate<Dim>(*reg.model, state.header, state.plastic, eps, sigma, nullptr, nullptr);
+      physics::hystereticUpdate<Dim>(*reg.model, state.header, state.plastic, eps, sigma, nullptr, nullptr, 0);
       relaxationStress<Dim>(reg, eps, sigma, r);
       for (int j = 0; j < 6; ++j) mean[6 * (k - first) + j] += r[j] / reg.points;
       largest[k - first] = std::max(largest[k - first], physics::maxShearStrain<Dim>(*reg.model, state.header));
@@ -409,6 +485,7 @@ PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector
     reg.header.assign(reg.volume.size() * header, 0.0);
     reg.plastic.assign(reg.volume.size() * (size - header), 0.0);
     reg.strain.assign(reg.volume.size() * (dim == 2 ? physics::HystereticLayout<2>::kStrain : physics::HystereticLayout<3>::kStrain), 0.0);
+    reg.stirred.assign(reg.elements.size(), 0);
     h->regions.push_back(std::move(reg));
   }
   *out = h;
@@ -427,15 +504,25 @@ void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_l
     if (h->dim == 2) trialForce<2>(*h, reg, h->pending, u_local, f_local);
     else trialForce<3>(*h, reg, h->pending, u_local, f_local);
   }
+  if (h->pending) h->settles += 1;
   h->pending   = false;
   h->has_trial = true;
 }
 
-void HysteresisAddRegionForce(const Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local) {
-  for (const HystereticRegion &reg : h->regions) {
+void HysteresisAddRegionForce(Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local) {
+  for (HystereticRegion &reg : h->regions) {
     if (reg.region != region) continue;
+    const int kept = h->dim == 2 ? kKept<2> : kKept<3>;
+    // Kept by the last force (a force since the last commit, with the region keeping): scatter.
+    if (h->has_trial && !reg.relaxation.empty()) {
+      if (h->dim == 2) keptForce<2>(*h, reg, scale, f_local);
+      else keptForce<3>(*h, reg, scale, f_local);
+      continue;
+    }
     if (h->dim == 2) committedForce<2>(*h, reg, u_local, scale, f_local);
     else committedForce<3>(*h, reg, u_local, scale, f_local);
+    // Asked once, asked every step: from now on the forces keep this region's stresses.
+    reg.relaxation.assign(reg.volume.size() * kept, 0.0);
   }
 }
 
@@ -445,14 +532,20 @@ void HysteresisCommit(Hysteresis *h) {
   h->has_trial = false;
 }
 
-// Checkpoints hold each point's state as one array (header, then plastic strains).
+// Checkpoints hold each point's state as one array (header, then plastic strains), with the
+// tail's age (updates since it was set) in kSince's slot: the count of updates starts again
+// with the restarted run (HysteresisSetState), and the file is the same as when the state kept
+// that age itself (version 10).
 std::vector<double> HysteresisState(const Hysteresis *h) {
   std::vector<double> s, buffer;
+  // The committed states have had the settles so far, and the pending one if any.
+  const double now = h->settles + (h->pending ? 1 : 0);
   for (const HystereticRegion &reg : h->regions) {
     const size_t header = reg.header.size() / reg.volume.size(), size = reg.plastic.size() / reg.volume.size();
     for (size_t p = 0; p < reg.volume.size(); ++p) {
       const PointState state = h->dim == 2 ? committedState<2>(*h, reg, p, buffer) : committedState<3>(*h, reg, p, buffer);
       s.insert(s.end(), state.header, state.header + header);
+      physics::swapTailAge(&s[s.size() - header], now);
       s.insert(s.end(), state.plastic, state.plastic + size);
     }
   }
@@ -466,14 +559,27 @@ PetscInt HysteresisStateSize(const Hysteresis *h) {
 }
 
 void HysteresisSetState(Hysteresis *h, const std::vector<double> &s) {
-  auto o = s.begin();
+  auto         o     = s.begin();
+  const size_t since = physics::HystereticLayout<2>::kSince;
+  h->settles         = 0;
   for (HystereticRegion &reg : h->regions) {
     const size_t header = reg.header.size() / reg.volume.size(), size = reg.plastic.size() / reg.volume.size();
+    std::fill(reg.stirred.begin(), reg.stirred.end(), 0);
     for (size_t p = 0; p < reg.volume.size(); ++p) {
-      std::copy_n(o, header, reg.header.begin() + p * header);
+      double *state = &reg.header[p * header];
+      std::copy_n(o, header, state);
       std::copy_n(o + header, size, reg.plastic.begin() + p * size);
       o += header + size;
+      // The age back to the update that set the tail, in the count that starts here.
+      physics::swapTailAge(state, h->settles);
+      // A point with anything in its header but that has had a strain.
+      for (size_t j = 0; j < header; ++j)
+        if (j != since && state[j] != 0) reg.stirred[p / reg.points] = 1;
     }
+    // No strain is pending (pending is false): the untouched elements' must be zero.
+    std::fill(reg.strain.begin(), reg.strain.end(), 0.0);
+    // The relaxation kept for an untouched element is zero (it is not written while skipped).
+    std::fill(reg.relaxation.begin(), reg.relaxation.end(), 0.0);
   }
   h->pending   = false;
   h->has_trial = false;

@@ -46,19 +46,19 @@ bool sameElastic(const ElasticMaterial &a, const ElasticMaterial &b) { return a.
 
 int soilStateSize(int dim, const HystereticSoilModel &model) { return dim == 2 ? hystereticStateSize<2>(model) : hystereticStateSize<3>(model); }
 
-// The Iwan update, in place, at a point of a height-only motion with g[c] = du_c/dz (the last
-// axis vertical): the full strain tensor of the motion in, out[c] = sigma_{c z} (c = dim-1:
-// sigma_zz) and out[dim] = sigma_xx.
-void soilPoint(const HystereticSoilModel &model, int dim, const double *g, double *state, double *out) {
+// The Iwan update number `update`, in place, at a point of a height-only motion with
+// g[c] = du_c/dz (the last axis vertical): the full strain tensor of the motion in,
+// out[c] = sigma_{c z} (c = dim-1: sigma_zz) and out[dim] = sigma_xx.
+void soilPoint(const HystereticSoilModel &model, int dim, const double *g, double update, double *state, double *out) {
   if (dim == 2) {
     const double strain[3] = {0.0, g[1], 0.5 * g[0]}; // xx, yy, xy
     double       sigma[4];
-    hystereticUpdate<2>(model, state, strain, sigma, state);
+    hystereticUpdate<2>(model, state, strain, sigma, state, update);
     out[0] = sigma[2], out[1] = sigma[1], out[2] = sigma[0];
   } else {
     const double strain[6] = {0.0, 0.0, g[2], 0.0, 0.5 * g[1], 0.5 * g[0]}; // xx, yy, zz, xy, yz, xz
     double       sigma[6];
-    hystereticUpdate<3>(model, state, strain, sigma, state);
+    hystereticUpdate<3>(model, state, strain, sigma, state, update);
     out[0] = sigma[5], out[1] = sigma[4], out[2] = sigma[2], out[3] = sigma[0];
   }
 }
@@ -236,6 +236,7 @@ void FreeFieldColumn::internalForce(const std::vector<double> &x, std::vector<do
 void FreeFieldColumn::soilForce(std::vector<double> &f) {
   const int n1 = p_ + 1, ns = dim_ + 1;
   double    g[3];
+  soil_updates_ += 1;
   for (int e = 0; e < elementCount(); ++e) {
     if (!soil_[e]) continue;
     const double L = elementLength(e);
@@ -243,7 +244,7 @@ void FreeFieldColumn::soilForce(std::vector<double> &f) {
     double      *sig  = &soil_stress_[(size_t)e * n1 * ns];
     for (int q = 0; q <= p_; ++q) {
       for (int c = 0; c < dim_; ++c) g[c] = scaledGradient(u_, e, c, q) / L;
-      soilPoint(*soil_[e], dim_, g, &soil_state_[soil_offset_[e] + (long)q * size], &sig[q * ns]);
+      soilPoint(*soil_[e], dim_, g, soil_updates_, &soil_state_[soil_offset_[e] + (long)q * size], &sig[q * ns]);
     }
     for (int c = 0; c < dim_; ++c)
       for (int a = 0; a <= p_; ++a) {
@@ -319,7 +320,8 @@ void FreeFieldColumn::start(double t0, double v_in0) {
   std::fill(zeta_.begin(), zeta_.end(), 0.0);
   std::fill(spring_old_.begin(), spring_old_.end(), 0.0);
   for (std::vector<double> *x : {&soil_state_, &soil_stress_, &lateral_zeta_, &lateral_old_}) std::fill(x->begin(), x->end(), 0.0);
-  t_ = t0;
+  soil_updates_ = 0;
+  t_            = t0;
   // a* = M^{-1} f_in (u = v = 0).
   std::fill(a_star_.begin(), a_star_.end(), 0.0);
   if (input_component_ >= 0) a_star_[input_component_] = 2 * input_impedance_ * v_in0 / mass_[0];
@@ -420,9 +422,22 @@ double FreeFieldColumn::omegaMax() const {
 
 double FreeFieldColumn::stableStep() const { return centralDifferenceStableStep(omegaMax(), beta_); }
 
+// Each Iwan state's tail age (updates since the tail was set) to or from its kSince slot at
+// update `now` (the same map both ways).
+void FreeFieldColumn::swapTailAges(std::vector<double> &states, double now) const {
+  for (int e = 0; e < elementCount(); ++e) {
+    if (!soil_[e]) continue;
+    const int size = soilStateSize(dim_, *soil_[e]);
+    for (int q = 0; q <= p_; ++q) swapTailAge(&states[soil_offset_[e] + (long)q * size], now);
+  }
+}
+
 std::vector<double> FreeFieldColumn::state() const {
-  std::vector<double> s{t_, started_ ? 1.0 : 0.0};
-  for (const std::vector<double> *x : {&u_, &v_, &a_, &v_half_, &zeta_, &spring_old_, &soil_state_, &soil_stress_, &lateral_zeta_, &lateral_old_})
+  std::vector<double>       s{t_, started_ ? 1.0 : 0.0}, ages = soil_state_;
+  const std::vector<double> &soil = ages;
+  // The checkpoint keeps the tails' ages: a restart's count of updates starts again at 0.
+  swapTailAges(ages, soil_updates_);
+  for (const std::vector<double> *x : {&u_, &v_, &a_, &v_half_, &zeta_, &spring_old_, &soil, &soil_stress_, &lateral_zeta_, &lateral_old_})
     s.insert(s.end(), x->begin(), x->end());
   return s;
 }
@@ -437,6 +452,8 @@ bool FreeFieldColumn::setState(const std::vector<double> &s) {
     std::copy(s.begin() + o, s.begin() + o + x->size(), x->begin());
     o += x->size();
   }
+  soil_updates_ = 0;
+  swapTailAges(soil_state_, soil_updates_);
   return true;
 }
 

@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "slipwave/numerics/rounded_apart.hpp"
+
 namespace slipwave::physics {
 namespace {
 
@@ -209,6 +211,10 @@ inline Lanes laneSqrt(Lanes x) {
 #endif
 }
 
+// A returned d is rounded apart (numerics/rounded_apart.hpp): one pass uses it once (the
+// settle's p = e - d), another twice (the update's p and stress), and they must agree.
+using numerics::roundedApart;
+
 // An element counts as elastic in a tail only with this share of its radius to spare: the
 // slack and the strains are rounded, and the tail must not hold an element that a sweep would
 // return by more than round-off.
@@ -217,9 +223,11 @@ constexpr double kSlackShare = 1 - 1e-12;
 constexpr int kMaxGroups = 1000 / 4 + 1;
 
 // Element i of the scalar remainder: returns its dissipation, adds its stress 2 G_i d to s and,
-// with slack, lowers *slack to its r_i - |e - p_i| after the update (-1 if it yields).
+// with slack, lowers *slack to its r_i - |e - p_i| after the update (-1 if it yields). Not
+// inlined: one compiled copy of this arithmetic for every pass (inlined, the compiler
+// vectorises and fuses its scalar sums differently in each, and the bits would differ).
 template <int Dim>
-inline double updateElement(int n, int i, double two_g, double r, const double *e, const double *p_in, double *p_out, double *s, double *slack) {
+__attribute__((noinline)) double updateElement(int n, int i, double two_g, double r, const double *e, const double *p_in, double *p_out, double *s, double *slack) {
   constexpr int kDev = HystereticLayout<Dim>::kDeviator;
   double        d[kDev], dissipation = 0;
   for (int c = 0; c < kDev; ++c) d[c] = e[c] - p_in[c * n + i];
@@ -228,7 +236,7 @@ inline double updateElement(int n, int i, double two_g, double r, const double *
     // Radial return onto |d| = r: p moves along d by |d| - r.
     const double norm = std::sqrt(n2), scale = r / norm;
     for (int c = 0; c < kDev; ++c) {
-      d[c] *= scale;
+      d[c] = roundedApart(d[c] * scale);
       if (p_out) p_out[c * n + i] = e[c] - d[c];
     }
     dissipation = two_g * r * (norm - r);
@@ -238,6 +246,26 @@ inline double updateElement(int n, int i, double two_g, double r, const double *
   }
   for (int c = 0; c < kDev; ++c) s[c] += two_g * d[c];
   return dissipation;
+}
+
+// A group of four elements (lanes) with plastic strains p at the deviatoric strain e4:
+// d = e - p and n2 = d:d; where a lane yields (n2 > r^2, the mask `yields`) its norm |d| and
+// d returned onto |d| = r. Returns whether one yields (else norm and the returns are not set).
+// The one place of this arithmetic, so that every pass over the elements rounds alike.
+template <int Dim>
+inline bool returnGroup(const Lanes *e4, const Lanes *p, Lanes r, Lanes *d, Lanes &n2, Mask &yields, Lanes &norm) {
+  constexpr int kDev = HystereticLayout<Dim>::kDeviator;
+  for (int c = 0; c < kDev; ++c) d[c] = e4[c] - p[c];
+  const Lanes zz = d[0] + d[1];
+  Lanes       shear = d[2] * d[2];
+  if constexpr (Dim == 3) shear += d[3] * d[3] + d[4] * d[4];
+  n2 = d[0] * d[0] + d[1] * d[1] + zz * zz + 2 * shear;
+  yields = n2 > r * r;
+  if (!(yields[0] | yields[1] | yields[2] | yields[3])) return false;
+  norm = laneSqrt(n2);
+  const Lanes scale = yields ? r / norm : broadcast(1);
+  for (int c = 0; c < kDev; ++c) d[c] = roundedApart(d[c] * scale);
+  return true;
 }
 
 // Elements [0, end) (end a multiple of four, or N) at the deviatoric strain e: their stress
@@ -256,25 +284,16 @@ double sweep(const HystereticSoilModel &model, const double *p_in, double *p_out
   }
   int i = 0, g = 0;
   for (; i + 4 <= end; i += 4, ++g) {
-    Lanes d[kDev];
-    for (int c = 0; c < kDev; ++c) d[c] = e4[c] - loadLanes(p_in + c * n + i);
-    const Lanes zz = d[0] + d[1];
-    Lanes       shear = d[2] * d[2];
-    if constexpr (Dim == 3) shear += d[3] * d[3] + d[4] * d[4];
-    const Lanes n2 = d[0] * d[0] + d[1] * d[1] + zz * zz + 2 * shear;
+    Lanes p[kDev], d[kDev], n2, norm;
+    Mask  yields;
+    for (int c = 0; c < kDev; ++c) p[c] = loadLanes(p_in + c * n + i);
     const Lanes r = loadLanes(radius + i), g2 = loadLanes(two_g + i);
-    const Mask  yields = n2 > r * r;
     Lanes       spare = broadcast(-1);
-    if (yields[0] | yields[1] | yields[2] | yields[3]) {
-      // Radial return of the yielding lanes onto |d| = r (scale 1 and no dissipation elsewhere).
-      const Lanes norm = laneSqrt(n2);
-      const Lanes scale = yields ? r / norm : broadcast(1), excess = yields ? norm - r : broadcast(0);
-      for (int c = 0; c < kDev; ++c) {
-        const Lanes p_old = loadLanes(p_in + c * n + i);
-        d[c] *= scale;
-        if (p_out) storeLanes(p_out + c * n + i, yields ? e4[c] - d[c] : p_old);
-      }
-      dissipation4 += g2 * r * excess;
+    if (returnGroup<Dim>(e4, p, r, d, n2, yields, norm)) {
+      // The yielding lanes move onto their surface (p = e - d); no dissipation elsewhere.
+      if (p_out)
+        for (int c = 0; c < kDev; ++c) storeLanes(p_out + c * n + i, yields ? e4[c] - d[c] : p[c]);
+      dissipation4 += g2 * r * (yields ? norm - r : broadcast(0));
       if (slack) spare = yields ? broadcast(-1) : r * kSlackShare - norm;
     } else if (slack) {
       spare = r * kSlackShare - laneSqrt(n2);
@@ -289,6 +308,46 @@ double sweep(const HystereticSoilModel &model, const double *p_in, double *p_out
   return dissipation;
 }
 
+// Two sweeps in one pass: elements [0, settle_end) brought to the deviatoric strain e_settle in
+// place (as sweep with p_out = p, no slack), then elements [0, evaluate_end) evaluated at
+// e_evaluate from the result (as sweep without p_out), settle_end <= evaluate_end: each element
+// both visit is read once. The stress of the second into s; the dissipation of the first
+// returned. The same arithmetic in the same order as the two sweeps, so the same bits.
+template <int Dim>
+double settleEvaluateSweep(const HystereticSoilModel &model, double *plastic, const double *e_settle, int settle_end, const double *e_evaluate, int evaluate_end,
+                           double *s) {
+  constexpr int kDev = HystereticLayout<Dim>::kDeviator;
+  const int     n = model.surfaces();
+  const double *two_g = model.twiceModulus(), *radius = model.radius();
+  Lanes         e1[kDev], e2[kDev], s4[kDev], dissipation4 = broadcast(0);
+  for (int c = 0; c < kDev; ++c) {
+    e1[c] = broadcast(e_settle[c]);
+    e2[c] = broadcast(e_evaluate[c]);
+    s4[c] = broadcast(0);
+  }
+  int i = 0;
+  for (; i + 4 <= evaluate_end; i += 4) {
+    Lanes p[kDev], d[kDev], n2, norm;
+    Mask  yields;
+    for (int c = 0; c < kDev; ++c) p[c] = loadLanes(plastic + c * n + i);
+    const Lanes r = loadLanes(radius + i), g2 = loadLanes(two_g + i);
+    if (i < settle_end && returnGroup<Dim>(e1, p, r, d, n2, yields, norm)) {
+      for (int c = 0; c < kDev; ++c) {
+        p[c] = yields ? e1[c] - d[c] : p[c];
+        storeLanes(plastic + c * n + i, p[c]);
+      }
+      dissipation4 += g2 * r * (yields ? norm - r : broadcast(0));
+    }
+    returnGroup<Dim>(e2, p, r, d, n2, yields, norm);
+    for (int c = 0; c < kDev; ++c) s4[c] += g2 * d[c];
+  }
+  double dissipation = dissipation4[0] + dissipation4[1] + dissipation4[2] + dissipation4[3], unused[kDev] = {};
+  for (int c = 0; c < kDev; ++c) s[c] = s4[c][0] + s4[c][1] + s4[c][2] + s4[c][3];
+  for (int k = i; k < settle_end; ++k) dissipation += updateElement<Dim>(n, k, two_g[k], radius[k], e_settle, plastic, plastic, unused, nullptr);
+  for (; i < evaluate_end; ++i) updateElement<Dim>(n, i, two_g[i], radius[i], e_evaluate, plastic, nullptr, s, nullptr);
+  return dissipation;
+}
+
 // After a sweep of every element to e, in place: the tail for the next updates. A tail from
 // element k = 4 g holds while |e' - e| <= m_k, the smallest slack from k on; it costs k element
 // visits per update and a sweep (about 1.5 N, the slacks' roots included) each time the strain
@@ -296,7 +355,7 @@ double sweep(const HystereticSoilModel &model, const double *p_in, double *p_out
 // since the last sweep. The k of least cost k + 1.5 N rate / m_k is kept (N: no tail, a sweep
 // every update, 1.5 N).
 template <int Dim>
-void chooseTail(const HystereticSoilModel &model, double *state, const double *p, const double *e, double rate, const double *slack) {
+void chooseTail(const HystereticSoilModel &model, double *state, const double *p, const double *e, double update, double rate, const double *slack) {
   using L = HystereticLayout<Dim>;
   const int n = model.surfaces(), groups = n / 4;
   double    best_cost = 1.5 * n, best_slack = 0, m = n % 4 ? slack[groups] : std::numeric_limits<double>::infinity();
@@ -313,7 +372,7 @@ void chooseTail(const HystereticSoilModel &model, double *state, const double *p
   }
   state[L::kHead] = best;
   state[L::kSlack] = best_slack;
-  state[L::kUpdates] = 0;
+  state[L::kSince] = update;
   const double *two_g = model.twiceModulus();
   for (int c = 0; c < L::kDeviator; ++c) {
     double tail = 0;
@@ -330,11 +389,43 @@ void chooseTail(const HystereticSoilModel &model, double *state, const double *p
   state[L::kTailEnergy] = energy;
 }
 
+// The stress (the strain's components, sigma_zz also in 2D) from the trace and the
+// deviatoric stress s.
+template <int Dim>
+void writeStress(const HystereticSoilModel &model, double tr, const double *s, double *stress) {
+  const double p = model.bulkModulus() * tr;
+  if constexpr (Dim == 2) {
+    stress[0] = p + s[0];
+    stress[1] = p + s[1];
+    stress[2] = s[2];
+    stress[3] = p - (s[0] + s[1]);
+  } else {
+    stress[0] = p + s[0];
+    stress[1] = p + s[1];
+    stress[2] = p - (s[0] + s[1]);
+    stress[3] = s[2];
+    stress[4] = s[3];
+    stress[5] = s[4];
+  }
+}
+
+// The header's largest equivalent shear strain after an update to the deviatoric strain e,
+// written only where it grows (a point at rest leaves the line clean). The root only where it
+// may: sqrt(x) <= m for x <= m^2 (a correctly rounded root of the rounded square of m is m,
+// where m^2 is a normal number).
+template <int Dim>
+void keepLargestStrain(double *header, const double *e) {
+  const double x = 2 * contracted<Dim>(e), largest = header[HystereticLayout<Dim>::kMaxStrain];
+  if (x <= largest * largest && largest >= 1e-150) return;
+  const double gamma = std::sqrt(x);
+  if (gamma > largest) header[HystereticLayout<Dim>::kMaxStrain] = gamma;
+}
+
 } // namespace
 
 template <int Dim>
 double hystereticUpdate(const HystereticSoilModel &model, const double *state_in, const double *plastic_in, const double *strain, double *stress, double *state_out,
-                        double *plastic_out) {
+                        double *plastic_out, double update) {
   using L = HystereticLayout<Dim>;
   constexpr int kDev = L::kDeviator;
   const int     n = model.surfaces();
@@ -358,27 +449,45 @@ double hystereticUpdate(const HystereticSoilModel &model, const double *state_in
   if (tail_holds)
     for (int c = 0; c < kDev; ++c) s[c] += model.tailModulus()[head] * e[c] - state_in[L::kTailStress + c];
 
-  if (stress) {
-    const double p = model.bulkModulus() * tr;
-    if constexpr (Dim == 2) {
-      stress[0] = p + s[0];
-      stress[1] = p + s[1];
-      stress[2] = s[2];
-      stress[3] = p - (s[0] + s[1]);
-    } else {
-      stress[0] = p + s[0];
-      stress[1] = p + s[1];
-      stress[2] = p - (s[0] + s[1]);
-      stress[3] = s[2];
-      stress[4] = s[3];
-      stress[5] = s[4];
-    }
-  }
+  if (stress) writeStress<Dim>(model, tr, s, stress);
   if (state_out) {
-    state_out[L::kMaxStrain] = std::max(state_out[L::kMaxStrain], std::sqrt(2 * contracted<Dim>(e)));
-    if (tail_holds) state_out[L::kUpdates] += 1;
-    else chooseTail<Dim>(model, state_out, plastic_out, e, std::sqrt(drift2) / (state_out[L::kUpdates] + 1), group_slack);
+    keepLargestStrain<Dim>(state_out, e);
+    // The drift per update since the tail was set (the updates in between all held it).
+    if (!tail_holds) chooseTail<Dim>(model, state_out, plastic_out, e, update, std::sqrt(drift2) / (update - state_out[L::kSince]), group_slack);
   }
+  return dissipation;
+}
+
+template <int Dim>
+double hystereticSettleEvaluate(const HystereticSoilModel &model, double *header, double *plastic, const double *settled, double update, const double *strain, double *stress) {
+  using L = HystereticLayout<Dim>;
+  constexpr int kDev = L::kDeviator;
+  double        e1[kDev], drift[kDev];
+  deviator<Dim>(settled, e1);
+  for (int c = 0; c < kDev; ++c) drift[c] = e1[c] - header[L::kReference + c];
+  const double slack = header[L::kSlack];
+  // The settle leaves the tail: it sweeps every element and sets the next tail, from which the
+  // stress is then evaluated (rare: a point sets its tail for the updates to come).
+  if (!(contracted<Dim>(drift) <= slack * slack)) {
+    const double dissipation = hystereticUpdate<Dim>(model, header, plastic, settled, nullptr, header, plastic, update);
+    hystereticUpdate<Dim>(model, header, plastic, strain, stress, nullptr, nullptr, 0);
+    return dissipation;
+  }
+  // The tail holds for the settle: it keeps the header's tail, so the evaluation's tail test
+  // is against the same reference and slack, and both sweep the head.
+  double       e2[kDev], s[kDev];
+  const double tr = deviator<Dim>(strain, e2);
+  for (int c = 0; c < kDev; ++c) drift[c] = e2[c] - header[L::kReference + c];
+  const bool   tail_holds = contracted<Dim>(drift) <= slack * slack;
+  const int    n = model.surfaces(), head = (int)header[L::kHead];
+  double       dissipation = 0;
+  // No element to visit (a point at rest in its elastic range): the sweep of none sums zeros.
+  if (head == 0 && tail_holds) std::fill(s, s + kDev, 0.0);
+  else dissipation = settleEvaluateSweep<Dim>(model, plastic, e1, head, e2, tail_holds ? head : n, s);
+  if (tail_holds)
+    for (int c = 0; c < kDev; ++c) s[c] += model.tailModulus()[head] * e2[c] - header[L::kTailStress + c];
+  writeStress<Dim>(model, tr, s, stress);
+  keepLargestStrain<Dim>(header, e1);
   return dissipation;
 }
 
@@ -429,8 +538,10 @@ double equivalentShearStress(const double *stress) {
   return std::sqrt(0.5 * contracted<Dim>(sd));
 }
 
-template double hystereticUpdate<2>(const HystereticSoilModel &, const double *, const double *, const double *, double *, double *, double *);
-template double hystereticUpdate<3>(const HystereticSoilModel &, const double *, const double *, const double *, double *, double *, double *);
+template double hystereticUpdate<2>(const HystereticSoilModel &, const double *, const double *, const double *, double *, double *, double *, double);
+template double hystereticUpdate<3>(const HystereticSoilModel &, const double *, const double *, const double *, double *, double *, double *, double);
+template double hystereticSettleEvaluate<2>(const HystereticSoilModel &, double *, double *, const double *, double, const double *, double *);
+template double hystereticSettleEvaluate<3>(const HystereticSoilModel &, double *, double *, const double *, double, const double *, double *);
 template double hystereticStoredEnergy<2>(const HystereticSoilModel &, const double *, const double *, const double *);
 template double hystereticStoredEnergy<3>(const HystereticSoilModel &, const double *, const double *, const double *);
 template double equivalentShearStrain<2>(const double *);

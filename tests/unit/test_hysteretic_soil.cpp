@@ -82,7 +82,7 @@ struct Point {
   Rotation                   frame;
   std::vector<double>        state;
   double                     E[3][3] = {}, S[3][3] = {}; // global strain and stress
-  double                     dissipated = 0, work = 0, last_dissipation = 0, last_work = 0;
+  double                     dissipated = 0, work = 0, last_dissipation = 0, last_work = 0, updates = 0;
 
   Point(const HystereticSoilModel &m, bool rotated) : model(m), frame(!rotated), state(hystereticStateSize<Dim>(m), 0.0) {}
 
@@ -94,7 +94,7 @@ struct Point {
       strain[0] = E_new[0][0], strain[1] = E_new[1][1], strain[2] = E_new[2][2];
       strain[3] = E_new[0][1], strain[4] = E_new[1][2], strain[5] = E_new[0][2];
     }
-    last_dissipation = hystereticUpdate<Dim>(model, state.data(), strain, stress, state.data());
+    last_dissipation = hystereticUpdate<Dim>(model, state.data(), strain, stress, state.data(), ++updates);
     double S_new[3][3] = {};
     if constexpr (Dim == 2) {
       S_new[0][0] = stress[0], S_new[1][1] = stress[1], S_new[0][1] = S_new[1][0] = stress[2], S_new[2][2] = stress[3];
@@ -326,8 +326,8 @@ void planeStrainIs3D() {
     const double exx = 0.4 * a * std::cos(1.7 * t), eyy = -0.25 * a * std::sin(0.6 * t), exy = 0.5 * a;
     const double e2[3] = {exx, eyy, exy}, e3[6] = {exx, eyy, 0, exy, 0, 0};
     double       st2[4], st3[6];
-    const double d2 = hystereticUpdate<2>(m, s2.data(), e2, st2, s2.data());
-    const double d3 = hystereticUpdate<3>(m, s3.data(), e3, st3, s3.data());
+    const double d2 = hystereticUpdate<2>(m, s2.data(), e2, st2, s2.data(), k);
+    const double d3 = hystereticUpdate<3>(m, s3.data(), e3, st3, s3.data(), k);
     total += d2;
     const double scale = 1e-13 * (std::fabs(st3[0]) + std::fabs(st3[1]) + std::fabs(st3[3]) + 1.0);
     ok = ok && std::fabs(st2[0] - st3[0]) <= scale && std::fabs(st2[1] - st3[1]) <= scale && std::fabs(st2[2] - st3[3]) <= scale &&
@@ -345,7 +345,7 @@ void volumetricIsElastic() {
   const double              ev = -1e-2; // 1 % compression: far beyond every yield strain in shear
   const double              iso[6] = {ev / 3, ev / 3, ev / 3, 0, 0, 0};
   double                    st[6];
-  const double              d = hystereticUpdate<3>(m, state.data(), iso, st, state.data());
+  const double              d = hystereticUpdate<3>(m, state.data(), iso, st, state.data(), 1);
   unit::check(d == 0, "volumetric: no dissipation");
   unit::near(st[0], kBulk * ev, 1e-15, 0, "volumetric: sigma_xx = K tr(eps)");
   unit::check(st[0] == st[1] && st[1] == st[2] && st[3] == 0 && st[4] == 0 && st[5] == 0, "volumetric: isotropic stress");
@@ -356,10 +356,10 @@ void volumetricIsElastic() {
   // Shear to 2e-3, then compress on top.
   const double shear[6] = {0, 0, 0, 1e-3, 0, 0};
   double       st_shear[6];
-  hystereticUpdate<3>(m, state.data(), shear, st_shear, state.data());
+  hystereticUpdate<3>(m, state.data(), shear, st_shear, state.data(), 2);
   before = state;
   const double both[6] = {ev / 3, ev / 3, ev / 3, 1e-3, 0, 0};
-  const double d2 = hystereticUpdate<3>(m, state.data(), both, st, state.data());
+  const double d2 = hystereticUpdate<3>(m, state.data(), both, st, state.data(), 3);
   // Elements left on their yield surface by the shear sit there to round-off (|d| = r(1 + 1e-16)),
   // so an update with the same deviator may book ~1e-16 of tau gamma; nothing more.
   unit::check(d2 >= 0 && d2 <= 1e-14 * st_shear[3] * 2e-3, "volumetric on a sheared point: no dissipation beyond round-off");
@@ -390,17 +390,17 @@ void callingConventions() {
   std::vector<double>       committed(hystereticStateSize<3>(m), 0.0), trial(committed.size(), -1.0);
   const double              e1[6] = {1e-4, -2e-4, 0, 8e-4, -3e-4, 2e-4};
   double                    st_eval[6], st_trial[6], st_place[6];
-  const double              d_eval = hystereticUpdate<3>(m, committed.data(), e1, st_eval, nullptr);
+  const double              d_eval = hystereticUpdate<3>(m, committed.data(), e1, st_eval, nullptr, 0);
   unit::check(std::all_of(committed.begin(), committed.end(), [](double x) { return x == 0; }), "state_out = null: nothing written");
-  const double d_trial = hystereticUpdate<3>(m, committed.data(), e1, st_trial, trial.data());
+  const double d_trial = hystereticUpdate<3>(m, committed.data(), e1, st_trial, trial.data(), 1);
   unit::check(std::all_of(committed.begin(), committed.end(), [](double x) { return x == 0; }), "separate state_out: the committed state untouched");
-  const double d_place = hystereticUpdate<3>(m, committed.data(), e1, st_place, committed.data());
+  const double d_place = hystereticUpdate<3>(m, committed.data(), e1, st_place, committed.data(), 1);
   bool same = d_eval == d_trial && d_trial == d_place && committed == trial;
   for (int k = 0; k < 6; ++k) same = same && st_eval[k] == st_trial[k] && st_trial[k] == st_place[k];
   unit::check(same, "evaluate-only, trial and in-place updates agree bit for bit");
   unit::near(maxShearStrain<3>(m, committed.data()), equivalentShearStrain<3>(e1), 1e-15, 0, "the state keeps the largest equivalent shear strain");
   const double e0[6] = {0, 0, 0, 0, 0, 0};
-  hystereticUpdate<3>(m, committed.data(), e0, st_place, committed.data());
+  hystereticUpdate<3>(m, committed.data(), e0, st_place, committed.data(), 2);
   unit::near(maxShearStrain<3>(m, committed.data()), equivalentShearStrain<3>(e1), 1e-15, 0, "... and keeps it after unloading");
   const double simple[6] = {0, 0, 0, 1.5e-3, 0, 0};
   unit::near(equivalentShearStrain<3>(simple), 3e-3, 1e-15, 0, "equivalent shear strain of simple shear gamma = gamma");
@@ -409,7 +409,7 @@ void callingConventions() {
   double big[6];
   std::vector<double> fresh(committed.size(), 0.0);
   const double        far[6] = {0, 0, 0, 0.25, 0, 0};
-  hystereticUpdate<3>(m, fresh.data(), far, big, fresh.data());
+  hystereticUpdate<3>(m, fresh.data(), far, big, fresh.data(), 1);
   unit::near(mobilisedStrengthRatio<3>(m, big), 1.0, 1e-12, 0, "mobilised strength ratio 1 once every element yields");
   unit::near(m.secantModulusRatio(1e-3), backboneStress(mkzBackbone(5e-4), kGmax, 1e-3) / (kGmax * 1e-3), 0.02, 0, "secant G/Gmax of the model within the N-surface error");
 }
@@ -470,11 +470,12 @@ void tailIsTheModel() {
       strain[2] = 0.1 * a * std::sin(turn), strain[3] = 0.5 * a, strain[4] = 0.2 * a * std::cos(1.3 * turn), strain[5] = -0.15 * a;
     }
     const double head = state[L::kHead];
-    hystereticUpdate<Dim>(m, state.data(), strain, eval, nullptr);
-    hystereticUpdate<Dim>(m, state.data(), strain, stress, state.data());
-    // The update counter runs while the tail holds; a sweep of every element restarts it.
-    held += state[L::kUpdates] > 0;
-    visits += state[L::kUpdates] > 0 ? head : m.surfaces();
+    hystereticUpdate<Dim>(m, state.data(), strain, eval, nullptr, 0);
+    hystereticUpdate<Dim>(m, state.data(), strain, stress, state.data(), k);
+    // A sweep of every element sets the tail at this update.
+    const bool holds = state[L::kSince] != k;
+    held += holds;
+    visits += holds ? head : m.surfaces();
     for (int c = 0; c < L::kStress; ++c) same_bits = same_bits && eval[c] == stress[c];
     // The oracle's deviator: the kernel's stress less its mean part, in the state's components.
     const double tr = Dim == 2 ? strain[0] + strain[1] : strain[0] + strain[1] + strain[2];
@@ -515,6 +516,68 @@ void tailIsTheModel() {
   std::snprintf(what, sizeof what, "%dD the tail held on %d of %d updates; elements visited per update %.1f of %d", Dim, held, steps, visits / steps, m.surfaces());
   unit::check(held > steps / 2, what);
   unit::check(same_bits, "evaluate-only gives the in-place update's stress bit for bit, in the tail too");
+}
+
+// The bulk force's step (medium/hysteresis.cpp): the state settled to the accepted strain and
+// the stress at the next one evaluated, fused into one pass, must be the two updates it
+// replaces bit for bit (state, stress, dissipation). A random walk of the strain (steps from
+// 1e-7 to 1e-3, log-uniform, in turning directions, within 3e-3) takes each branch of the
+// fused pass often: the settle leaving the tail (a sweep and a new tail), the settle in the
+// tail with the evaluation in it, and with the evaluation outside it.
+template <int Dim>
+void settleEvaluateIsTwoUpdates() {
+  using L = HystereticLayout<Dim>;
+  // Knots up to 1e-3 only, so that the walk's jumps reach past every tail; N = 22, not a
+  // multiple of four, for the elements past the groups of four.
+  HystereticSurfaces surfaces;
+  surfaces.count     = 22;
+  surfaces.last_knot = 1e-3;
+  const HystereticSoilModel m(kGmax, kBulk, darendeliBackbone(DarendeliSoil{}), surfaces);
+  const int                 size = hystereticStateSize<Dim>(m);
+  std::vector<double>       fused(size, 0.0), apart(size, 0.0);
+  double                    settled[L::kStrain] = {}, strain[L::kStrain] = {};
+  unsigned long long        seed = 12345;
+  auto uniform = [&seed] { // [0, 1), a 64-bit LCG (Knuth's MMIX constants)
+    seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(seed >> 11) / 9007199254740992.0;
+  };
+  // |e - e_ref|^2 of a strain against the header's reference (e_zz = -(e_xx + e_yy), the
+  // shears counted twice): which branch the step takes.
+  auto drift2 = [&](const double *eps) {
+    const double tr = Dim == 2 ? eps[0] + eps[1] : eps[0] + eps[1] + eps[2];
+    double       d[L::kDeviator] = {eps[0] - tr / 3, eps[1] - tr / 3}, sum = 0;
+    for (int c = 2; c < L::kDeviator; ++c) d[c] = eps[c + L::kStrain - L::kDeviator];
+    for (int c = 0; c < L::kDeviator; ++c) {
+      d[c] -= apart[L::kReference + c];
+      sum += (c < 2 ? 1.0 : 2.0) * d[c] * d[c];
+    }
+    return sum + (d[0] + d[1]) * (d[0] + d[1]);
+  };
+  bool same = true;
+  int  leaves = 0, both_in = 0, evaluation_out = 0;
+  for (int k = 1; k <= 20000; ++k) {
+    // A jump to a strain of amplitude 1e-6 to 3e-3 (log-uniform) on one update in four, else a
+    // creep of 1e-9.
+    const bool   jump = uniform() < 0.25;
+    const double amp = 1e-6 * std::pow(3e3, uniform());
+    for (int c = 0; c < L::kStrain; ++c) strain[c] = jump ? amp * (2 * uniform() - 1) : settled[c] + 1e-9 * (2 * uniform() - 1);
+    const double d1 = drift2(settled), d2 = drift2(strain), slack2 = apart[L::kSlack] * apart[L::kSlack];
+    leaves += d1 > slack2;
+    both_in += d1 <= slack2 && d2 <= slack2;
+    evaluation_out += d1 <= slack2 && d2 > slack2;
+    double       s_fused[L::kStress], s_apart[L::kStress];
+    const double w_fused = hystereticSettleEvaluate<Dim>(m, fused.data(), fused.data() + L::kPlastic, settled, k, strain, s_fused);
+    const double w_apart = hystereticUpdate<Dim>(m, apart.data(), settled, nullptr, apart.data(), k);
+    hystereticUpdate<Dim>(m, apart.data(), strain, s_apart, nullptr, 0);
+    same = same && w_fused == w_apart && fused == apart;
+    for (int c = 0; c < L::kStress; ++c) same = same && s_fused[c] == s_apart[c];
+    std::copy(strain, strain + L::kStrain, settled);
+  }
+  char what[200];
+  std::snprintf(what, sizeof what, "%dD settle + evaluate in one pass = the two updates bit for bit (20000 steps: the settle leaves the tail %d, both in it %d, evaluation out %d)",
+                Dim, leaves, both_in, evaluation_out);
+  unit::check(same, what);
+  unit::check(leaves > 1000 && both_in > 1000 && evaluation_out > 1000, "each branch of the fused pass taken over 1000 times");
 }
 
 // The element set: moduli >= 0 summing to Gmax, yield strains ascending from the elastic limit,
@@ -588,6 +651,8 @@ int main() {
   callingConventions();
   tailIsTheModel<2>();
   tailIsTheModel<3>();
+  settleEvaluateIsTwoUpdates<2>();
+  settleEvaluateIsTwoUpdates<3>();
   elementSet();
   nonConcaveBackbones();
   return unit::failures();

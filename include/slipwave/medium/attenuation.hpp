@@ -71,7 +71,7 @@ PetscErrorCode AttenuationDestroy(Attenuation **att);
 // (hysteresis not null; medium/hysteresis.hpp) the drive is the force the soil's stress
 // gives, K_U u - f_hysteretic (the global relaxation force of the same u): the mechanisms
 // act on the stress the soil carries.
-PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator &bulk, Vec u_local, Vec f_internal, const struct Hysteresis *hysteresis, Vec f_hysteretic,
+PetscErrorCode AttenuationForce(Attenuation *att, DM dm, const fem::BulkOperator &bulk, Vec u_local, Vec f_internal, struct Hysteresis *hysteresis, Vec f_hysteretic,
                                 PetscReal t, Vec f);
 // Lines for the run report: per damped region the fitted Q over the band, the reference
 // frequency, the speeds at the band ends and the stable-step cost.

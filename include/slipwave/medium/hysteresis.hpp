@@ -1,7 +1,7 @@
 // The bulk force of hysteretic regions (-material_<r>_model hysteretic): the soil's stress is
 // the parallel Iwan model of physics/hysteretic_soil.hpp at every quadrature point of the
-// region's elements (degree 1: the Gauss points of its cells), while the bulk operator keeps applying the linear small-strain stiffness K (Gmax)
-// everywhere. The difference is a correction force
+// region's elements (degree 1: the Gauss points of its cells), while the bulk operator keeps
+// applying the linear small-strain stiffness K (Gmax) everywhere. The difference is a correction force
 //   f_relax = sum_q B_q^T (C:eps_q - sigma_q) w_q |det J_q|,     f_internal = K u - f_relax,
 // with C the region's element moduli, eps_q = B_q u the strain and sigma_q the Iwan stress at
 // the point. K is integrated by the same Gauss rule (fem/element_kernels.hpp), so K u -
@@ -14,12 +14,17 @@
 // without writing them, so the RHS asked twice at one time gives the same force, and keeps the
 // strains; HysteresisCommit, once the step is accepted, marks those strains as the states' next
 // (pending), and the next force first brings each point's state to its strain in place, in the
-// same pass: each state is read once per step and written only where an element yields, not
-// copied into a trial state (the step is bound by this traffic: docs/performance.md). Readers
-// of the committed state in between (ledger, output, stations, checkpoint) bring a copy of a
-// point's state to its strain, the same update, so they see the same bits. Off during the
-// geostatic stage (the soil starts virgin with the dynamic stage, whose displacement starts
-// from zero).
+// same pass over the point's elements (physics::hystereticSettleEvaluate): each state is read
+// once per step and written only where an element yields, not copied into a trial state.
+// Readers of the committed state in between (ledger, output, stations, checkpoint) bring a
+// copy of a point's state to its strain, the same update, so they see the same bits. The
+// kernel's count of updates is the number of these settles (Hysteresis::settles). Off during
+// the geostatic stage (the soil starts virgin with the dynamic stage, whose displacement
+// starts from zero).
+//
+// An element none of whose points has had a nonzero strain, with its nodes at rest (u exactly
+// 0), is skipped: its states are virgin at a zero strain, where an update changes nothing and
+// the relaxation stress is zero. Ahead of a wave that is most of a mesh (docs/performance.md).
 //
 // Degree p > 1: the points are the elements' GLL nodes with the GLL weights, the quadrature
 // of the spectral K (collocated), so K u - f_relax is again exactly the Iwan stress's force.
@@ -60,6 +65,12 @@ struct HystereticRegion {
   // together and streamed) and the plastic strains (read only where an element can yield).
   std::vector<double>                                 header, plastic;
   std::vector<double>                                 strain;             // per point: the strain of the last force
+  // Per point, once HysteresisAddRegionForce has asked for the region: the relaxation stress
+  // C:eps - sigma of the last force (kStress values), so that the call scatters it again.
+  std::vector<double>                                 relaxation;
+  // Per element: whether any of its points has had a nonzero strain (else its states are
+  // virgin at a zero strain, and a pass over the points skips it while its nodes rest).
+  std::vector<unsigned char>                          stirred;
 };
 
 struct Hysteresis {
@@ -70,6 +81,7 @@ struct Hysteresis {
   std::vector<HystereticRegion> regions;
   bool                          has_trial = false; // a force since the last commit
   bool                          pending   = false; // committed: the states wait for the strains of the last force
+  double                        settles   = 0;     // the states brought to their pending strains so far: the kernel's update count
 };
 
 // The Iwan model of a region on its element moduli (fe.lame: the unrelaxed ones in a damped
@@ -85,8 +97,11 @@ void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_l
 // f_local += scale f_relax of region `region` alone (a no-op for a region that is not
 // hysteretic), from the committed states (evaluated, not updated): at the u of the last
 // HysteresisForce, its contribution of that region. For the constant-Q drive of a damped
-// hysteretic region that does not cover the mesh (medium/attenuation.hpp).
-void HysteresisAddRegionForce(const Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local);
+// hysteretic region that does not cover the mesh (medium/attenuation.hpp), every step: the
+// first call evaluates the stresses and marks the region, whose relaxation stresses each
+// later HysteresisForce then keeps (kStress doubles per point), so that a call after a force
+// (before the commit) scatters them: the same bits, without a second evaluation.
+void HysteresisAddRegionForce(Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local);
 // The strains of the last HysteresisForce become the committed state (no-op without one).
 void HysteresisCommit(Hysteresis *h);
 // Committed state for checkpoints: this rank's points' states, region by region. The size is fixed by the mesh and the models (a checkpoint of another

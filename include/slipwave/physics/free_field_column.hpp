@@ -137,6 +137,7 @@ private:
   // Advances the Iwan states of the hysteretic elements to u_, keeps their stresses and adds
   // the force of those stresses.
   void soilForce(std::vector<double> &f);
+  void swapTailAges(std::vector<double> &states, double now) const;
   void nodalDamping(double s, double v_in);                                        // from a_star_ and v_
 
   int                          dim_ = 2;
@@ -166,6 +167,7 @@ private:
   std::vector<std::shared_ptr<const HystereticSoilModel>> soil_;
   std::vector<long>            soil_offset_;
   std::vector<double>          soil_state_, soil_stress_, lateral_zeta_, lateral_old_;
+  double                       soil_updates_ = 0; // Iwan updates so far (the kernel's count)
   int    elementCount() const { return segmentCount() / p_; }
   double elementLength(int e) const { return z_[(e + 1) * p_] - z_[e * p_]; }
   // 2 sum_b D_qb x_b at point q of element e, component c: the derivative times the length.

@@ -40,10 +40,10 @@ namespace slipwave::physics {
 //           Dim 2 (plane strain, eps_zz = eps_xz = eps_yz = 0): xx, yy, xy.
 //   stress, Dim 3: xx, yy, zz, xy, yz, xz; Dim 2: xx, yy, xy, zz (the in-plane ones first, in
 //           the strain's order; sigma_zz != 0 in plane strain).
-//   state:  kHead (the first element of the tail, an integer), kSlack, kUpdates (updates since
-//           the last full sweep), the reference deviatoric strain (kReference, kDeviator
-//           values), the tail's plastic stress sum_{j >= head} 2 G_j p_j (kTailStress,
-//           kDeviator) and energy sum_{j >= head} G_j |p_j|^2 (kTailEnergy), the largest
+//   state:  kHead (the first element of the tail, an integer), kSlack, kSince (the update
+//           that set the tail, in the caller's count of updates), the reference deviatoric
+//           strain (kReference, kDeviator values), the tail's plastic stress
+//           sum_{j >= head} 2 G_j p_j (kTailStress, kDeviator) and energy sum_{j >= head} G_j |p_j|^2 (kTailEnergy), the largest
 //           equivalent shear strain reached (kMaxStrain, output), then the plastic strains p_i
 //           from kPlastic on, component-major (c * N + i), all deviators in the components
 //           xx, yy, xy [, yz, xz] (zz = -(xx + yy)).
@@ -53,7 +53,7 @@ struct HystereticLayout {
   static constexpr int kStrain = Dim == 2 ? 3 : 6;
   static constexpr int kStress = Dim == 2 ? 4 : 6;
   static constexpr int kDeviator = Dim == 2 ? 3 : 5;
-  static constexpr int kHead = 0, kSlack = 1, kUpdates = 2, kReference = 3;
+  static constexpr int kHead = 0, kSlack = 1, kSince = 2, kReference = 3;
   static constexpr int kTailStress = kReference + kDeviator, kTailEnergy = kTailStress + kDeviator, kMaxStrain = kTailEnergy + 1, kPlastic = kMaxStrain + 1;
 };
 
@@ -119,7 +119,12 @@ double plasticStrain(const HystereticSoilModel &model, const double *state, int 
 
 // The update. From the state state_in and the total strain, writes the stress (unless stress
 // is null) and, unless state_out is null, the new state (state_out == state_in is allowed; the
-// stress is the same bits whether or not a state is written). Returns the energy the
+// stress is the same bits whether or not a state is written). `update` numbers the updates
+// that write a state (any count that grows by one per such update, from 1 on a virgin state:
+// the steps; unused without state_out, pass 0): the tail's chooser measures the strain's drift per
+// update by it, and a point whose tail holds is neither read nor written beyond its header's
+// tail (no counter in the state). A caller may skip the updates of a point whose state is
+// virgin (zero but kSince) at a zero strain: they change nothing. Returns the energy the
 // elements dissipate per unit volume in this update, sum_i R_i |dp_i| with R_i = 2 G_i r_i the
 // element's yield stress (>= 0; exactly the plastic work in 1D, where the return is exact for
 // any monotone increment). The strain path between the two states is taken as straight (one
@@ -130,12 +135,28 @@ double plasticStrain(const HystereticSoilModel &model, const double *state, int 
 // both null or both given (either may be its input).
 template <int Dim>
 double hystereticUpdate(const HystereticSoilModel &model, const double *state_in, const double *plastic_in, const double *strain, double *stress, double *state_out,
-                        double *plastic_out);
+                        double *plastic_out, double update);
 template <int Dim>
-double hystereticUpdate(const HystereticSoilModel &model, const double *state_in, const double *strain, double *stress, double *state_out) {
+double hystereticUpdate(const HystereticSoilModel &model, const double *state_in, const double *strain, double *stress, double *state_out, double update) {
   constexpr int kPlastic = HystereticLayout<Dim>::kPlastic;
-  return hystereticUpdate<Dim>(model, state_in, state_in + kPlastic, strain, stress, state_out, state_out ? state_out + kPlastic : nullptr);
+  return hystereticUpdate<Dim>(model, state_in, state_in + kPlastic, strain, stress, state_out, state_out ? state_out + kPlastic : nullptr, update);
 }
+
+// A point's step in one pass over its elements: its state (header, plastic), in place, brought
+// to the accepted strain `settled` (update number `update`), then the stress at `strain`
+// evaluated from that (the state not written by it). The same bits as
+//   hystereticUpdate(model, header, plastic, settled, nullptr, header, plastic, update);
+//   hystereticUpdate(model, header, plastic, strain, stress, nullptr, nullptr);
+// with each element that both visit read once; returns the first's dissipation.
+template <int Dim>
+double hystereticSettleEvaluate(const HystereticSoilModel &model, double *header, double *plastic, const double *settled, double update, const double *strain,
+                                double *stress);
+
+// A state's kSince to the tail's age at update `now` (now - kSince: the updates since the tail
+// was set), and the age back to kSince (the same map). Checkpoints keep the age, so that a
+// restarted run may start its count of updates anew.
+inline void swapTailAge(double *state, double now) { state[HystereticLayout<2>::kSince] = now - state[HystereticLayout<2>::kSince]; }
+static_assert(HystereticLayout<2>::kSince == HystereticLayout<3>::kSince, "kSince is the same slot in 2D and 3D");
 
 // Energy stored per unit volume at (state, strain): K tr(eps)^2 / 2 + sum_i G_i |e - p_i|^2,
 // for a state that the update returned for this strain (then |e - p_i| <= r_i); the tail's
