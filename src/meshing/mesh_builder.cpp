@@ -2,6 +2,7 @@
 
 #include <petscsf.h>
 
+#include "slipwave/core/log_events.hpp"
 #include "slipwave/core/option_rules.hpp"
 #include "slipwave/mesh/cell_quality_check.hpp"
 #include "slipwave/mesh/partition_metis.hpp"
@@ -494,6 +495,7 @@ PetscErrorCode refineOnRank0(DM *serial, PetscInt levels, const MeshDescription 
 PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   MeshOptions o;
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(core::event_mesh, 0, 0, 0, 0));
   PetscCall(MeshOptionsRead(comm, &desc->dim, &o));
   desc->regions    = o.regions;
   desc->interfaces = o.interfaces;
@@ -571,6 +573,7 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   PetscCall(PetscTime(&end));
   desc->build_seconds = end - start;
   PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));
+  PetscCall(PetscLogEventEnd(core::event_mesh, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
