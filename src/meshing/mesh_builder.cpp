@@ -343,8 +343,8 @@ PetscErrorCode createBoxForBuild(MPI_Comm comm, MeshOptions *o, DM *serial, Mesh
   *lattice = o->interfaces.empty() && o->build != kMeshBuildSerial && (*levels > 0 || o->degree > 1);
   if (o->interfaces.empty()) {
     PetscCheck(*lattice || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
-               "-mesh_build = distributed, but the box cannot be built from a coarser one (every -mesh_box_faces entry even, region box bounds on the coarse grid, at "
-               "least one coarse cell per rank); allowed: auto or serial, or -element_degree > 1");
+               "-mesh_build = distributed, but the box has no coarser box to partition it by (every -mesh_box_faces entry even, region box bounds on the coarse grid, at "
+               "least one coarse cell per rank); allowed: auto or serial, or -element_degree above 1");
     if (!*lattice) *levels = 0;
     PetscCall(createLabelledBox(comm, *levels, *lattice, o, serial, desc));
     PetscFunctionReturn(0);
