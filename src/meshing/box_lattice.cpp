@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 namespace slipwave::meshing {
 namespace {
@@ -288,6 +289,7 @@ PetscErrorCode BoxLatticeBuild(DM coarse, PetscPartitioner part, PetscInt levels
   std::vector<int64_t>  where(ncell);         // per point: its window index
   std::vector<int64_t>  element(ncell);       // per cell: its element's lattice position (x fastest), over the box's elements
   std::vector<PetscInt> position(ncell, 0);   // per cell: its place in its element (spectral_position)
+  std::vector<PetscInt> region_of(ncell, 0);  // per cell: its region
   std::vector<std::vector<PetscInt>> region_cells, position_cells(p > 1 ? nsub : 0);
   PetscInt              cell = 0;
   for (size_t k = 0; k < ncoarse_local; ++k) {
@@ -311,6 +313,7 @@ PetscErrorCode BoxLatticeBuild(DM coarse, PetscPartitioner part, PetscInt levels
         where[cell]     = i;
         element[cell]   = slot;
         position[cell]  = p > 1 ? frame.position(p, sub) : 0;
+        region_of[cell] = mine.region[k];
         region_cells[mine.region[k]].push_back(cell);
         if (p > 1) position_cells[position[cell]].push_back(cell);
         // Its closure: the doubled positions around it.
@@ -434,7 +437,42 @@ PetscErrorCode BoxLatticeBuild(DM coarse, PetscPartitioner part, PetscInt levels
   }
 
   PetscCall(setLabel(*dm, mesh::kRegionLabel, region_cells));
-  if (p > 1) PetscCall(setLabel(*dm, mesh::kSpectralPositionLabel, position_cells));
+  if (p > 1) {
+    PetscCall(setLabel(*dm, mesh::kSpectralPositionLabel, position_cells));
+    // The elements as SpectralLayoutBuild would find them from the topology: element k is cells
+    // k p^dim .. (k + 1) p^dim - 1, its GLL nodes lexicographic in the element frame.
+    mesh::SpectralLayout layout;
+    const PetscInt       nelem = ncell / nsub, n1 = p + 1, nnode = mesh::SpectralCount(n1, dim);
+    layout.degree = p;
+    layout.dim    = dim;
+    layout.nelem  = nelem;
+    layout.element_cells.resize((size_t)ncell);
+    layout.element_nodes.resize((size_t)nelem * nnode);
+    layout.element_region.resize(nelem);
+    layout.element_id.resize(nelem);
+    layout.cell_element.resize(ncell);
+    layout.cell_position = position;
+    for (PetscInt e = 0; e < nelem; ++e) {
+      const PetscInt first = e * nsub;
+      for (PetscInt q = 0; q < nsub; ++q) {
+        layout.element_cells[(size_t)first + position[first + q]] = first + q;
+        layout.cell_element[first + q]                             = e;
+        if (position[first + q] == 0) layout.element_id[e] = first + q;
+      }
+      // The element's lowest lattice vertex: the lower corner of its sub-cell at q = 0.
+      int64_t X0[3];
+      w.position(where[first], X0);
+      for (PetscInt n = 0; n < nnode; ++n) {
+        const PetscInt j[3] = {n % n1, (n / n1) % n1, dim == 3 ? n / (n1 * n1) : 0}; // lattice offsets
+        int64_t        X[3] = {X0[0] - 1 + 2 * j[0], X0[1] - 1 + 2 * j[1], dim == 3 ? X0[2] - 1 + 2 * j[2] : 0};
+        PetscInt       node = 0;
+        for (PetscInt a = 0, stride = 1; a < dim; stride *= n1, ++a) node += stride * (frame.sign[a] > 0 ? j[frame.axis[a]] : p - j[frame.axis[a]]);
+        layout.element_nodes[(size_t)e * nnode + node] = w.point[w.index(X)];
+      }
+      layout.element_region[e] = region_of[first];
+    }
+    PetscCall(mesh::SpectralLayoutAttach(*dm, std::move(layout)));
+  }
   for (PetscInt k = 0; k < 2 * dim; ++k) PetscCall(setLabel(*dm, sides[k].c_str(), {{}, side_faces[k]}));
 
   // serial_cell: the elements in lattice order less the void ones. Element (x, y, z) is

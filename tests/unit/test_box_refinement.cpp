@@ -73,6 +73,7 @@ struct Signature {
   std::vector<Rows> faces; // per label of `face_labels`
   double            coordinates_gap = 0; // |global coordinates scattered to local - local coordinates|
   PetscInt          elements = 0;        // SpectralLayoutOf's elements over all ranks (p > 1)
+  PetscInt          layout_found = 1;    // SpectralLayoutOf's table is SpectralLayoutBuild's, on every rank
 };
 
 PetscErrorCode signatureOf(DM dm, const slipwave::meshing::MeshDescription &desc, const std::vector<std::string> &face_labels, Signature *sig) {
@@ -99,6 +100,16 @@ PetscErrorCode signatureOf(DM dm, const slipwave::meshing::MeshDescription &desc
   PetscCall(slipwave::mesh::SpectralLayoutOf(dm, &layout));
   sig->elements = layout ? layout->nelem : 0;
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &sig->elements, 1, MPIU_INT, MPI_SUM, comm));
+  // A builder may hand its own table to the mesh (box_lattice.hpp): it must be the one the
+  // topology gives.
+  if (layout) {
+    slipwave::mesh::SpectralLayout found;
+    PetscCall(slipwave::mesh::SpectralLayoutBuild(dm, layout->degree, &found));
+    sig->layout_found = found.nelem == layout->nelem && found.element_nodes == layout->element_nodes && found.element_cells == layout->element_cells &&
+                        found.element_region == layout->element_region && found.element_id == layout->element_id && found.cell_element == layout->cell_element &&
+                        found.cell_position == layout->cell_position;
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &sig->layout_found, 1, MPIU_INT, MPI_MIN, comm));
   Vec global, local, scattered;
   DM  cdm;
   PetscCall(DMGetCoordinateDM(dm, &cdm));
@@ -204,6 +215,7 @@ PetscErrorCode compareBuilds(const std::string &tag, const char *options) {
     unit::check(faces_same, tag + ": same boundary and interface faces (" + std::to_string(sig[0].faces.size()) + " labels), and no other points under them");
     unit::check(sig[1].coordinates_gap == 0, tag + ": global and local coordinates agree (gap " + std::to_string(sig[1].coordinates_gap) + ")");
     unit::check(sig[0].elements == sig[1].elements, tag + ": the layout groups " + std::to_string(sig[1].elements) + " elements, as serially (" + std::to_string(sig[0].elements) + ")");
+    unit::check(sig[0].layout_found && sig[1].layout_found, tag + ": the layout on the mesh is the one its topology gives (SpectralLayoutBuild)");
   }
   PetscFunctionReturn(0);
 }
