@@ -19,12 +19,8 @@ FACES=${SMALL_RUN_FACES:-60,40}
 REPEATS=${SMALL_RUN_REPEATS:-7}
 WORK="$BUILD/bench/work/small_run_time"
 mkdir -p "$WORK"
-eval "$($PY bench/sem_speed_error.py geometry)"
-LAMB="-mesh_box_upper $L,$H -regions soil -material_soil_rho 2000 -material_soil_vp 692.820323 -material_soil_vs 400
- -bc_left_type fixed -bc_left_components x -bc_right_type absorbing -bc_bottom_type absorbing
- -point_forces src -point_force_src_location $SRC -point_force_src_force 0,-5e4 -point_force_src_stf ricker -point_force_src_f0 10 -point_force_src_t0 0.12
- -ts_max_time $T_END -output_fields 0 -progress_interval 1000 -station_coordinates $STATIONS -station_names $NAMES
- -element_degree $P -time_step_safety 0.45 -mesh_box_faces $FACES -output_dir $WORK/run -output_overwrite"
+eval "$($PY bench/sem_speed_error.py geometry)" # LAMB: sem_speed_error.sh's run but mesh and degree
+LAMB="$LAMB -element_degree $P -time_step_safety 0.45 -mesh_box_faces $FACES -output_dir $WORK/run -output_overwrite"
 $PY - "$SW" "$WORK" "$REPEATS" "${BENCH_CSV:-}" "p${P}_${FACES/,/x}" $LAMB <<'PY'
 import re, subprocess, sys, time
 sw, work, repeats, csv, case, args = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4], sys.argv[5], sys.argv[6:]
