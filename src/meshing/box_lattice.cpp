@@ -2,6 +2,7 @@
 
 #include <petscsf.h>
 
+#include "slipwave/mesh/cell_vertices.hpp"
 #include "slipwave/mesh/labels.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
 #include "slipwave/mesh/spectral_layout.hpp"
@@ -31,8 +32,9 @@ struct Cone {
 };
 
 // Reads the cones of every type off a one-cell box [0, 2]^dim (doubled coordinates are its
-// own), checking that the entities of one type agree, and the element frame of its cell.
-PetscErrorCode readOneCellBox(PetscInt dim, std::array<Cone, 8> *cones, ElementFrame *frame) {
+// own), checking that the entities of one type agree, the element frame of its cell and its
+// vertices in closure order (as offsets from its centre).
+PetscErrorCode readOneCellBox(PetscInt dim, std::array<Cone, 8> *cones, ElementFrame *frame, std::vector<std::array<PetscInt, 3>> *closure_vertices) {
   DM                      ref;
   PetscInt                faces[3] = {1, 1, 1}, p_start, p_end, v_start, v_end;
   PetscReal               lower[3] = {0, 0, 0}, upper[3] = {2, 2, 2};
@@ -70,6 +72,15 @@ PetscErrorCode readOneCellBox(PetscInt dim, std::array<Cone, 8> *cones, ElementF
   PetscCall(coords.Open(ref));
   PetscCall(BoxCellFrame(ref, coords, 0, frame));
   PetscCall(coords.Close());
+  PetscInt *closure = nullptr, nclosure;
+  PetscCall(DMPlexGetTransitiveClosure(ref, 0, PETSC_TRUE, &nclosure, &closure));
+  for (PetscInt i = 0; i < nclosure; ++i)
+    if (closure[2 * i] >= v_start && closure[2 * i] < v_end) {
+      std::array<PetscInt, 3> offset{};
+      for (PetscInt d = 0; d < dim; ++d) offset[d] = at[closure[2 * i] - p_start][d] - 1;
+      closure_vertices->push_back(offset);
+    }
+  PetscCall(DMPlexRestoreTransitiveClosure(ref, 0, PETSC_TRUE, &nclosure, &closure));
   PetscCall(DMDestroy(&ref));
   PetscFunctionReturn(0);
 }
@@ -261,6 +272,7 @@ PetscErrorCode BoxLatticeBuild(DM coarse, PetscPartitioner part, PetscInt levels
   std::array<Cone, 8> cones;
   ElementFrame        frame;
   CoarseCells         mine;
+  std::vector<std::array<PetscInt, 3>> corners; // a cell's vertices in closure order, from its centre
   PetscFunctionBeginUser;
   PetscCall(DMGetDimension(coarse, &dim));
   const PetscInt p = degree, per = (PetscInt)1 << levels, s = per * p; // elements, sub-cells per coarse cell and axis
@@ -268,7 +280,7 @@ PetscErrorCode BoxLatticeBuild(DM coarse, PetscPartitioner part, PetscInt levels
   PetscInt       ncoarse[3] = {1, 1, 1};
   int64_t        nbox[3]    = {1, 1, 1}; // doubled positions per axis
   for (PetscInt d = 0; d < dim; ++d) ncoarse[d] = box.faces[d] >> levels, nbox[d] = 2 * (int64_t)box.faces[d] * p + 1;
-  PetscCall(readOneCellBox(dim, &cones, &frame));
+  PetscCall(readOneCellBox(dim, &cones, &frame, &corners));
   PetscCall(receiveCoarseCells(coarse, part, ncoarse, dim, box, &mine));
 
   // The window over the local coarse cells' doubled positions.
@@ -436,6 +448,21 @@ PetscErrorCode BoxLatticeBuild(DM coarse, PetscPartitioner part, PetscInt levels
     PetscCall(VecDestroy(&coordinates));
   }
 
+  // Every cell's vertices in closure order (cell_vertices.hpp): those of the one-cell box's cell.
+  {
+    mesh::CellVertices table;
+    table.per_cell = (PetscInt)corners.size();
+    table.vertex.resize((size_t)ncell * table.per_cell);
+    for (PetscInt c = 0; c < ncell; ++c) {
+      int64_t X[3];
+      w.position(where[c], X);
+      for (PetscInt k = 0; k < table.per_cell; ++k) {
+        const int64_t Y[3] = {X[0] + corners[k][0], X[1] + corners[k][1], X[2] + corners[k][2]};
+        table.vertex[(size_t)c * table.per_cell + k] = w.point[w.index(Y)];
+      }
+    }
+    PetscCall(mesh::CellVerticesAttach(*dm, std::move(table)));
+  }
   PetscCall(setLabel(*dm, mesh::kRegionLabel, region_cells));
   if (p > 1) {
     PetscCall(setLabel(*dm, mesh::kSpectralPositionLabel, position_cells));

@@ -16,7 +16,10 @@
 //     and the distributed build's vertices sit at the GLL nodes (its global coordinates made
 //     from the local ones: equal), and SpectralLayoutOf groups the sub-cells back on every rank.
 //     Without interfaces (box_lattice.hpp: every rank builds its part): 2D and 3D boxes of two
-//     regions beside a void at degree 1, and at p = 3, 5, 6, 7 (2D) and 3 (3D).
+//     regions beside a void at degree 1, and at p = 3, 5, 6, 7 (2D) and 3 (3D). The element
+//     table (SpectralLayoutOf) and the cells' vertices (CellVerticesOf) a builder hands to the
+//     mesh must be those its topology gives.
+#include "slipwave/mesh/cell_vertices.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
 #include "slipwave/mesh/spectral_layout.hpp"
 #include "slipwave/meshing/box_refinement.hpp"
@@ -74,6 +77,7 @@ struct Signature {
   double            coordinates_gap = 0; // |global coordinates scattered to local - local coordinates|
   PetscInt          elements = 0;        // SpectralLayoutOf's elements over all ranks (p > 1)
   PetscInt          layout_found = 1;    // SpectralLayoutOf's table is SpectralLayoutBuild's, on every rank
+  PetscInt          vertices_found = 1;  // CellVerticesOf's table is the closures', on every rank
 };
 
 PetscErrorCode signatureOf(DM dm, const slipwave::meshing::MeshDescription &desc, const std::vector<std::string> &face_labels, Signature *sig) {
@@ -110,6 +114,17 @@ PetscErrorCode signatureOf(DM dm, const slipwave::meshing::MeshDescription &desc
                         found.cell_position == layout->cell_position;
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &sig->layout_found, 1, MPIU_INT, MPI_MIN, comm));
+  const slipwave::mesh::CellVertices *table;
+  PetscCall(slipwave::mesh::CellVerticesOf(dm, &table));
+  for (PetscInt c = c_start; c < c_end; ++c) {
+    PetscInt *closure = nullptr, nclosure, n = 0;
+    PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &nclosure, &closure));
+    for (PetscInt i = 0; i < nclosure; ++i)
+      if (closure[2 * i] >= v_start && closure[2 * i] < v_end) sig->vertices_found = sig->vertices_found && n < table->per_cell && table->of(c - c_start)[n++] == closure[2 * i];
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &nclosure, &closure));
+    sig->vertices_found = sig->vertices_found && n == table->per_cell;
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &sig->vertices_found, 1, MPIU_INT, MPI_MIN, comm));
   Vec global, local, scattered;
   DM  cdm;
   PetscCall(DMGetCoordinateDM(dm, &cdm));
@@ -216,6 +231,7 @@ PetscErrorCode compareBuilds(const std::string &tag, const char *options) {
     unit::check(sig[1].coordinates_gap == 0, tag + ": global and local coordinates agree (gap " + std::to_string(sig[1].coordinates_gap) + ")");
     unit::check(sig[0].elements == sig[1].elements, tag + ": the layout groups " + std::to_string(sig[1].elements) + " elements, as serially (" + std::to_string(sig[0].elements) + ")");
     unit::check(sig[0].layout_found && sig[1].layout_found, tag + ": the layout on the mesh is the one its topology gives (SpectralLayoutBuild)");
+    unit::check(sig[0].vertices_found && sig[1].vertices_found, tag + ": the cells' vertices on the mesh are those of their closures (CellVerticesOf)");
   }
   PetscFunctionReturn(0);
 }
