@@ -337,44 +337,52 @@ PetscErrorCode BoxLatticeBuild(DM coarse, PetscPartitioner part, PetscInt levels
       }
   }
 
-  // The other points by depth stratum (vertices, then faces, then edges), in window order.
+  // The other points by depth stratum (vertices, then faces, then edges), in window order; a
+  // position's type is the mask of its odd coordinates.
   PetscInt count[4] = {0, 0, 0, 0}, start[4] = {0, 0, 0, 0};
-  auto     typeAt = [&](int64_t i) {
-    int64_t  X[3];
-    PetscInt type = 0;
-    w.position(i, X);
-    for (PetscInt d = 0; d < dim; ++d) type |= (PetscInt)(X[d] & 1) << d;
-    return type;
+  auto     forEachPosition = [&](auto &&visit) {
+    int64_t i = 0;
+    for (int64_t z = 0; z < w.n[2]; ++z)
+      for (int64_t y = 0; y < w.n[1]; ++y)
+        for (int64_t x = 0; x < w.n[0]; ++x, ++i) {
+          const int64_t X[3] = {w.lo[0] + x, w.lo[1] + y, w.lo[2] + z};
+          visit(i, X, (PetscInt)((X[0] & 1) | (X[1] & 1) << 1 | (dim == 3 ? (X[2] & 1) << 2 : 0)));
+        }
   };
-  for (int64_t i = 0; i < (int64_t)w.point.size(); ++i)
-    if (w.point[i] == kMarked) ++count[typeDepth(typeAt(i))];
+  forEachPosition([&](int64_t i, const int64_t *, PetscInt type) {
+    if (w.point[i] == kMarked) ++count[typeDepth(type)];
+  });
   start[dim] = 0;
   start[0]   = ncell;
   for (PetscInt depth = dim - 1, next = ncell + count[0]; depth >= 1; next += count[depth], --depth) start[depth] = next;
   PetscInt npoints = ncell;
   for (PetscInt depth = 0; depth < dim; ++depth) npoints += count[depth];
   where.resize(npoints);
+  std::vector<unsigned char>         type_of(npoints, (unsigned char)((1 << dim) - 1)); // cells: every axis odd
   std::vector<std::vector<PetscInt>> side_faces(2 * dim);
   PetscInt                           next[4] = {start[0], start[1], start[2], start[3]};
-  for (int64_t i = 0; i < (int64_t)w.point.size(); ++i) {
-    if (w.point[i] != kMarked) continue;
-    const PetscInt type = typeAt(i), depth = typeDepth(type), q = next[depth]++;
+  forEachPosition([&](int64_t i, const int64_t *X, PetscInt type) {
+    if (w.point[i] != kMarked) return;
+    const PetscInt depth = typeDepth(type), q = next[depth]++;
     w.point[i] = q;
     where[q]   = i;
-    if (depth != dim - 1) continue;
+    type_of[q] = (unsigned char)type;
     // A face on a side of the box: its one even axis at 0 or at the far end.
-    int64_t X[3];
-    w.position(i, X);
-    for (PetscInt d = 0; d < dim; ++d)
-      if (!(type >> d & 1) && (X[d] == 0 || X[d] == nbox[d] - 1)) side_faces[2 * d + (X[d] != 0)].push_back(q);
-  }
+    if (depth == dim - 1)
+      for (PetscInt d = 0; d < dim; ++d)
+        if (!(type >> d & 1) && (X[d] == 0 || X[d] == nbox[d] - 1)) side_faces[2 * d + (X[d] != 0)].push_back(q);
+  });
 
-  // Cones and orientations, then the rest of the topology.
+  // Cones and orientations (a cone point's window index is the point's plus a shift of its
+  // type), then the rest of the topology.
+  std::array<std::array<int64_t, 6>, 8> shift{};
+  for (PetscInt type = 0; type < 8; ++type)
+    for (PetscInt k = 0; k < cones[type].size; ++k) shift[type][k] = cones[type].offset[k][0] + w.n[0] * (cones[type].offset[k][1] + w.n[1] * cones[type].offset[k][2]);
   PetscCall(DMCreate(comm, dm));
   PetscCall(DMSetType(*dm, DMPLEX));
   PetscCall(DMSetDimension(*dm, dim));
   PetscCall(DMPlexSetChart(*dm, 0, npoints));
-  for (PetscInt q = 0; q < npoints; ++q) PetscCall(DMPlexSetConeSize(*dm, q, cones[typeAt(where[q])].size));
+  for (PetscInt q = 0; q < npoints; ++q) PetscCall(DMPlexSetConeSize(*dm, q, cones[type_of[q]].size));
   PetscCall(DMSetUp(*dm));
   PetscSection cone_section;
   PetscInt    *cone_points, *cone_orientations;
@@ -382,14 +390,11 @@ PetscErrorCode BoxLatticeBuild(DM coarse, PetscPartitioner part, PetscInt levels
   PetscCall(DMPlexGetCones(*dm, &cone_points));
   PetscCall(DMPlexGetConeOrientations(*dm, &cone_orientations));
   for (PetscInt q = 0; q < npoints; ++q) {
-    const Cone &c = cones[typeAt(where[q])];
-    int64_t     X[3];
+    const Cone &c = cones[type_of[q]];
     PetscInt    off;
-    w.position(where[q], X);
     PetscCall(PetscSectionGetOffset(cone_section, q, &off));
     for (PetscInt k = 0; k < c.size; ++k) {
-      const int64_t Y[3] = {X[0] + c.offset[k][0], X[1] + c.offset[k][1], X[2] + c.offset[k][2]};
-      cone_points[off + k]       = w.point[w.index(Y)];
+      cone_points[off + k]       = w.point[where[q] + shift[type_of[q]][k]];
       cone_orientations[off + k] = c.orientation[k];
     }
   }
