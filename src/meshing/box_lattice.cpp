@@ -174,37 +174,44 @@ struct Window {
 };
 
 // The points another rank may hold too (a cell of their star is not local: at the part's
-// surface) matched across the ranks by their position on the doubled lattice of the box.
-PetscErrorCode setPointSF(DM dm, const Window &w, const int64_t *nbox, const std::vector<int64_t> &where, PetscInt ncell) {
+// surface) matched across the ranks by their position on the doubled lattice of the box. A part
+// is a union of coarse cells (s sub-cells per axis), so only a point on a coarse cell's side (an
+// even coordinate that is a multiple of 2 s) can be on its surface.
+PetscErrorCode setPointSF(DM dm, const Window &w, const int64_t *nbox, PetscInt s, PetscInt ncell, PetscInt npoints) {
   MPI_Comm              comm = PetscObjectComm((PetscObject)dm);
-  const PetscInt        npoints = (PetscInt)where.size();
   std::vector<PetscInt> keys, points;
   double                total = 1;
   PetscFunctionBeginUser;
   for (PetscInt d = 0; d < w.dim; ++d) total *= (double)nbox[d];
   PetscCheck(total < (double)PETSC_MAX_INT, comm, PETSC_ERR_SUP, "the box's lattice has %g points, more than this PETSc's integers count; build with -mesh_build serial", total);
-  for (PetscInt q = ncell; q < npoints; ++q) {
-    int64_t X[3];
-    w.position(where[q], X);
-    bool surface = false;
-    // The star's cells: along an odd axis the entity's own position, along an even one both
-    // neighbours inside the box.
-    for (PetscInt corner = 0; corner < (1 << w.dim) && !surface; ++corner) {
-      int64_t Y[3] = {X[0], X[1], X[2]};
-      bool    in_box = true, repeat = false;
-      for (PetscInt d = 0; d < w.dim; ++d) {
-        const bool high = (corner >> d) & 1;
-        if (X[d] & 1) repeat = repeat || high, Y[d] = X[d];
-        else Y[d] = X[d] + (high ? 1 : -1);
-        in_box = in_box && Y[d] >= 0 && Y[d] < nbox[d];
+  int64_t i = 0;
+  for (int64_t z = 0; z < w.n[2]; ++z)
+    for (int64_t y = 0; y < w.n[1]; ++y)
+      for (int64_t x = 0; x < w.n[0]; ++x, ++i) {
+        const PetscInt q = w.point[i];
+        const int64_t  X[3] = {w.lo[0] + x, w.lo[1] + y, w.lo[2] + z};
+        bool           side = false;
+        for (PetscInt d = 0; d < w.dim; ++d) side = side || X[d] % (2 * s) == 0;
+        if (q < ncell || !side) continue;
+        bool surface = false;
+        // The star's cells: along an odd axis the entity's own position, along an even one both
+        // neighbours inside the box.
+        for (PetscInt corner = 0; corner < (1 << w.dim) && !surface; ++corner) {
+          int64_t Y[3] = {X[0], X[1], X[2]};
+          bool    in_box = true, repeat = false;
+          for (PetscInt d = 0; d < w.dim; ++d) {
+            const bool high = (corner >> d) & 1;
+            if (X[d] & 1) repeat = repeat || high, Y[d] = X[d];
+            else Y[d] = X[d] + (high ? 1 : -1);
+            in_box = in_box && Y[d] >= 0 && Y[d] < nbox[d];
+          }
+          if (repeat || !in_box) continue;
+          surface = !w.inside(Y) || w.point[w.index(Y)] < 0 || w.point[w.index(Y)] >= ncell;
+        }
+        if (!surface) continue;
+        keys.push_back((PetscInt)(X[0] + nbox[0] * (X[1] + nbox[1] * X[2])));
+        points.push_back(q);
       }
-      if (repeat || !in_box) continue;
-      surface = !w.inside(Y) || w.point[w.index(Y)] < 0 || w.point[w.index(Y)] >= ncell;
-    }
-    if (!surface) continue;
-    keys.push_back((PetscInt)(X[0] + nbox[0] * (X[1] + nbox[1] * X[2])));
-    points.push_back(q);
-  }
   PetscLayout layout;
   PetscSF     matched, sf;
   PetscCall(PetscLayoutCreate(comm, &layout));
@@ -418,7 +425,7 @@ PetscErrorCode BoxLatticeBuild(DM coarse, PetscPartitioner part, PetscInt levels
   }
   PetscMPIInt size;
   PetscCallMPI(MPI_Comm_size(comm, &size));
-  if (size > 1) PetscCall(setPointSF(*dm, w, nbox, where, ncell));
+  if (size > 1) PetscCall(setPointSF(*dm, w, nbox, s, ncell, npoints));
 
   // Coordinates (before the labels: the coordinate DM is a clone that copies them).
   {
