@@ -244,7 +244,7 @@ PetscErrorCode addTractionSide(DM dm, PetscInt dim, const std::vector<BoundaryFa
   PetscCall(VecRestoreArray(local, &fa));
   if (!o->history.active()) PetscFunctionReturn(0);
   Vec pattern;
-  PetscCall(DMCreateGlobalVector(dm, &pattern));
+  PetscCall(VecDuplicate(bc->constant_force, &pattern));
   PetscCall(VecZeroEntries(pattern));
   PetscCall(DMLocalToGlobal(dm, local, ADD_VALUES, pattern));
   PetscCall(DMRestoreLocalVector(dm, &local));
@@ -363,18 +363,19 @@ PetscErrorCode setFreeMask(Vec constrained, Vec free_mask) {
   PetscFunctionReturn(0);
 }
 
-// absorbing_blocks: dim x dim per owned node, node by node as the displacement's dofs (a layout
-// of its own, a DM clone with a dim^2 section, would cost its global section and its SF).
-PetscErrorCode createVectors(DM dm, PetscInt dim, BoundaryConditions *bc) {
+// The global vectors as copies of the mass's layout (DMCreateGlobalVector walks the whole chart
+// each time). absorbing_blocks: dim x dim per owned node, node by node as the displacement's dofs
+// (a layout of its own, a DM clone with a dim^2 section, would cost its global section and its SF).
+PetscErrorCode createVectors(Vec mass, PetscInt dim, BoundaryConditions *bc) {
   PetscFunctionBeginUser;
-  PetscCall(DMCreateGlobalVector(dm, &bc->constant_force));
+  PetscCall(VecDuplicate(mass, &bc->constant_force));
+  PetscCall(VecDuplicate(mass, &bc->input_force));
+  PetscCall(VecDuplicate(mass, &bc->free_mask));
   PetscInt owned;
-  PetscCall(VecGetLocalSize(bc->constant_force, &owned));
-  PetscCall(VecCreate(PetscObjectComm((PetscObject)dm), &bc->absorbing_blocks));
+  PetscCall(VecGetLocalSize(mass, &owned));
+  PetscCall(VecCreate(PetscObjectComm((PetscObject)mass), &bc->absorbing_blocks));
   PetscCall(VecSetSizes(bc->absorbing_blocks, owned * dim, PETSC_DETERMINE));
   PetscCall(VecSetType(bc->absorbing_blocks, VECSTANDARD));
-  PetscCall(DMCreateGlobalVector(dm, &bc->input_force));
-  PetscCall(DMCreateGlobalVector(dm, &bc->free_mask));
   PetscCall(VecZeroEntries(bc->absorbing_blocks));
   PetscCall(VecZeroEntries(bc->constant_force));
   PetscCall(VecZeroEntries(bc->input_force));
@@ -412,7 +413,7 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
   std::vector<PetscInt> constrain_all;
   PetscFunctionBeginUser;
   PetscCall(DMGetDimension(dm, &dim));
-  PetscCall(createVectors(dm, dim, bc));
+  PetscCall(createVectors(mass, dim, bc));
   PetscCall(DMGetLocalSection(dm, &sums.s));
   PetscCall(VecDuplicate(bc->free_mask, &sums.constrained));
   PetscCall(VecZeroEntries(sums.constrained));
