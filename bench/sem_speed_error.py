@@ -86,7 +86,15 @@ def geometry():
     names = ",".join(f"r{k}" for k in RECEIVERS)
     print(f"L={L:.10g} H={H:.10g} T_END={T_END} STATIONS={coords} NAMES={names}")
     # The source: a point just inside the corner (0, H); the nearest node (the corner) takes it.
-    print(f"SRC={0.01:.10g},{H - 0.01:.10g}")
+    src = f"{0.01:.10g},{H - 0.01:.10g}"
+    print(f"SRC={src}")
+    # The run's options but the mesh and the degree (bench/cases/sem_speed_error.sh and
+    # small_run_time.sh): the half model carries half the load.
+    print(f"LAMB='-mesh_box_upper {L:.10g},{H:.10g} -regions soil -material_soil_rho {RHO:.10g} -material_soil_vp {VP:.10g} -material_soil_vs {VS:.10g}"
+          f" -bc_left_type fixed -bc_left_components x -bc_right_type absorbing -bc_bottom_type absorbing"
+          f" -point_forces src -point_force_src_location {src} -point_force_src_force 0,{-F / 2:.10g} -point_force_src_stf ricker"
+          f" -point_force_src_f0 {F0:.10g} -point_force_src_t0 {T0:.10g} -ts_max_time {T_END} -output_fields 0 -progress_interval 1000"
+          f" -station_coordinates {coords} -station_names {names}'")
 
 
 def series(p):

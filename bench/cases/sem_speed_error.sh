@@ -24,11 +24,7 @@ WORK=${SEM_BENCH_WORK:-$BUILD/bench/work/sem_speed_error}
 mkdir -p "$WORK"
 rm -f "$WORK/manifest.txt"
 
-eval "$($PY bench/sem_speed_error.py geometry)"
-LAMB="-mesh_box_upper $L,$H -regions soil -material_soil_rho 2000 -material_soil_vp 692.820323 -material_soil_vs 400
- -bc_left_type fixed -bc_left_components x -bc_right_type absorbing -bc_bottom_type absorbing
- -point_forces src -point_force_src_location $SRC -point_force_src_force 0,-5e4 -point_force_src_stf ricker -point_force_src_f0 10 -point_force_src_t0 0.12
- -ts_max_time $T_END -output_fields 0 -progress_interval 1000 -station_coordinates $STATIONS -station_names $NAMES"
+eval "$($PY bench/sem_speed_error.py geometry)" # L, H, ..., and LAMB: the run's options but mesh and degree
 launch="$SW"
 [ "$RANKS" -gt 1 ] && launch="$MPIEXEC -n $RANKS $SW"
 has_degree=0

@@ -2,10 +2,10 @@
 # default 1: that many elements of degree p, p^3 GLL sub-cells each) through the executable
 # (-dry_run: everything up to the first step), serial build (-mesh_build serial: the whole mesh
 # built, labelled and partitioned on rank 0) against the distributed build (-mesh_build
-# distributed with auto's level: a coarse box refined on the distributed mesh), on 1 and 2
-# ranks (BENCH_SETUP_RANKS, default "1 2"): set-up wall time, of it the mesh, and the peak
+# auto: every rank builds its part, partitioned as a coarse box, meshing/box_lattice.hpp), on 1
+# and 2 ranks (BENCH_SETUP_RANKS, default "1 2"): set-up wall time, of it the mesh, and the peak
 # resident memory per rank (ru_maxrss: rank 0's, the average and the largest) from the run
-# report's "set-up:" line. Issue 11's target: 128^3 in <= 10 s on 16 ranks with rank 0's peak
+# report's "set-up:" line (-report_verbose). Issue 11's target: 128^3 in <= 10 s on 16 ranks with rank 0's peak
 # <= 2x the average. The same for a Gmsh file of (N/4)^3 hexahedra refined twice (-mesh_refine 2,
 # below). Rows go to $BENCH_CSV.
 set -u
@@ -21,7 +21,7 @@ MPIEXEC="mpiexec --oversubscribe"
 WORK="$BUILD/bench/work/setup_scaling${BENCH_SETUP_DEGREE:+_p$P}"
 mkdir -p "$WORK"
 BOX="-mesh_dim 3 -element_degree $P -mesh_box_faces $N,$N,$N -mesh_box_upper 100,100,100 -regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200
- -bc_bottom_type absorbing -input_wave sv -input_boundary bottom -input_stf ricker -input_f0 5 -input_t0 0.24 -input_amplitude 0.1 -output_fields 0 -dry_run"
+ -bc_bottom_type absorbing -input_wave sv -input_boundary bottom -input_stf ricker -input_f0 5 -input_t0 0.24 -input_amplitude 0.1 -output_fields 0 -dry_run -report_verbose"
 # The Gmsh case (-mesh_refine, meshing/mesh_refinement.hpp): the same cube as a coarse file of
 # (N/4)^3 hexahedra (transfinite, so N must be a multiple of 4) refined twice to N^3, read
 # and refined on rank 0 (serial) or refined on the distributed mesh (auto).

@@ -365,9 +365,14 @@ PetscErrorCode solve(Run *r, TS ts) {
   PetscCall(DMCreateGlobalVector(r->model.dm, &u));
   PetscCall(VecDuplicate(u, &v));
   PetscCall(VecZeroEntries(u));
+  // The initial state and the opened outputs are set-up too (-log_view's Setup stage).
+  PetscCall(PetscLogStagePush(stage_setup));
   if (r->opt.restart[0]) PetscCall(resumeFromCheckpoint(r, ts, u, v));
   else PetscCall(setInitialState(r, ts, u, v));
+  PetscCall(PetscLogEventBegin(event_output_open, 0, 0, 0, 0));
   PetscCall(openOutputs(r, ts));
+  PetscCall(PetscLogEventEnd(event_output_open, 0, 0, 0, 0));
+  PetscCall(PetscLogStagePop());
   PetscCall(TSMonitorSet(ts, monitor, r, nullptr));
   PetscCall(PetscTime(&r->wall_start));
   r->wall_last_progress = r->wall_start;
@@ -376,6 +381,7 @@ PetscErrorCode solve(Run *r, TS ts) {
   PetscCall(PetscLogStagePop());
   PetscCall(PetscTime(&wall_end));
   PetscCall(TSGetStepNumber(ts, &steps));
+  PetscCall(PetscLogStagePush(stage_output));
   PetscCall(closeOutputs(r));
   // Listed from the folder itself: it held none of these files before the run (output_dir.hpp).
   // The steps this process ran (after a restart, not those before it).
@@ -387,6 +393,7 @@ PetscErrorCode solve(Run *r, TS ts) {
     PetscCall(r->answers.Finish(r->model, r->opt.restart[0] != 0, r->opt.output_dir, &answers));
     if (r->rank == 0 && !answers.empty()) WriteRunInfo(r->model, r->opt.output_dir, r->dt, answers);
   }
+  PetscCall(PetscLogStagePop());
   PetscCall(VecDestroy(&u));
   PetscCall(VecDestroy(&v));
   PetscFunctionReturn(0);

@@ -2,6 +2,7 @@
 // calibrate the interface parameters against a laboratory shear test.
 //   slipwave-law -path IN.csv [-output OUT.csv] -interface_E 1e9 -interface_G 1e9 ...
 #include "slipwave/core/errors.hpp"
+#include "slipwave/core/mpi_singleton.hpp"
 #include "slipwave/core/option_files.hpp"
 #include "slipwave/core/options_check.hpp"
 #include "slipwave/interface/interface_options.hpp"
@@ -104,6 +105,7 @@ PetscErrorCode run(MPI_Comm comm) {
 
 int main(int argc, char **argv) {
   if (!slipwave::core::OptionFilesAcceptable(argc, argv, "slipwave-law")) return 1;
+  slipwave::core::MpiSingletonDefaults();
   PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
   PetscErrorCode ierr = slipwave::core::ErrorsPushUserInputHandler("slipwave-law");
   if (!ierr) ierr = run(PETSC_COMM_WORLD);

@@ -4,6 +4,7 @@
 #include "slipwave/app/simulation.hpp"
 #include "slipwave/core/errors.hpp"
 #include "slipwave/core/help_order.hpp"
+#include "slipwave/core/mpi_singleton.hpp"
 #include "slipwave/core/option_files.hpp"
 #include "slipwave/core/option_rules.hpp"
 #include "slipwave/core/options_check.hpp"
@@ -15,6 +16,7 @@ static const char help[] = "slipwave: explicit elastodynamics on PETSc for seism
 int main(int argc, char **argv) {
   if (!slipwave::core::OptionFilesAcceptable(argc, argv, "slipwave")) return 1;
   slipwave::core::HelpHoldPetscGeneric(argc, argv);
+  slipwave::core::MpiSingletonDefaults();
   PetscErrorCode ierr = PetscInitialize(&argc, &argv, nullptr, nullptr);
   if (ierr) return 1;
   slipwave::core::HelpStopHolding();

@@ -3,7 +3,8 @@
 namespace slipwave::core {
 
 PetscLogEvent event_bulk_force, event_boundary, event_interface, event_energy, event_stations, event_output, event_guard;
-PetscLogStage stage_setup, stage_geostatic, stage_solve;
+PetscLogEvent event_mesh, event_bulk_setup, event_boundary_setup, event_output_open;
+PetscLogStage stage_setup, stage_geostatic, stage_solve, stage_output;
 
 PetscErrorCode LogEventsRegister() {
   PetscClassId id;
@@ -16,9 +17,14 @@ PetscErrorCode LogEventsRegister() {
   PetscCall(PetscLogEventRegister("SW:IO:Stations", id, &event_stations));
   PetscCall(PetscLogEventRegister("SW:IO:Fields", id, &event_output));
   PetscCall(PetscLogEventRegister("SW:Guard:Check", id, &event_guard));
+  PetscCall(PetscLogEventRegister("SW:Mesh:Build", id, &event_mesh));
+  PetscCall(PetscLogEventRegister("SW:Bulk:Setup", id, &event_bulk_setup));
+  PetscCall(PetscLogEventRegister("SW:Boundary:Setup", id, &event_boundary_setup));
+  PetscCall(PetscLogEventRegister("SW:IO:Open", id, &event_output_open));
   PetscCall(PetscLogStageRegister("Setup", &stage_setup));
   PetscCall(PetscLogStageRegister("Geostatic", &stage_geostatic));
   PetscCall(PetscLogStageRegister("Solve", &stage_solve));
+  PetscCall(PetscLogStageRegister("Output", &stage_output));
   PetscFunctionReturn(0);
 }
 

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "slipwave/fem/geometry_key.hpp"
+#include "slipwave/mesh/cell_vertices.hpp"
 #include "slipwave/mesh/labels.hpp"
 #include "slipwave/mesh/spectral_layout.hpp"
 #include "slipwave/mesh/vertex_coordinates.hpp"
@@ -29,47 +30,33 @@ PetscErrorCode cellShapeOf(DM dm, PetscInt cell, CellShape *shape) {
   PetscFunctionReturn(0);
 }
 
-// Vertices of a cell in element-kernel order. DMPlex lists a hexahedron's second face in the
-// opposite cyclic sense; the kernel wants node 4+k joined by an edge to node k, so pair them
-// through the cell's edges instead of relying on a fixed permutation.
-PetscErrorCode cellVerticesInKernelOrder(DM dm, PetscInt cell, CellShape shape, PetscInt *verts) {
-  PetscInt *closure = nullptr, nclosure, v_start, v_end, e_start, e_end;
+// Vertices of a cell in element-kernel order, from its vertices in closure order
+// (mesh/cell_vertices.hpp). DMPlex lists a hexahedron's second face in the opposite cyclic
+// sense; the kernel wants node 4+k joined by an edge to node k, so pair them through the edges
+// at node k (in a mesh of hexahedra only an edge of this cell joins two of its vertices)
+// instead of relying on a fixed permutation.
+PetscErrorCode cellVerticesInKernelOrder(DM dm, const PetscInt *closure_vertices, PetscInt cell, CellShape shape, PetscInt *verts) {
+  const PetscInt nv = cellNodeCount(shape);
   PetscFunctionBeginUser;
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &v_start, &v_end));
-  PetscCall(DMPlexGetDepthStratum(dm, 1, &e_start, &e_end));
-  PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &nclosure, &closure));
-  PetscInt nv = 0;
-  constexpr int kHexEdges = 12;
-  PetscInt      edges[kHexEdges][2];
-  PetscInt ne = 0;
-  for (PetscInt i = 0; i < nclosure; ++i) {
-    const PetscInt p = closure[2 * i];
-    if (p >= v_start && p < v_end) verts[nv++] = p;
-    else if (shape == CellShape::Hex8 && p >= e_start && p < e_end && ne < kHexEdges) {
-      const PetscInt *cone;
-      PetscCall(DMPlexGetCone(dm, p, &cone));
-      edges[ne][0] = cone[0];
-      edges[ne][1] = cone[1];
-      ++ne;
+  for (PetscInt k = 0; k < nv; ++k) verts[k] = closure_vertices[k];
+  if (shape != CellShape::Hex8) PetscFunctionReturn(0);
+  PetscInt top[4];
+  for (int k = 0; k < 4; ++k) {
+    const PetscInt *edges;
+    PetscInt        nedges;
+    top[k] = -1;
+    PetscCall(DMPlexGetSupportSize(dm, verts[k], &nedges));
+    PetscCall(DMPlexGetSupport(dm, verts[k], &edges));
+    for (PetscInt e = 0; e < nedges; ++e) {
+      const PetscInt *ends;
+      PetscCall(DMPlexGetCone(dm, edges[e], &ends));
+      const PetscInt other = ends[0] == verts[k] ? ends[1] : ends[0];
+      for (int j = 4; j < 8; ++j)
+        if (verts[j] == other) top[k] = other;
     }
+    PetscCheck(top[k] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "hexahedron %" PetscInt_FMT ": no edge joins its two faces at vertex %d", cell, k);
   }
-  PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &nclosure, &closure));
-  if (shape == CellShape::Hex8) {
-    PetscInt top[4];
-    for (int k = 0; k < 4; ++k) {
-      top[k] = -1;
-      for (PetscInt e = 0; e < ne; ++e) {
-        for (int s = 0; s < 2; ++s) {
-          if (edges[e][s] != verts[k]) continue;
-          const PetscInt other = edges[e][1 - s];
-          for (int j = 4; j < 8; ++j)
-            if (verts[j] == other) top[k] = other;
-        }
-      }
-      PetscCheck(top[k] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "hexahedron %" PetscInt_FMT ": no edge joins its two faces at vertex %d", cell, k);
-    }
-    for (int k = 0; k < 4; ++k) verts[4 + k] = top[k];
-  }
+  for (int k = 0; k < 4; ++k) verts[4 + k] = top[k];
   PetscFunctionReturn(0);
 }
 
@@ -169,13 +156,15 @@ PetscErrorCode BulkOperator::Setup(DM dm, const std::vector<RegionMaterial> &mat
   cell_matrix_.resize(ncell_);
   cell_coords_.resize(ncell_ * nen_ * dim_);
 
-  mesh::VertexCoordinates coords;
+  mesh::VertexCoordinates   coords;
+  const mesh::CellVertices *closure_vertices;
   PetscCall(coords.Open(dm));
+  PetscCall(mesh::CellVerticesOf(dm, &closure_vertices));
 
   double bbox_lo[3] = {1e300, 1e300, 1e300}, bbox_hi[3] = {-1e300, -1e300, -1e300};
   for (PetscInt c = 0; c < ncell_; ++c) {
     PetscInt *verts = &cell_vertices_[c * nen_];
-    PetscCall(cellVerticesInKernelOrder(dm, c_start + c, shape_, verts));
+    PetscCall(cellVerticesInKernelOrder(dm, closure_vertices->of(c), c_start + c, shape_, verts));
     for (PetscInt a = 0; a < nen_; ++a) {
       PetscInt off;
       PetscCall(PetscSectionGetOffset(section, verts[a], &off));

@@ -1,11 +1,12 @@
 #include "slipwave/input/boundary_conditions.hpp"
 
+#include <petscsf.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 
 #include "slipwave/core/option_choice.hpp"
-#include "slipwave/fem/node_fields.hpp"
 #include "slipwave/input/boundary_faces.hpp"
 #include "slipwave/physics/absorbing_boundary.hpp"
 
@@ -191,11 +192,13 @@ PetscErrorCode readSideOptions(MPI_Comm comm, PetscInt dim, const std::string &p
 }
 
 // What the sides add up while they are read: held dofs (global) and, in local vectors, the
-// tractions, the dashpot blocks and the incident-wave force.
+// tractions and the incident-wave force, and the dashpot blocks: dim x dim per node, dim values
+// per displacement dof (at dim times its local offset).
 struct SideSums {
-  PetscSection s = nullptr, sb = nullptr; // displacement and dim x dim block layouts
-  Vec          constrained = nullptr, force_local = nullptr, input_local = nullptr, block_local = nullptr;
-  bool         input_found = false;
+  PetscSection             s = nullptr; // displacement layout
+  Vec                      constrained = nullptr, force_local = nullptr, input_local = nullptr;
+  std::vector<PetscScalar> block_local;
+  bool                     input_found = false;
 };
 
 PetscErrorCode addTiedSide(MPI_Comm comm, const std::vector<std::string> &boundaries, const std::string &name, const std::string &prefix, const SideOptions &o,
@@ -241,7 +244,7 @@ PetscErrorCode addTractionSide(DM dm, PetscInt dim, const std::vector<BoundaryFa
   PetscCall(VecRestoreArray(local, &fa));
   if (!o->history.active()) PetscFunctionReturn(0);
   Vec pattern;
-  PetscCall(DMCreateGlobalVector(dm, &pattern));
+  PetscCall(VecDuplicate(bc->constant_force, &pattern));
   PetscCall(VecZeroEntries(pattern));
   PetscCall(DMLocalToGlobal(dm, local, ADD_VALUES, pattern));
   PetscCall(DMRestoreLocalVector(dm, &local));
@@ -288,13 +291,12 @@ PetscErrorCode addComponentSide(DM dm, const std::vector<BoundaryFace> &faces, c
 // the v_ff part is the external force of input/free_field.cpp), and never the incident wave.
 PetscErrorCode addDashpotSide(PetscInt dim, const std::vector<BoundaryFace> &faces, const std::vector<medium::RegionMaterialInfo> &materials, const std::string &name,
                               BoundaryType type, SideSums *sums, BoundaryConditions *bc) {
-  PetscScalar *ba, *ia;
+  PetscScalar *ba = sums->block_local.data(), *ia;
   PetscFunctionBeginUser;
   bc->has_absorbing  = true;
   bc->has_free_field = bc->has_free_field || type == BoundaryType::FreeField;
   const bool is_input = type == BoundaryType::Absorbing && bc->input_wave != InputWave::None && name == bc->input_boundary;
   sums->input_found   = sums->input_found || is_input;
-  PetscCall(VecGetArray(sums->block_local, &ba));
   PetscCall(VecGetArray(sums->input_local, &ia));
   for (const BoundaryFace &f : faces) {
     const physics::ElasticMaterial m = medium::boundaryElastic(materials[f.region]);
@@ -302,10 +304,9 @@ PetscErrorCode addDashpotSide(PetscInt dim, const std::vector<BoundaryFace> &fac
       double   C[9];
       PetscInt off;
       physics::lysmerDashpot((int)dim, f.normal, f.weights[k], m, C);
-      PetscCall(PetscSectionGetOffset(sums->sb, f.vertices[k], &off));
-      for (PetscInt j = 0; j < dim * dim; ++j) ba[off + j] += C[j];
+      PetscCall(PetscSectionGetOffset(sums->s, f.vertices[k], &off));
+      for (PetscInt j = 0; j < dim * dim; ++j) ba[off * dim + j] += C[j];
       if (is_input) {
-        PetscCall(PetscSectionGetOffset(sums->s, f.vertices[k], &off));
         // Force per unit incident velocity: the traction for v_in = 1 along the motion.
         const double c = bc->input_wave == InputWave::SV ? m.vs : m.vp;
         double       direction[3] = {0, 0, 0}, t[3];
@@ -316,7 +317,6 @@ PetscErrorCode addDashpotSide(PetscInt dim, const std::vector<BoundaryFace> &fac
     }
   }
   PetscCall(VecRestoreArray(sums->input_local, &ia));
-  PetscCall(VecRestoreArray(sums->block_local, &ba));
   PetscFunctionReturn(0);
 }
 
@@ -363,16 +363,40 @@ PetscErrorCode setFreeMask(Vec constrained, Vec free_mask) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode createVectors(DM dm, PetscInt dim, BoundaryConditions *bc) {
+// The global vectors as copies of the mass's layout (DMCreateGlobalVector walks the whole chart
+// each time). absorbing_blocks: dim x dim per owned node, node by node as the displacement's dofs
+// (a layout of its own, a DM clone with a dim^2 section, would cost its global section and its SF).
+PetscErrorCode createVectors(Vec mass, PetscInt dim, BoundaryConditions *bc) {
   PetscFunctionBeginUser;
-  PetscCall(fem::NodeFieldCreateDM(dm, dim * dim, &bc->block_dm));
-  PetscCall(DMCreateGlobalVector(bc->block_dm, &bc->absorbing_blocks));
-  PetscCall(DMCreateGlobalVector(dm, &bc->constant_force));
-  PetscCall(DMCreateGlobalVector(dm, &bc->input_force));
-  PetscCall(DMCreateGlobalVector(dm, &bc->free_mask));
+  PetscCall(VecDuplicate(mass, &bc->constant_force));
+  PetscCall(VecDuplicate(mass, &bc->input_force));
+  PetscCall(VecDuplicate(mass, &bc->free_mask));
+  PetscInt owned;
+  PetscCall(VecGetLocalSize(mass, &owned));
+  PetscCall(VecCreate(PetscObjectComm((PetscObject)mass), &bc->absorbing_blocks));
+  PetscCall(VecSetSizes(bc->absorbing_blocks, owned * dim, PETSC_DETERMINE));
+  PetscCall(VecSetType(bc->absorbing_blocks, VECSTANDARD));
   PetscCall(VecZeroEntries(bc->absorbing_blocks));
   PetscCall(VecZeroEntries(bc->constant_force));
   PetscCall(VecZeroEntries(bc->input_force));
+  PetscFunctionReturn(0);
+}
+
+// DMLocalToGlobal(ADD_VALUES) of the blocks: the displacement's section SF carries dim values
+// per dof instead of one.
+PetscErrorCode addBlocksToGlobal(DM dm, PetscInt dim, const std::vector<PetscScalar> &local, Vec global) {
+  PetscSF      sf;
+  MPI_Datatype unit;
+  PetscScalar *g;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetSectionSF(dm, &sf));
+  PetscCallMPI(MPI_Type_contiguous((PetscMPIInt)dim, MPIU_SCALAR, &unit));
+  PetscCallMPI(MPI_Type_commit(&unit));
+  PetscCall(VecGetArray(global, &g));
+  PetscCall(PetscSFReduceBegin(sf, unit, local.data(), g, MPIU_SUM));
+  PetscCall(PetscSFReduceEnd(sf, unit, local.data(), g, MPIU_SUM));
+  PetscCall(VecRestoreArray(global, &g));
+  PetscCallMPI(MPI_Type_free(&unit));
   PetscFunctionReturn(0);
 }
 
@@ -389,17 +413,19 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
   std::vector<PetscInt> constrain_all;
   PetscFunctionBeginUser;
   PetscCall(DMGetDimension(dm, &dim));
-  PetscCall(createVectors(dm, dim, bc));
+  PetscCall(createVectors(mass, dim, bc));
   PetscCall(DMGetLocalSection(dm, &sums.s));
-  PetscCall(DMGetLocalSection(bc->block_dm, &sums.sb));
   PetscCall(VecDuplicate(bc->free_mask, &sums.constrained));
   PetscCall(VecZeroEntries(sums.constrained));
   PetscCall(DMGetLocalVector(dm, &sums.force_local));
   PetscCall(DMGetLocalVector(dm, &sums.input_local));
-  PetscCall(DMGetLocalVector(bc->block_dm, &sums.block_local));
   PetscCall(VecZeroEntries(sums.force_local));
   PetscCall(VecZeroEntries(sums.input_local));
-  PetscCall(VecZeroEntries(sums.block_local));
+  {
+    PetscInt local;
+    PetscCall(VecGetLocalSize(sums.force_local, &local));
+    sums.block_local.assign((size_t)local * dim, 0.0);
+  }
 
   PetscCall(readLoadOptions(comm, dim, bc, &constrain_all));
   for (const std::string &name : boundaries) {
@@ -430,10 +456,9 @@ PetscErrorCode BoundaryConditionsCreate(DM dm, const std::vector<std::string> &b
 
   PetscCall(DMLocalToGlobal(dm, sums.force_local, ADD_VALUES, bc->constant_force));
   PetscCall(DMLocalToGlobal(dm, sums.input_local, ADD_VALUES, bc->input_force));
-  PetscCall(DMLocalToGlobal(bc->block_dm, sums.block_local, ADD_VALUES, bc->absorbing_blocks));
+  PetscCall(addBlocksToGlobal(dm, dim, sums.block_local, bc->absorbing_blocks));
   PetscCall(DMRestoreLocalVector(dm, &sums.force_local));
   PetscCall(DMRestoreLocalVector(dm, &sums.input_local));
-  PetscCall(DMRestoreLocalVector(bc->block_dm, &sums.block_local));
   if (bc->gravity > 0) PetscCall(addGravity(dim, mass, bc));
   PetscCall(setFreeMask(sums.constrained, bc->free_mask));
   PetscCall(VecDestroy(&sums.constrained));
@@ -449,7 +474,6 @@ PetscErrorCode BoundaryConditionsDestroy(BoundaryConditions *bc) {
   for (PrescribedVelocity &p : bc->prescribed) PetscCall(VecDestroy(&p.dofs));
   PetscCall(TimedLoadsDestroy(&bc->timed_loads));
   bc->prescribed.clear();
-  PetscCall(DMDestroy(&bc->block_dm));
   PetscFunctionReturn(0);
 }
 

@@ -1,7 +1,7 @@
 #include "slipwave/input/boundary_faces.hpp"
 
+#include "slipwave/mesh/cell_vertices.hpp"
 #include "slipwave/mesh/labels.hpp"
-#include "slipwave/mesh/point_centroid.hpp"
 #include "slipwave/mesh/spectral_face_weights.hpp"
 #include "slipwave/mesh/vertex_coordinates.hpp"
 #include "slipwave/numerics/reference_cell.hpp"
@@ -25,8 +25,10 @@ PetscErrorCode BoundaryFacesGet(DM dm, const std::string &name, std::vector<Boun
   PetscCall(mesh::SpectralLayoutOf(dm, &spectral));
   PetscInt c_start;
   PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, nullptr));
-  mesh::VertexCoordinates coords;
+  mesh::VertexCoordinates   coords;
+  const mesh::CellVertices *cell_vertices;
   PetscCall(coords.Open(dm));
+  PetscCall(mesh::CellVerticesOf(dm, &cell_vertices));
 
   PetscCall(DMLabelGetValueIS(label, &values_is));
   PetscInt        nvalues;
@@ -61,9 +63,16 @@ PetscErrorCode BoundaryFacesGet(DM dm, const std::string &name, std::vector<Boun
       if (spectral && spectral->degree > 1) PetscCall(mesh::SpectralFaceWeights(*spectral, coords, support[0] - c_start, face.nvert, face.vertices, face.weights));
       else numerics::faceLumpedWeights(shape, (int)dim, x, face.weights);
       numerics::faceNormal(shape, (int)dim, x, face.normal);
-      double xc[3], xf[3], dot = 0;
-      PetscCall(mesh::MeshPointCentroid(dm, support[0], xc));
-      PetscCall(mesh::MeshPointCentroid(dm, f, xf));
+      // The normal points away from the cell's centroid (vertex averages, in closure order as
+      // MeshPointCentroid sums them; the cell's vertices from the mesh's table).
+      double         xc[3] = {0, 0, 0}, xf[3] = {0, 0, 0}, dot = 0, y[3];
+      const PetscInt nc    = cell_vertices->per_cell;
+      for (PetscInt a = 0; a < face.nvert; ++a)
+        for (PetscInt d = 0; d < dim; ++d) xf[d] += x[a * dim + d] / face.nvert;
+      for (PetscInt a = 0; a < nc; ++a) {
+        PetscCall(coords.Get(cell_vertices->of(support[0] - c_start)[a], y));
+        for (PetscInt d = 0; d < dim; ++d) xc[d] += y[d] / nc;
+      }
       for (PetscInt d = 0; d < dim; ++d) dot += face.normal[d] * (xf[d] - xc[d]);
       if (dot < 0)
         for (PetscInt d = 0; d < dim; ++d) face.normal[d] = -face.normal[d];

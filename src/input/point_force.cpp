@@ -68,8 +68,9 @@ PetscErrorCode nearestOwnedVertex(DM dm, PetscInt dim, const double *p, Candidat
   PetscFunctionReturn(0);
 }
 
-// The force pattern of one point force: the force on the nearest node over all ranks.
-PetscErrorCode pointForcePattern(DM dm, PetscInt dim, const PointForceOptions &o, Vec *pattern, Candidate *chosen) {
+// The force pattern of one point force: the force on the nearest node over all ranks (a global
+// vector of like's layout).
+PetscErrorCode pointForcePattern(DM dm, PetscInt dim, const PointForceOptions &o, Vec like, Vec *pattern, Candidate *chosen) {
   MPI_Comm    comm = PetscObjectComm((PetscObject)dm);
   PetscMPIInt size;
   Candidate   mine;
@@ -83,7 +84,7 @@ PetscErrorCode pointForcePattern(DM dm, PetscInt dim, const PointForceOptions &o
   for (const Candidate &c : all)
     if (c < *chosen) *chosen = c;
   Vec local;
-  PetscCall(DMCreateGlobalVector(dm, pattern));
+  PetscCall(VecDuplicate(like, pattern));
   PetscCall(VecZeroEntries(*pattern));
   PetscCall(DMGetLocalVector(dm, &local));
   PetscCall(VecZeroEntries(local));
@@ -130,7 +131,7 @@ PetscErrorCode PointForcesCreate(DM dm, BoundaryConditions *bc) {
     PetscCheck(inside, comm, PETSC_ERR_USER_INPUT, "-point_force_%s_location is outside the mesh; allowed: a point in %s", o.name.c_str(), box);
     Vec       pattern;
     Candidate node;
-    PetscCall(pointForcePattern(dm, dim, o, &pattern, &node));
+    PetscCall(pointForcePattern(dm, dim, o, bc->constant_force, &pattern, &node));
     const double at[3] = {node[1], node[2], node[3]};
     const std::string note = "point force " + o.name + ": " + LoadVectorText(o.force, dim) + (dim == 2 ? " N/m" : " N") + " on the node at " + LoadVectorText(at, dim) +
                              ", " + (o.history.active() ? o.history.describe() : "constant");

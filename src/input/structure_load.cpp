@@ -103,7 +103,7 @@ PetscErrorCode StructureLoadCreate(DM dm, const fem::BulkOperator &bulk, const s
   const PetscInt region = (PetscInt)(std::find(regions.begin(), regions.end(), o.region) - regions.begin());
   Vec            marks, coords, pattern;
   double         centroid[3] = {0, 0, 0}, count = 0;
-  PetscCall(DMCreateGlobalVector(dm, &marks));
+  PetscCall(VecDuplicate(bc->constant_force, &marks));
   PetscCall(VecDuplicate(marks, &coords));
   PetscCall(VecDuplicate(marks, &pattern));
   PetscCall(VecZeroEntries(pattern));

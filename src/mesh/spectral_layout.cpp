@@ -3,6 +3,7 @@
 #include "slipwave/mesh/labels.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace slipwave::mesh {
 namespace {
@@ -76,26 +77,36 @@ PetscErrorCode SpectralCellFrame(DM dm, const VertexCoordinates &coords, PetscIn
   PetscFunctionReturn(0);
 }
 
-// The cell across the face of c's frame at axis d = 1 (-1 if none: a boundary).
-static PetscErrorCode frameNeighbour(DM dm, PetscInt c, const PetscInt *lex, PetscInt ncorner, PetscInt d, PetscInt v_start, PetscInt v_end, PetscInt *neighbour) {
+// The cell across the face of c's frame at axis d = 1 (-1 if none: a boundary): the cone face
+// whose vertices (read through the cones: a face's closure would also order them) are all
+// corners of c with bit d set.
+static PetscErrorCode frameNeighbour(DM dm, PetscInt dim, PetscInt c, const PetscInt *lex, PetscInt ncorner, PetscInt d, PetscInt *neighbour) {
   const PetscInt *cone;
   PetscInt        ncone;
   PetscFunctionBeginUser;
   *neighbour = -1;
   PetscCall(DMPlexGetConeSize(dm, c, &ncone));
   PetscCall(DMPlexGetCone(dm, c, &cone));
+  auto onSide = [&](PetscInt v) {
+    for (PetscInt k = 0; k < ncorner; ++k)
+      if (lex[k] == v) return ((k >> d) & 1) == 1;
+    return false;
+  };
   for (PetscInt q = 0; q < ncone && *neighbour < 0; ++q) {
-    PetscInt *closure = nullptr, nclosure;
-    bool      on_side = true;
-    PetscCall(DMPlexGetTransitiveClosure(dm, cone[q], PETSC_TRUE, &nclosure, &closure));
-    for (PetscInt i = 0; i < nclosure; ++i) {
-      const PetscInt v = closure[2 * i];
-      if (v < v_start || v >= v_end) continue;
-      bool found = false;
-      for (PetscInt k = 0; k < ncorner; ++k) found = found || (lex[k] == v && ((k >> d) & 1));
-      on_side = on_side && found;
+    const PetscInt *edges;
+    PetscInt        nedges;
+    bool            on_side = true;
+    // 2D: the face is an edge (its cone: two vertices); 3D: a face of edges.
+    if (dim == 2) nedges = 1, edges = &cone[q];
+    else {
+      PetscCall(DMPlexGetConeSize(dm, cone[q], &nedges));
+      PetscCall(DMPlexGetCone(dm, cone[q], &edges));
     }
-    PetscCall(DMPlexRestoreTransitiveClosure(dm, cone[q], PETSC_TRUE, &nclosure, &closure));
+    for (PetscInt k = 0; k < nedges && on_side; ++k) {
+      const PetscInt *ends;
+      PetscCall(DMPlexGetCone(dm, edges[k], &ends));
+      on_side = onSide(ends[0]) && onSide(ends[1]);
+    }
     if (!on_side) continue;
     const PetscInt *supp;
     PetscInt        nsupp;
@@ -108,12 +119,11 @@ static PetscErrorCode frameNeighbour(DM dm, PetscInt c, const PetscInt *lex, Pet
 }
 
 PetscErrorCode SpectralLayoutBuild(DM dm, PetscInt degree, SpectralLayout *L) {
-  PetscInt dim, c_start, c_end, v_start, v_end;
+  PetscInt dim, c_start, c_end;
   DMLabel  region, position = nullptr;
   PetscFunctionBeginUser;
   PetscCall(DMGetDimension(dm, &dim));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &v_start, &v_end));
   PetscCall(DMGetLabel(dm, kRegionLabel, &region));
   if (degree > 1) {
     PetscCall(DMGetLabel(dm, kSpectralPositionLabel, &position));
@@ -178,7 +188,7 @@ PetscErrorCode SpectralLayoutBuild(DM dm, PetscInt degree, SpectralLayout *L) {
       for (PetscInt d = 0, stride = 1; d < dim; stride *= p, ++d) {
         if (idx[d] == p - 1) continue;
         PetscInt n;
-        PetscCall(frameNeighbour(dm, c, lex, ncorner, d, v_start, v_end, &n));
+        PetscCall(frameNeighbour(dm, dim, c, lex, ncorner, d, &n));
         PetscCheck(n >= 0 && L->cell_position[n - c_start] == pos + stride, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                    "SpectralLayoutBuild: cell %" PetscInt_FMT " (position %" PetscInt_FMT ") has no sub-cell of its element beyond its side %" PetscInt_FMT " on this rank", c, pos, d);
         if (L->cell_element[n - c_start] < 0) {
@@ -211,25 +221,35 @@ PetscErrorCode SpectralLayoutOf(DM dm, const SpectralLayout **layout) {
   DMLabel position;
   PetscCall(DMGetLabel(dm, kSpectralPositionLabel, &position));
   if (!position) PetscFunctionReturn(0);
-  PetscInt dim, c_start, c_end, nsub = 0;
+  // The label is on cells only: its largest value here is the last position.
+  PetscInt        dim, nvalues, nsub = 0;
+  IS              values;
+  const PetscInt *vals;
   PetscCall(DMGetDimension(dm, &dim));
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
-  for (PetscInt c = c_start; c < c_end; ++c) {
-    PetscInt pos;
-    PetscCall(DMLabelGetValue(position, c, &pos));
-    nsub = PetscMax(nsub, pos + 1);
-  }
+  PetscCall(DMLabelGetValueIS(position, &values));
+  PetscCall(ISGetLocalSize(values, &nvalues));
+  PetscCall(ISGetIndices(values, &vals));
+  for (PetscInt i = 0; i < nvalues; ++i) nsub = PetscMax(nsub, vals[i] + 1);
+  PetscCall(ISRestoreIndices(values, &vals));
+  PetscCall(ISDestroy(&values));
   if (nsub == 0) PetscFunctionReturn(0); // no cells here: nothing to group
   const PetscInt degree = (PetscInt)std::lround(std::pow((double)nsub, 1.0 / dim));
   PetscCheck(SpectralCount(degree, dim) == nsub, PETSC_COMM_SELF, PETSC_ERR_PLIB, "SpectralLayoutOf: %" PetscInt_FMT " sub-cells per element is not p^%" PetscInt_FMT, nsub, dim);
-  auto *built = new SpectralLayout;
-  PetscCall(SpectralLayoutBuild(dm, degree, built));
+  SpectralLayout built;
+  PetscCall(SpectralLayoutBuild(dm, degree, &built));
+  PetscCall(SpectralLayoutAttach(dm, std::move(built)));
+  PetscCall(SpectralLayoutOf(dm, layout));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SpectralLayoutAttach(DM dm, SpectralLayout &&layout) {
+  PetscContainer container;
+  PetscFunctionBeginUser;
   PetscCall(PetscContainerCreate(PETSC_COMM_SELF, &container));
-  PetscCall(PetscContainerSetPointer(container, built));
+  PetscCall(PetscContainerSetPointer(container, new SpectralLayout(std::move(layout))));
   PetscCall(PetscContainerSetUserDestroy(container, destroyLayout));
   PetscCall(PetscObjectCompose((PetscObject)dm, kLayoutKey, (PetscObject)container));
   PetscCall(PetscContainerDestroy(&container));
-  *layout = built;
   PetscFunctionReturn(0);
 }
 

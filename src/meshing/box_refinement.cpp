@@ -3,6 +3,7 @@
 #include <petscsf.h>
 
 #include "slipwave/mesh/labels.hpp"
+#include "slipwave/meshing/box_element_frame.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
 #include "slipwave/mesh/spectral_layout.hpp"
 #include "slipwave/mesh/vertex_coordinates.hpp"
@@ -71,22 +72,7 @@ struct Lattice {
 // Spectral elements of degree p = 2, 4, 8 are made by log2(p) more refinements: the fine
 // lattice holds p sub-cells per element and axis. The serial build (spectral_subdivision.hpp)
 // numbers the sub-cells and the GLL nodes of an element lexicographically in its element frame
-// (spectral_layout.hpp), read from its parent box cell; DMPlexCreateBoxMesh lays out every cell
-// alike, so the frame is one signed permutation of the lattice axes for the whole box.
-struct ElementFrame {
-  PetscInt dim     = 0;
-  PetscInt axis[3] = {0, 1, 2}; // frame axis a runs along lattice axis axis[a],
-  PetscInt sign[3] = {1, 1, 1}; // upwards (+1) or downwards (-1)
-  PetscInt code() const {
-    PetscInt c = 0;
-    for (PetscInt a = 0; a < dim; ++a) c |= (2 * axis[a] + (sign[a] < 0)) << (3 * a);
-    return c;
-  }
-  void decode(PetscInt c) {
-    for (PetscInt a = 0; a < dim; ++a) axis[a] = ((c >> (3 * a)) & 7) / 2, sign[a] = ((c >> (3 * a)) & 1) ? -1 : 1;
-  }
-};
-
+// (box_element_frame.hpp), read from its parent box cell.
 struct SpectralLattice {
   Lattice      fine;       // p cells per element and axis (p = 1: the box itself)
   PetscInt     degree = 1; // p
@@ -103,12 +89,9 @@ struct SpectralLattice {
     return key;
   }
   PetscInt position(const PetscReal *xc) const {
-    PetscInt pos = 0, stride = 1;
-    for (PetscInt a = 0; a < fine.dim; stride *= degree, ++a) {
-      const PetscInt j = sub(xc, frame.axis[a]);
-      pos += stride * (frame.sign[a] > 0 ? j : degree - 1 - j);
-    }
-    return pos;
+    PetscInt q[3] = {0, 0, 0};
+    for (PetscInt d = 0; d < fine.dim; ++d) q[d] = sub(xc, d);
+    return frame.position(degree, q);
   }
   // Where the serial build numbers the vertex at x, seen from its cell with centroid xc: p = 1,
   // the box's vertex order (lattice order); p > 1, the subdivision's order of first appearance
@@ -255,26 +238,6 @@ PetscErrorCode numberCells(DM dm, const SpectralLattice &s, std::vector<PetscInt
   PetscFunctionReturn(0);
 }
 
-// The element frame of cell c (spectral_layout.hpp) as lattice directions: frame axis a runs
-// from the frame's corner 0 to its corner 2^a.
-PetscErrorCode cellFrame(DM dm, const mesh::VertexCoordinates &coords, PetscInt c, ElementFrame *f) {
-  PetscInt  lex[8];
-  PetscReal x0[3], x1[3];
-  PetscFunctionBeginUser;
-  PetscCall(DMGetDimension(dm, &f->dim));
-  PetscCall(mesh::SpectralCellFrame(dm, coords, c, lex));
-  PetscCall(coords.Get(lex[0], x0));
-  for (PetscInt a = 0; a < f->dim; ++a) {
-    PetscCall(coords.Get(lex[1 << a], x1));
-    PetscInt along = 0;
-    for (PetscInt d = 1; d < f->dim; ++d)
-      if (std::fabs(x1[d] - x0[d]) > std::fabs(x1[along] - x0[along])) along = d;
-    f->axis[a] = along;
-    f->sign[a] = x1[along] > x0[along] ? 1 : -1;
-  }
-  PetscFunctionReturn(0);
-}
-
 // The element frame, read on the (distributed, coarse) box before it is refined: every cell's,
 // which must be one for the whole box.
 PetscErrorCode boxElementFrame(DM coarse, ElementFrame *frame) {
@@ -285,7 +248,7 @@ PetscErrorCode boxElementFrame(DM coarse, ElementFrame *frame) {
   PetscCall(DMPlexGetHeightStratum(coarse, 0, &c_start, &c_end));
   PetscCall(coords.Open(coarse));
   for (PetscInt c = c_start; c < c_end; ++c) {
-    PetscCall(cellFrame(coarse, coords, c, frame));
+    PetscCall(BoxCellFrame(coarse, coords, c, frame));
     range[0] = std::max(range[0], -frame->code());
     range[1] = std::max(range[1], frame->code());
   }
@@ -298,10 +261,8 @@ PetscErrorCode boxElementFrame(DM coarse, ElementFrame *frame) {
   PetscFunctionReturn(0);
 }
 
-// Every vertex from its lattice point to its GLL node: along each axis, lattice index i lies in
-// element e = min(i / p, n - 1) at node j = i - e p, at lower + h (e + (1 + xi_j) / 2), h the
-// element size (the serial subdivision's Q1 map of a box element). The position is a function
-// of the lattice point, so every rank moves its copy of a shared vertex alike, and the global
+// Every vertex from its lattice point to its GLL node (BoxGllCoordinate): a function of the
+// lattice point, so every rank moves its copy of a shared vertex alike, and the global
 // coordinates, made again from the local ones, agree with them.
 PetscErrorCode moveToGll(DM dm, const SpectralLattice &s, const BoxSpec &box) {
   Vec          local, moved;
@@ -324,11 +285,7 @@ PetscErrorCode moveToGll(DM dm, const SpectralLattice &s, const BoxSpec &box) {
     PetscReal lattice_point[3];
     PetscCall(PetscSectionGetOffset(section, v, &off));
     for (PetscInt d = 0; d < s.fine.dim; ++d) lattice_point[d] = PetscRealPart(x[off + d]);
-    for (PetscInt d = 0; d < s.fine.dim; ++d) {
-      const int64_t   i = s.fine.coordinate(lattice_point, d, 0), e = std::min<int64_t>(i / s.degree, box.faces[d] - 1);
-      const PetscReal h = (box.upper[d] - box.lower[d]) / box.faces[d];
-      x[off + d]        = box.lower[d] + h * ((PetscReal)e + 0.5 * (1 + gll[i - e * s.degree]));
-    }
+    for (PetscInt d = 0; d < s.fine.dim; ++d) x[off + d] = BoxGllCoordinate(box, d, s.degree, gll, (PetscInt)s.fine.coordinate(lattice_point, d, 0));
   }
   PetscCall(VecRestoreArray(moved, &x));
   PetscCall(DMSetCoordinatesLocal(dm, moved));

@@ -2,10 +2,12 @@
 
 #include <petscsf.h>
 
+#include "slipwave/core/log_events.hpp"
 #include "slipwave/core/option_rules.hpp"
 #include "slipwave/mesh/cell_quality_check.hpp"
 #include "slipwave/mesh/partition_metis.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
+#include "slipwave/meshing/box_lattice.hpp"
 #include "slipwave/meshing/box_refinement.hpp"
 #include "slipwave/meshing/memory_estimate.hpp"
 #include "slipwave/meshing/mesh_options.hpp"
@@ -325,28 +327,41 @@ PetscErrorCode createLabelledBox(MPI_Comm comm, PetscInt levels, bool refined, M
   PetscFunctionReturn(0);
 }
 
-// -mesh_build: the number of refinements of a distributed build (0: serial; at degree p = 2,
-// 4, 8 log2(p) of them make the GLL sub-cells), after checking on the coarse box that its
-// split refines into the fine split; `serial` receives the box to split and distribute (coarse,
-// the elements, or whole).
-PetscErrorCode createBoxForBuild(MPI_Comm comm, MeshOptions *o, DM *serial, MeshDescription *desc, PetscInt *levels) {
+// -mesh_build: how a box is built. Without interfaces, distributed where it can be
+// (box_lattice.hpp: *lattice, on rank 0 `serial` receives the coarse box of `levels`, whose
+// partition makes the parts; at degree 1 levels must be > 0, or rank 0 would hold the whole box
+// anyway). With interfaces, refined on the distributed mesh (box_refinement.hpp: *levels
+// refinements, at degree p = 2, 4, 8 log2(p) of them making the GLL sub-cells, where the coarse
+// split refines into the fine split; `serial` receives the box to split and distribute, coarse
+// or whole) or else serially (levels 0: the elements, subdivided on rank 0).
+PetscErrorCode createBoxForBuild(MPI_Comm comm, MeshOptions *o, DM *serial, MeshDescription *desc, PetscInt *levels, bool *lattice) {
   PetscMPIInt size;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   std::vector<std::vector<PetscReal>> cuts = o->region_boxes; // voids are among the regions
+  *levels  = BoxRefinementLevels(desc->dim, o->box, cuts, size, o->build);
+  *lattice = o->interfaces.empty() && o->build != kMeshBuildSerial && (*levels > 0 || o->degree > 1);
+  if (o->interfaces.empty()) {
+    PetscCheck(*lattice || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
+               "-mesh_build = distributed, but the box has no coarser box to partition it by (every -mesh_box_faces entry even, region box bounds on the coarse grid, at "
+               "least one coarse cell per rank); allowed: auto or serial, or -element_degree above 1");
+    if (!*lattice) *levels = 0;
+    PetscCall(createLabelledBox(comm, *levels, *lattice, o, serial, desc));
+    PetscFunctionReturn(0);
+  }
   const PetscInt spectral = BoxSpectralRefinements(o->degree);
   PetscCheck(spectral >= 0 || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
-             "-mesh_build = distributed with -element_degree = %" PetscInt_FMT "; allowed: -element_degree 1, 2, 4 or 8 (GLL sub-cells made by refinement), or -mesh_build auto or serial",
+             "-mesh_build = distributed with -element_degree = %" PetscInt_FMT " and interfaces; allowed: -element_degree 1, 2, 4 or 8 (GLL sub-cells made by refinement), or -mesh_build auto or serial",
              o->degree);
   // Degrees that are no power of 2 are subdivided on the serial mesh: auto builds serially.
-  *levels = spectral < 0 ? 0 : BoxRefinementLevels(desc->dim, o->box, cuts, size, o->build);
+  if (spectral < 0) *levels = 0;
   PetscCheck(*levels > 0 || spectral > 0 || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
              "-mesh_build = distributed, but the box cannot be refined from a coarser one (every -mesh_box_faces entry even, region box bounds on the coarse grid, at "
              "least one coarse cell per rank); allowed: auto or serial");
   const bool refined = *levels > 0 || (spectral > 0 && o->build != kMeshBuildSerial);
   PetscCall(createLabelledBox(comm, *levels, refined, o, serial, desc));
   if (refined) *levels += spectral;
-  if (!refined || o->interfaces.empty()) PetscFunctionReturn(0);
+  if (!refined) PetscFunctionReturn(0);
   PetscBool refinable;
   PetscCall(InterfacesRefinable(*serial, desc->regions, o->interfaces, &refinable));
   PetscCheck(refinable || o->build != kMeshBuildDistributed, comm, PETSC_ERR_USER_INPUT,
@@ -489,37 +504,28 @@ PetscErrorCode refineOnRank0(DM *serial, PetscInt levels, const MeshDescription 
   PetscFunctionReturn(0);
 }
 
-} // namespace
-
-PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
-  MeshOptions o;
+// The partitioner of `serial`: METIS by default (this PETSc has none of its own; slipwave
+// registers it, here, so every program that builds a mesh has it); the user can still pick
+// another with -petscpartitioner_type.
+PetscErrorCode configurePartitioner(MPI_Comm comm, DM serial, MeshDescription *desc, PetscPartitioner *part) {
+  PetscPartitionerType part_type;
   PetscFunctionBeginUser;
-  PetscCall(MeshOptionsRead(comm, &desc->dim, &o));
-  desc->regions    = o.regions;
-  desc->interfaces = o.interfaces;
-  PetscLogDouble start;
-  PetscCall(PetscTime(&start));
+  PetscCall(DMPlexGetPartitioner(serial, part));
+  PetscCall(mesh::PartitionerRegisterMetis());
+  PetscCall(checkPartitionerType(comm));
+  PetscCall(PetscPartitionerSetType(*part, mesh::kPartitionerMetis));
+  PetscCall(PetscPartitionerSetFromOptions(*part));
+  PetscCall(PetscPartitionerGetType(*part, &part_type));
+  desc->partitioner = part_type;
+  PetscFunctionReturn(0);
+}
 
-  DM       serial;
-  PetscInt levels = 0; // refinements on the distributed mesh (box_refinement.hpp, mesh_refinement.hpp)
-  if (!o.file.empty()) {
-    PetscCall(createGmshForBuild(comm, o, &serial, desc, &levels));
-  } else {
-    PetscCall(core::OptionsValidateForDimension(comm, desc->dim, true));
-    PetscCall(createBoxForBuild(comm, &o, &serial, desc, &levels));
-  }
-  PetscCall(checkCellTypes(comm, serial));
-  desc->degree = o.degree;
-  DM parent    = nullptr; // spectral elements: the mesh of whole elements, partitioned for the sub-cells
-  const PetscInt serial_levels = o.file.empty() ? 0 : o.refine - levels; // -mesh_refine on rank 0
-  if (o.degree > 1) {
-    PetscCall(checkSpectralCells(comm, serial, o.degree));
-    PetscCall(refineOnRank0(&serial, serial_levels, *desc, {}));
-    // The elements' shape, not their GLL sub-cells' (whose aspect comes from the GLL spacing);
-    // a box built distributed has its coarse cells here, its elements scaled by 2^k on every
-    // axis: the same aspect and Jacobian ratio.
-    PetscCall(mesh::CellQualityCheckSerialMesh(serial));
-  }
+// Every mesh but a box built on the lattice: the serial mesh (elements subdivided into their
+// GLL sub-cells at p > 1 unless refined later, split along the interfaces, refined on rank 0
+// at -mesh_refine without a distributed build) distributed, then refined `levels` times.
+PetscErrorCode createSerialAndDistribute(MPI_Comm comm, const MeshOptions &o, PetscInt levels, PetscInt serial_levels, DM serial, DM *dm, MeshDescription *desc) {
+  DM parent = nullptr; // spectral elements: the mesh of whole elements, partitioned for the sub-cells
+  PetscFunctionBeginUser;
   if (o.degree > 1 && levels == 0) {
     parent = serial;
     PetscCall(SpectralSubdivideSerialMesh(parent, o.degree, desc->boundaries, &serial));
@@ -531,20 +537,9 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
     serial = split;
   }
   if (o.degree == 1) PetscCall(refineOnRank0(&serial, serial_levels, *desc, desc->interfaces));
-
   PetscPartitioner part;
   DM               dist = nullptr;
-  PetscCall(DMPlexGetPartitioner(parent ? parent : serial, &part));
-  // METIS is the default (this PETSc has none of its own; slipwave registers it, here, so every
-  // program that builds a mesh has it); the user can still pick another with
-  // -petscpartitioner_type.
-  PetscCall(mesh::PartitionerRegisterMetis());
-  PetscCall(checkPartitionerType(comm));
-  PetscCall(PetscPartitionerSetType(part, mesh::kPartitionerMetis));
-  PetscCall(PetscPartitionerSetFromOptions(part));
-  PetscPartitionerType part_type;
-  PetscCall(PetscPartitionerGetType(part, &part_type));
-  desc->partitioner = part_type;
+  PetscCall(configurePartitioner(comm, parent ? parent : serial, desc, &part));
   if (parent) {
     PetscCall(SpectralPartitionWholeElements(parent, part, o.degree, serial));
     PetscCall(DMDestroy(&parent));
@@ -567,10 +562,57 @@ PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
   } else if (levels > 0) {
     PetscCall(MeshRefineUniformly(dm, levels, desc->regions, desc->boundaries, desc->interfaces, &desc->serial_cell));
   }
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode MeshCreate(MPI_Comm comm, DM *dm, MeshDescription *desc) {
+  MeshOptions o;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(core::event_mesh, 0, 0, 0, 0));
+  PetscCall(MeshOptionsRead(comm, &desc->dim, &o));
+  desc->regions    = o.regions;
+  desc->interfaces = o.interfaces;
+  PetscLogDouble start;
+  PetscCall(PetscTime(&start));
+
+  DM       serial;
+  PetscInt levels  = 0;     // refinements on the distributed mesh (box_refinement.hpp, mesh_refinement.hpp), or the coarse box's level (box_lattice.hpp)
+  bool     lattice = false; // a box built on the lattice by every rank (box_lattice.hpp)
+  if (!o.file.empty()) {
+    PetscCall(createGmshForBuild(comm, o, &serial, desc, &levels));
+  } else {
+    PetscCall(core::OptionsValidateForDimension(comm, desc->dim, true));
+    PetscCall(createBoxForBuild(comm, &o, &serial, desc, &levels, &lattice));
+  }
+  PetscCall(checkCellTypes(comm, serial));
+  desc->degree = o.degree;
+  const PetscInt serial_levels = o.file.empty() ? 0 : o.refine - levels; // -mesh_refine on rank 0
+  if (o.degree > 1) {
+    PetscCall(checkSpectralCells(comm, serial, o.degree));
+    PetscCall(refineOnRank0(&serial, serial_levels, *desc, {}));
+    // The elements' shape, not their GLL sub-cells' (whose aspect comes from the GLL spacing);
+    // a box built distributed has its coarse cells here, its elements scaled by 2^k on every
+    // axis: the same aspect and Jacobian ratio.
+    PetscCall(mesh::CellQualityCheckSerialMesh(serial));
+  }
+  if (lattice) {
+    PetscPartitioner part;
+    PetscCall(configurePartitioner(comm, serial, desc, &part));
+    PetscCall(BoxLatticeBuild(serial, part, levels, o.degree, o.box, desc->boundaries, dm, &desc->serial_cell));
+    PetscCall(DMDestroy(&serial));
+    std::string coarse;
+    for (PetscInt d = 0; d < desc->dim; ++d) coarse += (d ? " x " : "") + std::to_string(o.box.faces[d] >> levels);
+    desc->source += ", built distributed: every rank builds its part (partitioned as " + coarse + " coarse cells)";
+  } else {
+    PetscCall(createSerialAndDistribute(comm, o, levels, serial_levels, serial, dm, desc));
+  }
   PetscLogDouble end;
   PetscCall(PetscTime(&end));
   desc->build_seconds = end - start;
   PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));
+  PetscCall(PetscLogEventEnd(core::event_mesh, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 

@@ -182,8 +182,9 @@ PetscErrorCode MeshOptionsRead(MPI_Comm comm, PetscInt *dim, MeshOptions *o) {
   PetscBool build_set = PETSC_FALSE;
   PetscCall(PetscOptionsEList("-mesh_build",
                               "how a box mesh or a refined -mesh_file is built: auto (a box: distributed where it allows it and has >= 1000 coarse cells per rank, "
-                              "or at -element_degree 2, 4, 8; a file with -mesh_refine > 0: distributed where its interfaces allow it), serial (whole mesh on rank 0, "
-                              "then distributed), distributed (a coarse mesh refined on the distributed mesh)",
+                              "or at -element_degree > 1 (with interfaces: 2, 4, 8); a file with -mesh_refine > 0: distributed where its interfaces allow it), serial "
+                              "(whole mesh on rank 0, then distributed), distributed (every rank builds its part of a box partitioned as a coarse box, or a coarse mesh "
+                              "refined on the distributed mesh)",
                               "MeshCreate", kMeshBuildNames, 3, kMeshBuildNames[o->build], &o->build, &build_set));
   PetscBool refine_set = PETSC_FALSE;
   PetscCall(PetscOptionsRangeInt("-mesh_refine",

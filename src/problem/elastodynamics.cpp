@@ -184,10 +184,14 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   }
   PetscCall(readDamping(m));
   PetscCall(medium::AttenuationCreate(comm, &m->materials, &m->attenuation));
-  auto setupBulk = [m]() {
+  auto setupBulk = [m]() -> PetscErrorCode {
     std::vector<fem::RegionMaterial> fe;
+    PetscFunctionBeginUser;
     for (const auto &info : m->materials) fe.push_back(info.fe);
-    return m->bulk.Setup(m->dm, fe);
+    PetscCall(PetscLogEventBegin(core::event_bulk_setup, 0, 0, 0, 0));
+    PetscCall(m->bulk.Setup(m->dm, fe));
+    PetscCall(PetscLogEventEnd(core::event_bulk_setup, 0, 0, 0, 0));
+    PetscFunctionReturn(0);
   };
   PetscCall(setupBulk());
   // Spectral elements were judged by their corners before subdivision (mesh_builder.cpp).
@@ -195,7 +199,9 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(DMCreateLocalVector(m->dm, &m->u_local));
   PetscCall(VecDuplicate(m->u_local, &m->f_local));
   PetscCall(assembleMass(m));
+  PetscCall(PetscLogEventBegin(core::event_boundary_setup, 0, 0, 0, 0));
   PetscCall(input::BoundaryConditionsCreate(m->dm, m->mesh.boundaries, m->materials, m->mass, &m->bc));
+  PetscCall(PetscLogEventEnd(core::event_boundary_setup, 0, 0, 0, 0));
   PetscCall(input::PointForcesCreate(m->dm, &m->bc));
   PetscCall(input::BodyForceCreate(m->dm, m->mass, &m->bc));
   PetscCall(input::StructureLoadCreate(m->dm, m->bulk, m->mesh.regions, &m->bc));

@@ -32,9 +32,9 @@ $SW $opts $(box 72 48) -element_degree 4 -output_dir "$WORK/fine" > "$WORK/fine.
 $SW $opts $(box 72 48) -element_degree 4 -point_forces src -point_force_src_location 36,40 -point_force_src_force 0,-1e3 -point_force_src_stf ricker \
   -point_force_src_f0 50 -point_force_src_t0 0.05 -output_dir "$WORK/force" > "$WORK/force.log"
 grep -h "mesh:\|region\|warning\|resolution" "$WORK"/p4.log "$WORK"/p1.log "$WORK"/p2.log "$WORK"/fine.log
-# auto builds the box of elements distributed (1536 elements: too few to refine from a coarser
-# box, docs/running.md), then refines it twice into the sub-cells.
-mesh_line="mesh: box 48 x 32 quadrilaterals, built distributed: refined 2 times (2 into the GLL sub-cells), spectral elements of degree 4 (GLL): 1536 elements in 24576 linear sub-cells, 24897 nodes,"
+# auto builds the box distributed, every rank its part of the sub-cells, partitioned by element
+# (1536 elements: too few for a coarser partition, docs/running.md).
+mesh_line="mesh: box 48 x 32 quadrilaterals, built distributed: every rank builds its part (partitioned as 48 x 32 coarse cells), spectral elements of degree 4 (GLL): 1536 elements in 24576 linear sub-cells, 24897 nodes,"
 grep -qF "$mesh_line" "$WORK/p4.log" || fail "p = 4 mesh line"
 grep -qF "$mesh_line" "$WORK/p4_np2.log" || fail "p = 4 mesh line on 2 ranks"
 grep -qE "region soil .* 3\.9 GLL nodes per S wavelength at 13\.82 Hz \(degree 4, element size 15 m\)" "$WORK/p4.log" || fail "p = 4 soil nodes per wavelength"

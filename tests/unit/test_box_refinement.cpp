@@ -15,6 +15,11 @@
 //     and 2 (3D), where the sub-cells also carry spectral_position (the serial subdivision's)
 //     and the distributed build's vertices sit at the GLL nodes (its global coordinates made
 //     from the local ones: equal), and SpectralLayoutOf groups the sub-cells back on every rank.
+//     Without interfaces (box_lattice.hpp: every rank builds its part): 2D and 3D boxes of two
+//     regions beside a void at degree 1, and at p = 3, 5, 6, 7 (2D) and 3 (3D). The element
+//     table (SpectralLayoutOf) and the cells' vertices (CellVerticesOf) a builder hands to the
+//     mesh must be those its topology gives.
+#include "slipwave/mesh/cell_vertices.hpp"
 #include "slipwave/mesh/point_centroid.hpp"
 #include "slipwave/mesh/spectral_layout.hpp"
 #include "slipwave/meshing/box_refinement.hpp"
@@ -71,6 +76,8 @@ struct Signature {
   std::vector<Rows> faces; // per label of `face_labels`
   double            coordinates_gap = 0; // |global coordinates scattered to local - local coordinates|
   PetscInt          elements = 0;        // SpectralLayoutOf's elements over all ranks (p > 1)
+  PetscInt          layout_found = 1;    // SpectralLayoutOf's table is SpectralLayoutBuild's, on every rank
+  PetscInt          vertices_found = 1;  // CellVerticesOf's table is the closures', on every rank
 };
 
 PetscErrorCode signatureOf(DM dm, const slipwave::meshing::MeshDescription &desc, const std::vector<std::string> &face_labels, Signature *sig) {
@@ -97,6 +104,27 @@ PetscErrorCode signatureOf(DM dm, const slipwave::meshing::MeshDescription &desc
   PetscCall(slipwave::mesh::SpectralLayoutOf(dm, &layout));
   sig->elements = layout ? layout->nelem : 0;
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &sig->elements, 1, MPIU_INT, MPI_SUM, comm));
+  // A builder may hand its own table to the mesh (box_lattice.hpp): it must be the one the
+  // topology gives.
+  if (layout) {
+    slipwave::mesh::SpectralLayout found;
+    PetscCall(slipwave::mesh::SpectralLayoutBuild(dm, layout->degree, &found));
+    sig->layout_found = found.nelem == layout->nelem && found.element_nodes == layout->element_nodes && found.element_cells == layout->element_cells &&
+                        found.element_region == layout->element_region && found.element_id == layout->element_id && found.cell_element == layout->cell_element &&
+                        found.cell_position == layout->cell_position;
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &sig->layout_found, 1, MPIU_INT, MPI_MIN, comm));
+  const slipwave::mesh::CellVertices *table;
+  PetscCall(slipwave::mesh::CellVerticesOf(dm, &table));
+  for (PetscInt c = c_start; c < c_end; ++c) {
+    PetscInt *closure = nullptr, nclosure, n = 0;
+    PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &nclosure, &closure));
+    for (PetscInt i = 0; i < nclosure; ++i)
+      if (closure[2 * i] >= v_start && closure[2 * i] < v_end) sig->vertices_found = sig->vertices_found && n < table->per_cell && table->of(c - c_start)[n++] == closure[2 * i];
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &nclosure, &closure));
+    sig->vertices_found = sig->vertices_found && n == table->per_cell;
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &sig->vertices_found, 1, MPIU_INT, MPI_MIN, comm));
   Vec global, local, scattered;
   DM  cdm;
   PetscCall(DMGetCoordinateDM(dm, &cdm));
@@ -194,13 +222,16 @@ PetscErrorCode compareBuilds(const std::string &tag, const char *options) {
   if (rank == 0) {
     unit::check(!sig[0].cells.empty() && sameRows(sig[0].cells, sig[1].cells),
                 tag + ": same cells (" + std::to_string(sig[0].cells.size()) + "): serial number, region, centroid");
-    unit::check(!sig[0].pairs.empty() && sameRows(sig[0].pairs, sig[1].pairs),
-                tag + ": same split vertices (" + std::to_string(sig[0].pairs.size()) + "): pair id, side, position");
+    if (std::string(options).find("-interfaces") != std::string::npos)
+      unit::check(!sig[0].pairs.empty() && sameRows(sig[0].pairs, sig[1].pairs),
+                  tag + ": same split vertices (" + std::to_string(sig[0].pairs.size()) + "): pair id, side, position");
     bool faces_same = sig[0].faces.size() == sig[1].faces.size();
     for (size_t l = 0; l < sig[0].faces.size() && faces_same; ++l) faces_same = sameRows(sig[0].faces[l], sig[1].faces[l]);
     unit::check(faces_same, tag + ": same boundary and interface faces (" + std::to_string(sig[0].faces.size()) + " labels), and no other points under them");
     unit::check(sig[1].coordinates_gap == 0, tag + ": global and local coordinates agree (gap " + std::to_string(sig[1].coordinates_gap) + ")");
     unit::check(sig[0].elements == sig[1].elements, tag + ": the layout groups " + std::to_string(sig[1].elements) + " elements, as serially (" + std::to_string(sig[0].elements) + ")");
+    unit::check(sig[0].layout_found && sig[1].layout_found, tag + ": the layout on the mesh is the one its topology gives (SpectralLayoutBuild)");
+    unit::check(sig[0].vertices_found && sig[1].vertices_found, tag + ": the cells' vertices on the mesh are those of their closures (CellVerticesOf)");
   }
   PetscFunctionReturn(0);
 }
@@ -218,6 +249,15 @@ PetscErrorCode Run(bool) {
   PetscCall(compareBuilds("3D block on the surface, p = 2", "-element_degree 2 -mesh_dim 3 -mesh_box_faces 8,8,4 -mesh_box_upper 16,16,8 -regions soil,air,block "
                                                             "-region_air_box 0,16,0,16,4,8 -region_block_box 4,12,4,12,4,8 -void_regions air -interfaces base "
                                                             "-interface_base_regions soil,block"));
+  // Without interfaces every rank builds its part (box_lattice.hpp), at every degree: two
+  // regions and a void, the void's and the rock's bounds on the coarse grid (2D: 4 m, 3D: 2 m).
+  const std::string plain2d = "-mesh_dim 2 -mesh_box_upper 32,16 -regions soil,air,rock -region_air_box 0,8,12,16 -region_rock_box 0,32,0,4 -void_regions air";
+  const std::string plain3d = "-mesh_dim 3 -mesh_box_upper 8,8,8 -regions soil,air,rock -region_air_box 0,4,0,4,4,8 -region_rock_box 0,8,0,8,0,2 -void_regions air";
+  PetscCall(compareBuilds("2D layers beside a void, built by parts", (plain2d + " -mesh_box_faces 32,16").c_str()));
+  PetscCall(compareBuilds("3D layers beside a void, built by parts", (plain3d + " -mesh_box_faces 8,8,8").c_str()));
+  for (int p : {3, 5, 6, 7})
+    PetscCall(compareBuilds("2D layers beside a void, built by parts, p = " + std::to_string(p), (plain2d + " -mesh_box_faces 8,4 -element_degree " + std::to_string(p)).c_str()));
+  PetscCall(compareBuilds("3D layers beside a void, built by parts, p = 3", (plain3d + " -mesh_box_faces 4,4,4 -element_degree 3").c_str()));
   PetscFunctionReturn(0);
 }
 

@@ -12,7 +12,14 @@ extern PetscLogEvent event_energy;      // SW:Energy:Ledger
 extern PetscLogEvent event_stations;    // SW:IO:Stations
 extern PetscLogEvent event_output;      // SW:IO:Fields
 extern PetscLogEvent event_guard;       // SW:Guard:Check     divergence detection
-extern PetscLogStage stage_setup, stage_geostatic, stage_solve;
+// Set-up (stage Setup): where a small run's fixed time goes.
+extern PetscLogEvent event_mesh;        // SW:Mesh:Build      the distributed, labelled mesh (meshing/mesh_builder.hpp)
+extern PetscLogEvent event_bulk_setup;  // SW:Bulk:Setup      element tables, matrices, spectral layout
+extern PetscLogEvent event_boundary_setup; // SW:Boundary:Setup boundary faces, dashpots, input loads
+extern PetscLogEvent event_output_open; // SW:IO:Open         output folder, run_info.json, first frame
+// Stages: set-up, the geostatic stage, the time loop (TSSolve), the final output (the series
+// flushed, the closing report).
+extern PetscLogStage stage_setup, stage_geostatic, stage_solve, stage_output;
 
 PetscErrorCode LogEventsRegister();
 

@@ -38,8 +38,7 @@ struct PrescribedVelocity {
 struct BoundaryConditions {
   std::vector<std::string>  names;
   std::vector<BoundaryType> types;
-  DM                        block_dm = nullptr;       // node layout with dim*dim dofs
-  Vec                       absorbing_blocks = nullptr; // Lysmer-Kuhlemeyer C per node (not divided by mass)
+  Vec                       absorbing_blocks = nullptr; // Lysmer-Kuhlemeyer C per node (not divided by mass), dim x dim per owned node in the displacement's node order
   Vec                       constant_force = nullptr;   // gravity + constant tractions and loads [N]
   std::vector<TimedLoad>    timed_loads;                // loads with a history (dynamic stage only)
   std::vector<std::string>  load_notes;                 // for the run report: the loads and per-component sides

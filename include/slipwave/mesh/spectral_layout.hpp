@@ -51,4 +51,8 @@ PetscErrorCode SpectralLayoutBuild(DM dm, PetscInt degree, SpectralLayout *layou
 // sub-cells' positions (p^dim of them per element, all on this rank).
 PetscErrorCode SpectralLayoutOf(DM dm, const SpectralLayout **layout);
 
+// Keeps `layout` on dm for SpectralLayoutOf: a mesh builder that made the elements knows them
+// (meshing/box_lattice.hpp), and gives the table SpectralLayoutBuild would find.
+PetscErrorCode SpectralLayoutAttach(DM dm, SpectralLayout &&layout);
+
 } // namespace slipwave::mesh

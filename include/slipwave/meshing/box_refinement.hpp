@@ -1,4 +1,5 @@
-// Box meshes built distributed (issue 11, parallel set-up): the requested box with 2^levels
+// Box meshes with interfaces built distributed (issue 11, parallel set-up; a box without
+// interfaces is built by parts, box_lattice.hpp): the requested box with 2^levels
 // fewer cells per axis is built, labelled, split and partitioned serially as before (a small
 // mesh), then refined `levels` times by DMPlex's regular refinement on the distributed mesh,
 // so no rank ever holds the whole fine mesh and the fine partition follows METIS' coarse one.
@@ -19,7 +20,8 @@
 // sub-cell has the spectral_position, serial_cell (e p^dim + position) and element frame (from
 // its cone: refinement keeps the parent's, spectral_layout.hpp), and the interface pairs have
 // the ids, of the serial build, which subdivides the whole box on rank 0
-// (spectral_subdivision.hpp). Other degrees are no powers of 2 and are built serially.
+// (spectral_subdivision.hpp). Other degrees are no powers of 2: with interfaces they are built
+// serially.
 #pragma once
 #include <petscdmplex.h>
 

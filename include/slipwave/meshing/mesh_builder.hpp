@@ -1,6 +1,7 @@
 // Builds the computational mesh: a built-in box (quads/hexes) whose regions are chosen by
 // axis-aligned boxes, or a Gmsh file whose physical group names are the region and boundary
-// names. The mesh is created and labelled serially, then distributed (labels survive).
+// names. The mesh is created and labelled serially, then distributed (labels survive), or,
+// for a box without interfaces, built by every rank for its part (box_lattice.hpp).
 // Labels on the result:
 //   "region"          (kRegionLabel, mesh/labels.hpp) every cell, value = index of its region in MeshDescription::regions
 //   <boundary name>   faces (height 1), value 1: box sides left/right/bottom/top(/front/back),
@@ -9,8 +10,8 @@
 // At -element_degree p > 1 the cells are spectral elements subdivided into GLL sub-cells
 // (spectral_subdivision.hpp; SpectralLayoutOf groups them back), partitioned whole, and
 // serial_cell numbers the sub-cells (element e's sub-cells are e p^dim .. e p^dim + p^dim - 1);
-// boxes at p = 2, 4, 8 get the same sub-cells by refinement on the distributed mesh
-// (box_refinement.hpp).
+// boxes get the same sub-cells from every rank's part of the lattice (box_lattice.hpp) or, with
+// interfaces at p = 2, 4, 8, by refinement on the distributed mesh (box_refinement.hpp).
 // -mesh_refine k refines a Gmsh file's mesh k times (mesh_refinement.hpp): on the distributed
 // mesh at degree 1 unless -mesh_build serial (or its interfaces do not allow it), else on
 // rank 0 after the split (degree 1) or before the subdivision (degree > 1). Either way the

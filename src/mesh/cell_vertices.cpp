@@ -1,0 +1,57 @@
+#include "slipwave/mesh/cell_vertices.hpp"
+
+#include <utility>
+
+namespace slipwave::mesh {
+namespace {
+
+constexpr char kTableKey[] = "slipwave_cell_vertices";
+
+PetscErrorCode destroyTable(void *ctx) {
+  PetscFunctionBeginUser;
+  delete static_cast<CellVertices *>(ctx);
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode CellVerticesAttach(DM dm, CellVertices &&table) {
+  PetscContainer container;
+  PetscFunctionBeginUser;
+  PetscCall(PetscContainerCreate(PETSC_COMM_SELF, &container));
+  PetscCall(PetscContainerSetPointer(container, new CellVertices(std::move(table))));
+  PetscCall(PetscContainerSetUserDestroy(container, destroyTable));
+  PetscCall(PetscObjectCompose((PetscObject)dm, kTableKey, (PetscObject)container));
+  PetscCall(PetscContainerDestroy(&container));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CellVerticesOf(DM dm, const CellVertices **table) {
+  PetscContainer container = nullptr;
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectQuery((PetscObject)dm, kTableKey, (PetscObject *)&container));
+  if (!container) {
+    CellVertices found;
+    PetscInt     c_start, c_end, v_start, v_end;
+    PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
+    PetscCall(DMPlexGetDepthStratum(dm, 0, &v_start, &v_end));
+    for (PetscInt c = c_start; c < c_end; ++c) {
+      PetscInt *closure = nullptr, nclosure, n = 0;
+      PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &nclosure, &closure));
+      for (PetscInt i = 0; i < nclosure; ++i)
+        if (closure[2 * i] >= v_start && closure[2 * i] < v_end) found.vertex.push_back(closure[2 * i]), ++n;
+      PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &nclosure, &closure));
+      if (c == c_start) found.per_cell = n;
+      PetscCheck(n == found.per_cell, PETSC_COMM_SELF, PETSC_ERR_SUP, "CellVerticesOf: cell %" PetscInt_FMT " has %" PetscInt_FMT " vertices, cell %" PetscInt_FMT " %" PetscInt_FMT "; one cell type per mesh", c, n, c_start,
+                 found.per_cell);
+    }
+    PetscCall(CellVerticesAttach(dm, std::move(found)));
+    PetscCall(PetscObjectQuery((PetscObject)dm, kTableKey, (PetscObject *)&container));
+  }
+  void *ctx;
+  PetscCall(PetscContainerGetPointer(container, &ctx));
+  *table = static_cast<const CellVertices *>(ctx);
+  PetscFunctionReturn(0);
+}
+
+} // namespace slipwave::mesh
