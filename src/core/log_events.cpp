@@ -2,7 +2,7 @@
 
 namespace slipwave::core {
 
-PetscLogEvent event_bulk_force, event_boundary, event_interface, event_energy, event_stations, event_output, event_guard;
+PetscLogEvent event_bulk_force, event_boundary, event_interface, event_energy, event_stations, event_output, event_guard, event_fourth_order;
 PetscLogStage stage_setup, stage_geostatic, stage_solve;
 
 PetscErrorCode LogEventsRegister() {
@@ -16,6 +16,7 @@ PetscErrorCode LogEventsRegister() {
   PetscCall(PetscLogEventRegister("SW:IO:Stations", id, &event_stations));
   PetscCall(PetscLogEventRegister("SW:IO:Fields", id, &event_output));
   PetscCall(PetscLogEventRegister("SW:Guard:Check", id, &event_guard));
+  PetscCall(PetscLogEventRegister("SW:Time:Order4", id, &event_fourth_order));
   PetscCall(PetscLogStageRegister("Setup", &stage_setup));
   PetscCall(PetscLogStageRegister("Geostatic", &stage_geostatic));
   PetscCall(PetscLogStageRegister("Solve", &stage_solve));

@@ -163,6 +163,15 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   // spectral elements do not have.
   PetscCheck(!any_saturated || m->mesh.degree == 1, comm, PETSC_ERR_USER_INPUT,
              "-material_<r>_saturated with -element_degree = %" PetscInt_FMT "; allowed: -element_degree 1 for saturated regions", m->mesh.degree);
+  {
+    // The pore pressure's coupling and diffusion step by central differences, outside the
+    // fourth-order correction (time/central_difference.hpp).
+    PetscInt  order = 2;
+    PetscBool set;
+    PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-ts_cd_order", &order, &set));
+    PetscCheck(!any_saturated || !set || order == 2, comm, PETSC_ERR_USER_INPUT,
+               "-ts_cd_order %" PetscInt_FMT " with a saturated region (-material_<r>_saturated): not supported; allowed: -ts_cd_order 2", order);
+  }
   for (const auto &info : m->materials)
     PetscCheck(info.model != medium::MaterialModel::Rigid || info.vp_undrained == 0, comm, PETSC_ERR_USER_INPUT,
                "-material_%s_saturated with -material_%s_model rigid; allowed: a dry rigid region (the pore fluid needs a deforming skeleton)", info.region.c_str(),
@@ -266,7 +275,8 @@ PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
   for (auto &iface : m->interfaces) PetscCall(iface.Destroy());
   PetscCall(VecDestroy(&m->f_interface));
   PetscCall(VecDestroy(&m->f_contact_damping));
-  for (Vec *v : {&m->mass, &m->inv_mass, &m->damping_blocks, &m->u_local, &m->f_local, &m->f_internal, &m->f_external, &m->f_input, &m->f_stiffness_damping, &m->f_anelastic, &m->f_hysteretic})
+  for (Vec *v : {&m->mass, &m->inv_mass, &m->damping_blocks, &m->u_local, &m->f_local, &m->f_internal, &m->f_external, &m->f_input, &m->f_stiffness_damping, &m->f_anelastic, &m->f_hysteretic,
+                 &m->correction_force, &m->load_curvature, &m->correction_local, &m->correction_f_local})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&m->dm));
   PetscFunctionReturn(0);
@@ -409,12 +419,65 @@ PetscErrorCode ElastodynamicsDrainOpenGaps(Elastodynamics *m) {
 
 namespace {
 PetscErrorCode commitHook(void *ctx) { return ElastodynamicsCommit(static_cast<Elastodynamics *>(ctx)); }
+PetscErrorCode correctionHook(void *ctx, PetscReal t, PetscReal h, Vec a_star, Vec c) {
+  return ElastodynamicsFourthOrderCorrection(static_cast<Elastodynamics *>(ctx), t, h, a_star, c);
+}
+
+// Global f = K x through the local vectors x_local, f_local (ghost exchange included).
+PetscErrorCode stiffnessTimes(Elastodynamics *m, Vec x, Vec f, Vec x_local, Vec f_local) {
+  const PetscScalar *xl;
+  PetscScalar       *fl;
+  PetscFunctionBeginUser;
+  PetscCall(DMGlobalToLocal(m->dm, x, INSERT_VALUES, x_local));
+  PetscCall(VecZeroEntries(f_local));
+  PetscCall(VecGetArrayRead(x_local, &xl));
+  PetscCall(VecGetArray(f_local, &fl));
+  m->bulk.addStiffnessTimes(xl, fl);
+  PetscCall(VecRestoreArray(f_local, &fl));
+  PetscCall(VecRestoreArrayRead(x_local, &xl));
+  PetscCall(VecZeroEntries(f));
+  PetscCall(DMLocalToGlobal(m->dm, f_local, ADD_VALUES, f));
+  PetscFunctionReturn(0);
+}
+
+// out = f(t+h) - 2 f(t) + f(t-h) of the loads that are known functions of time: the timed
+// loads and the incident wave's force (as the RHS forms them, with the input on).
+PetscErrorCode loadSecondDifference(Elastodynamics *m, PetscReal t, PetscReal h, Vec out) {
+  PetscFunctionBeginUser;
+  PetscCall(VecZeroEntries(out));
+  if (!m->input_enabled) PetscFunctionReturn(0);
+  const auto second = [t, h](const input::TimeFunction &f) { return f.velocity(t + h) - 2 * f.velocity(t) + f.velocity(t - h); };
+  for (const input::TimedLoad &l : m->bc.timed_loads) PetscCall(VecAXPY(out, second(l.history), l.pattern));
+  if (m->bc.input.active() && m->bc.input_wave != input::InputWave::None) PetscCall(VecAXPY(out, second(m->bc.input), m->bc.input_force));
+  PetscFunctionReturn(0);
+}
 } // namespace
+
+PetscErrorCode ElastodynamicsFourthOrderCorrection(Elastodynamics *m, PetscReal t, PetscReal h, Vec a_star, Vec c) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(core::event_fourth_order, 0, 0, 0, 0));
+  if (!m->correction_force) {
+    PetscCall(VecDuplicate(m->mass, &m->correction_force));
+    PetscCall(VecDuplicate(m->mass, &m->load_curvature));
+    PetscCall(VecDuplicate(m->u_local, &m->correction_local));
+    PetscCall(VecDuplicate(m->u_local, &m->correction_f_local));
+  }
+  PetscCall(stiffnessTimes(m, a_star, m->correction_force, m->correction_local, m->correction_f_local));
+  PetscCall(loadSecondDifference(m, t, h, m->load_curvature));
+  // c = (free 1/m) (-(h^2/12) K a* + (1/12) second difference)
+  PetscCall(VecAXPBY(m->load_curvature, -h * h / 12, 1.0 / 12, m->correction_force));
+  PetscCall(VecPointwiseMult(c, m->nodal.free_inv_mass, m->load_curvature));
+  PetscCall(input::LateralTieApply(m->tie, c));
+  if (m->rigid) PetscCall(RigidBodiesProject(m->rigid, m->mass, c));
+  PetscCall(PetscLogEventEnd(core::event_fourth_order, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode ElastodynamicsSetUpTS(Elastodynamics *m, TS ts) {
   PetscFunctionBeginUser;
   PetscCall(TSSetRHSFunction(ts, nullptr, ElastodynamicsRHS, m));
   PetscCall(time::CentralDifferenceSetCommit(ts, commitHook, m));
+  PetscCall(time::CentralDifferenceSetCorrection(ts, correctionHook, m));
   PetscCall(time::CentralDifferenceSetNodalDamping(ts, m->dim, m->damping_blocks));
   PetscFunctionReturn(0);
 }
@@ -430,20 +493,6 @@ PetscErrorCode ElastodynamicsSetInitialStress(Elastodynamics *m, Vec u) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ElastodynamicsStiffnessTimes(Elastodynamics *m, Vec x, Vec f) {
-  const PetscScalar *ul;
-  PetscScalar       *fl;
-  PetscFunctionBeginUser;
-  PetscCall(DMGlobalToLocal(m->dm, x, INSERT_VALUES, m->u_local));
-  PetscCall(VecZeroEntries(m->f_local));
-  PetscCall(VecGetArrayRead(m->u_local, &ul));
-  PetscCall(VecGetArray(m->f_local, &fl));
-  m->bulk.addStiffnessTimes(ul, fl);
-  PetscCall(VecRestoreArray(m->f_local, &fl));
-  PetscCall(VecRestoreArrayRead(m->u_local, &ul));
-  PetscCall(VecZeroEntries(f));
-  PetscCall(DMLocalToGlobal(m->dm, m->f_local, ADD_VALUES, f));
-  PetscFunctionReturn(0);
-}
+PetscErrorCode ElastodynamicsStiffnessTimes(Elastodynamics *m, Vec x, Vec f) { return stiffnessTimes(m, x, f, m->u_local, m->f_local); }
 
 } // namespace slipwave::problem

@@ -12,6 +12,7 @@ extern PetscLogEvent event_energy;      // SW:Energy:Ledger
 extern PetscLogEvent event_stations;    // SW:IO:Stations
 extern PetscLogEvent event_output;      // SW:IO:Fields
 extern PetscLogEvent event_guard;       // SW:Guard:Check     divergence detection
+extern PetscLogEvent event_fourth_order; // SW:Time:Order4    the fourth-order correction: K a* (its second bulk-force pass), the loads' second difference
 extern PetscLogStage stage_setup, stage_geostatic, stage_solve;
 
 PetscErrorCode LogEventsRegister();

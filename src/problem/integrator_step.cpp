@@ -1,0 +1,84 @@
+#include "slipwave/problem/integrator_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "slipwave/numerics/spectral_dispersion.hpp"
+#include "slipwave/physics/time_dispersion.hpp"
+#include "slipwave/problem/scene_frequency.hpp"
+#include "slipwave/time/central_difference.hpp"
+
+namespace slipwave::problem {
+namespace {
+
+// Bulk-force passes per step of order 4 against order 2 (integrator_step.hpp).
+constexpr double kFourthOrderCost = 2.0;
+
+// The step of `order`: the safety fraction of its limit, shortened to the accuracy step.
+struct OrderStep {
+  double limit, accuracy, dt;
+};
+OrderStep orderStep(int order, const StableStep &step, double safety, double frequency, double space_error) {
+  OrderStep s;
+  s.limit    = order == 4 ? step.dt_limit_fourth_order : step.dt_limit;
+  s.accuracy = space_error > 0 ? physics::integratorStepForError(order, 2 * M_PI * frequency, space_error) : 1e300;
+  s.dt       = std::min(safety * s.limit, s.accuracy);
+  return s;
+}
+
+} // namespace
+
+PetscErrorCode IntegratorStepChoose(const Elastodynamics &m, const StableStep &step, const TimeStepOptions &options, TS ts, IntegratorStep *c) {
+  PetscInt  order;
+  PetscBool given;
+  PetscFunctionBeginUser;
+  PetscCall(time::CentralDifferenceGetOrder(ts, &order, &given));
+  c->order_given = given;
+  c->degree      = m.bulk.degree();
+  c->safety      = TimeStepSafety(options, !m.interfaces.empty());
+  // The accuracy step: at p > 1, with a scene frequency, unless -time_step_safety sets the step.
+  const SceneFrequency top = SceneTopFrequency(m);
+  if (m.bulk.degree() > 1 && top.hz > 0 && !options.safety_set) {
+    for (size_t r = 0; r < m.materials.size(); ++r) {
+      if (m.materials[r].model == medium::MaterialModel::Rigid) continue; // carries no waves
+      const double n = RegionNodesPerWavelength(m, (PetscInt)r, top.hz);
+      if (c->region.empty() || n < c->nodes_per_wavelength) c->region = m.materials[r].region, c->nodes_per_wavelength = n;
+    }
+    if (!c->region.empty()) {
+      c->frequency        = top.hz;
+      c->frequency_source = top.source;
+      c->space_error      = numerics::spectralDispersionBound((int)m.bulk.degree(), c->nodes_per_wavelength);
+    }
+  }
+  const OrderStep second = orderStep(2, step, c->safety, c->frequency, c->space_error);
+  const OrderStep fourth = orderStep(4, step, c->safety, c->frequency, c->space_error);
+  if (!given) order = fourth.dt > kFourthOrderCost * second.dt ? 4 : 2;
+  PetscCall(time::CentralDifferenceSetOrder(ts, order));
+  const OrderStep &chosen = order == 4 ? fourth : second;
+  c->order       = order;
+  c->dt_limit    = chosen.limit;
+  c->governing   = order == 4 ? step.governing_fourth_order : step.governing;
+  c->dt_accuracy = chosen.accuracy;
+  c->dt          = chosen.dt;
+  c->dt_other    = order == 4 ? second.dt : fourth.dt;
+  PetscFunctionReturn(0);
+}
+
+std::string IntegratorStepDescribe(const IntegratorStep &c) {
+  const char  *name = c.order == 4 ? "fourth-order modified equation (-ts_cd_order 4)" : "central difference (-ts_cd_order 2)";
+  const double dt4 = c.order == 4 ? c.dt : c.dt_other, dt2 = c.order == 4 ? c.dt_other : c.dt;
+  char         why[200], limit[400];
+  if (c.order_given) std::snprintf(why, sizeof why, "as asked");
+  else
+    std::snprintf(why, sizeof why, "the default: the order-4 step %.4e s is %s %g x the order-2 step %.4e s", dt4, c.order == 4 ? "more than" : "not more than",
+                  kFourthOrderCost, dt2);
+  if (c.dt_accuracy >= 1e300) std::snprintf(limit, sizeof limit, "stability (%.2f of the limit)", c.safety);
+  else
+    std::snprintf(limit, sizeof limit, "%s: the time error at most the space error %.2e of degree %" PetscInt_FMT " at %.3g GLL nodes per S wavelength (region %s, %.2f Hz of %s)",
+                  c.accuracyLimits() ? "accuracy" : "stability", c.space_error, c.degree, c.nodes_per_wavelength, c.region.c_str(), c.frequency,
+                  c.frequency_source.c_str());
+  return std::string("time integrator: ") + name + ", " + why + "; step limited by " + limit;
+}
+
+} // namespace slipwave::problem
