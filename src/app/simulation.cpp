@@ -221,14 +221,16 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   PetscCall(TSGetTimeStep(ts, &h));
   const bool last = t >= r->max_time * (1 - 1e-12);
   // Evaluated at every output time too, so each frame has its energy row.
-  const bool evaluate = last || step % r->opt.energy_interval == 0 || r->frames.Due(step, t, last);
+  const bool frame    = r->frames.Due(step, t, last);
+  const bool evaluate = last || step % r->opt.energy_interval == 0 || frame;
   PetscCall(problem::EnergyLedgerUpdate(&r->model, ts, h, evaluate, &r->ledger));
   // The ledger and the guard read the integrator's own v and a; what is reported (stations,
   // answers, frames) is the velocity and acceleration of the motion (at order 2 the same).
   PetscCall(TS2GetSolution(ts, &u, &v));
   PetscCall(time::CentralDifferenceGetAcceleration(ts, &a));
   if (r->ledger.evaluated) PetscCall(DivergenceGuard(r->model, r->ledger, r->opt.energy_growth_limit, r->step, h, step, t, u, v, a));
-  PetscCall(time::CentralDifferenceGetReportedState(ts, &v, &a));
+  // Formed only when something reads them (at order 4 a pass over the dofs).
+  if (r->answers.active() || r->stations.due(step) || frame) PetscCall(time::CentralDifferenceGetReportedState(ts, &v, &a));
   if (r->model.pore) PetscCall(porous::PorePressureTotal(r->model.pore)); // for the stations and the frames
   if (r->model.rigid) PetscCall(problem::RigidBodiesMotion(r->model.rigid, r->model.mass, u, &r->motion));
   // Every step (the interfaces' counts of the progress line too).

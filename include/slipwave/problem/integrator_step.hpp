@@ -4,7 +4,8 @@
 // space error: both are relative phase-speed errors at f, the space error that of degree p at
 // the GLL nodes per S wavelength of the least-resolved region (numerics/spectral_dispersion,
 // the worst over the wavelengths it carries), the time error the integrator's
-// (physics/time_dispersion). The step is then the shorter of that accuracy step and the
+// (physics/time_dispersion); a floor keeps it from asking more than 1e-4 rad of phase at
+// that frequency over the whole run, where a fine mesh's space error would. The step is then the shorter of that accuracy step and the
 // safety fraction of the order's stable limit, and the report says which limits it.
 // The default order: 4 where its step is more than twice central differences' (two bulk-force
 // passes per step against one; the rest of a step, loads, ledger, output, is not counted,
@@ -34,6 +35,7 @@ struct IntegratorStep {
   // region and its GLL nodes per S wavelength there, the space error (relative phase speed).
   PetscInt    degree    = 1;
   double      frequency = 0, nodes_per_wavelength = 0, space_error = 0;
+  double      time_error = 0; // what the accuracy step allows: the space error, or the run's floor (integrator_step.cpp)
   std::string frequency_source, region;
   // The other order's step [s] (the default order's comparison, for the report).
   double      dt_other = 0;
