@@ -63,10 +63,15 @@ PetscErrorCode IntegratorStepChoose(const Elastodynamics &m, const StableStep &s
   }
   const OrderStep second = orderStep(2, step, c->safety, c->frequency, c->time_error);
   const OrderStep fourth = orderStep(4, step, c->safety, c->frequency, c->time_error);
-  if (!given) order = fourth.dt > kFourthOrderCost * second.dt ? 4 : 2;
+  // With -ts_dt the user's step is taken whatever the order: the comparison of the orders'
+  // steps does not apply, and central differences cost half as much per step.
+  PetscBool user_dt;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-ts_dt", &user_dt));
+  if (!given) order = !user_dt && fourth.dt > kFourthOrderCost * second.dt ? 4 : 2;
   PetscCall(time::CentralDifferenceSetOrder(ts, order));
   const OrderStep &chosen = order == 4 ? fourth : second;
   c->order       = order;
+  c->user_dt     = user_dt;
   c->dt_limit    = chosen.limit;
   c->governing   = order == 4 ? step.governing_fourth_order : step.governing;
   c->dt_accuracy = chosen.accuracy;
@@ -80,6 +85,7 @@ std::string IntegratorStepDescribe(const IntegratorStep &c) {
   const double dt4 = c.order == 4 ? c.dt : c.dt_other, dt2 = c.order == 4 ? c.dt_other : c.dt;
   char         why[200], limit[640];
   if (c.order_given) std::snprintf(why, sizeof why, "as asked");
+  else if (c.user_dt) std::snprintf(why, sizeof why, "the default with -ts_dt");
   else
     std::snprintf(why, sizeof why, "the default: the order-4 step %.4e s is %s %g x the order-2 step %.4e s", dt4, c.order == 4 ? "more than" : "not more than",
                   kFourthOrderCost, dt2);

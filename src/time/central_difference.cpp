@@ -148,41 +148,44 @@ PetscErrorCode correct(PetscReal h, Vec v_half, Vec a_star, Vec v) {
   PetscFunctionReturn(0);
 }
 
-// out = a* - D w at the damped nodes, w = v + s a* (a* elsewhere): the acceleration with the
-// nodal damping at the velocity the centred solve will reach, to O(h^2) (s = h/2 from
-// v_{n+1/2}; s = 0 from the exact v_0).
-PetscErrorCode dampedAcceleration(CentralDifference *cd, PetscReal s, Vec v, Vec a_star, Vec out) {
+// out = a* - D w at the damped nodes (a* elsewhere): the acceleration with the nodal damping
+// at the velocity w last known, v_{n+1/2} within a step, v_0 at the start.
+PetscErrorCode dampedAcceleration(CentralDifference *cd, Vec w, Vec a_star, Vec out) {
   PetscFunctionBeginUser;
   PetscCall(VecCopy(a_star, out));
   if (!cd->damping) PetscFunctionReturn(0);
   const PetscInt     bs = cd->damping_bs;
-  const PetscScalar *vv, *as, *dd;
+  const PetscScalar *ww, *dd;
   PetscScalar       *oo;
-  PetscCall(VecGetArrayRead(v, &vv));
-  PetscCall(VecGetArrayRead(a_star, &as));
+  PetscCall(VecGetArrayRead(w, &ww));
   PetscCall(VecGetArrayRead(cd->damping, &dd));
   PetscCall(VecGetArray(out, &oo));
   for (const std::vector<PetscInt> *nodes : {&cd->diagonal_nodes, &cd->coupled_nodes})
     for (PetscInt node : *nodes)
       for (PetscInt i = 0; i < bs; ++i)
-        for (PetscInt j = 0; j < bs; ++j) oo[node * bs + i] -= dd[node * bs * bs + i * bs + j] * (vv[node * bs + j] + s * as[node * bs + j]);
+        for (PetscInt j = 0; j < bs; ++j) oo[node * bs + i] -= dd[node * bs * bs + i * bs + j] * ww[node * bs + j];
   PetscCall(VecRestoreArray(out, &oo));
   PetscCall(VecRestoreArrayRead(cd->damping, &dd));
-  PetscCall(VecRestoreArrayRead(a_star, &as));
-  PetscCall(VecRestoreArrayRead(v, &vv));
+  PetscCall(VecRestoreArrayRead(w, &ww));
   PetscFunctionReturn(0);
 }
 
-// Order 4: a* += c, c from the model's hook applied to a* - D w (dampedAcceleration: the
-// correction is that of the whole acceleration, or at an absorbing side it would act on a*
-// alone, an O(1) error of the dashpot force where h^2 K / 12 is O(1)); kept for the ledger.
-// Order 2: nothing.
-PetscErrorCode addCorrection(TS ts, PetscReal t, PetscReal h, PetscReal s, Vec v, Vec a_star) {
+// Order 4: a* += c, c from the model's hook applied to a* - D w (dampedAcceleration), kept for
+// the ledger; order 2: nothing. The hook corrects the whole acceleration, nodal damping
+// included: at an absorbing side the dashpot force is as large as the elastic one, and a
+// correction of a* alone, which misses -(h^2/12) M^-1 K (-D v) there while h^2 K / 12 is
+// O(1), reflected 15 x more than central differences (the SV column at p = 2,
+// tests/cases/sem_column_3d.sh). The damping is taken at v_{n+1/2}, not at the velocity the
+// centred solve reaches: with the half step's prediction v_{n+1/2} + h/2 a* the scheme of a
+// dashpot node (a single mode u'' = -w^2 u - d u') is unstable from w h = 2.3 at h d = 1,
+// with v_{n+1/2} it is stable wherever w h < sqrt(12) (docs/spectral-elements.md). The
+// damping itself stays second order.
+PetscErrorCode addCorrection(TS ts, PetscReal t, PetscReal h, Vec w, Vec a_star) {
   CentralDifference *cd = data(ts);
   PetscFunctionBeginUser;
   if (cd->order != 4) PetscFunctionReturn(0);
   PetscCheck(cd->correction, PetscObjectComm((PetscObject)ts), PETSC_ERR_ORDER, "TS type cd of order 4 needs CentralDifferenceSetCorrection before TSSolve");
-  PetscCall(dampedAcceleration(cd, s, v, a_star, cd->accel_full));
+  PetscCall(dampedAcceleration(cd, w, a_star, cd->accel_full));
   PetscCall(cd->correction(cd->correction_ctx, t, h, cd->accel_full, cd->corr));
   PetscCall(VecAXPY(a_star, 1.0, cd->corr));
   PetscFunctionReturn(0);
@@ -218,7 +221,7 @@ PetscErrorCode stepCentralDifference(TS ts) {
   PetscCall(TSPreStage(ts, ts->ptime));
   PetscCall(predict(h, u, v, cd->accel, cd->v_half));
   PetscCall(TSComputeRHSFunction(ts, ts->ptime + h, u, cd->accel_star));
-  PetscCall(addCorrection(ts, ts->ptime + h, h, 0.5 * h, cd->v_half, cd->accel_star));
+  PetscCall(addCorrection(ts, ts->ptime + h, h, cd->v_half, cd->accel_star));
   PetscCall(correct(h, cd->v_half, cd->accel_star, v));
   // a_{n+1} = a* at undamped nodes: the vectors swap roles instead of copying (at order 4
   // a_n moves down the history, and a_{n-2}'s vector takes the next RHS result).
@@ -380,7 +383,7 @@ PetscErrorCode CentralDifferenceComputeInitialAcceleration(TS ts) {
   // At t_0 the velocity is known exactly, so the damping terms use it directly.
   PetscCall(VecCopy(v, cd->v_half));
   PetscCall(TSComputeRHSFunction(ts, ts->ptime, ts->vec_sol, cd->accel_star));
-  PetscCall(addCorrection(ts, ts->ptime, ts->time_step, 0.0, v, cd->accel_star));
+  PetscCall(addCorrection(ts, ts->ptime, ts->time_step, v, cd->accel_star));
   Vec v_copy;
   PetscCall(VecDuplicate(v, &v_copy));
   PetscCall(VecCopy(v, v_copy));

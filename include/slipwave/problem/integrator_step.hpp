@@ -9,7 +9,8 @@
 // safety fraction of the order's stable limit, and the report says which limits it.
 // The default order: 4 where its step is more than twice central differences' (two bulk-force
 // passes per step against one; the rest of a step, loads, ledger, output, is not counted,
-// which favours central differences), else 2. At p = 1 (the space and time errors of linear
+// which favours central differences), else 2; 2 also with -ts_dt (the step is the user's, so
+// the comparison does not apply) and with -time_step_safety (no accuracy step). At p = 1 (the space and time errors of linear
 // elements partly cancel, and their step is the stable one) and without a scene frequency the
 // accuracy step is not applied, so central differences, whose stable step costs 1/2 pass per
 // unit of 1/omega_max against 2/sqrt(12) = 0.58, are kept.
@@ -26,6 +27,7 @@ namespace slipwave::problem {
 struct IntegratorStep {
   PetscInt    order       = 2;
   bool        order_given = false; // by -ts_cd_order
+  bool        user_dt     = false; // -ts_dt given (the default order is then 2)
   double      safety      = 0;     // fraction of the stable limit
   double      dt_limit    = 0;     // the order's stable limit [s]
   std::string governing;           // what sets it
