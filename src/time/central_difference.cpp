@@ -172,14 +172,16 @@ PetscErrorCode dampedAcceleration(CentralDifference *cd, Vec w, Vec a_star, Vec 
 
 // Order 4: a* += c, c from the model's hook applied to a* - D w (dampedAcceleration), kept for
 // the ledger; order 2: nothing. The hook corrects the whole acceleration, nodal damping
-// included: at an absorbing side the dashpot force is as large as the elastic one, and a
-// correction of a* alone, which misses -(h^2/12) M^-1 K (-D v) there while h^2 K / 12 is
-// O(1), reflected 15 x more than central differences (the SV column at p = 2,
-// tests/cases/sem_column_3d.sh). The damping is taken at v_{n+1/2}, not at the velocity the
-// centred solve reaches: with the half step's prediction v_{n+1/2} + h/2 a* the scheme of a
-// dashpot node (a single mode u'' = -w^2 u - d u') is unstable from w h = 2.3 at h d = 1,
-// with v_{n+1/2} it is stable wherever w h < sqrt(12) (docs/spectral-elements.md). The
-// damping itself stays second order.
+// included: at an absorbing side the dashpot force is as large as the elastic one, and K
+// applied to a* alone sees a spike there (a* lacks -D v on the side's nodes) while
+// h^2 K / 12 is O(1): the SV column at p = 2 then reflected 2.2e-3 of its peak from its
+// absorbing base, 32 x central differences (6.9e-5), and its surface motion erred by 3.6e-3
+// (central differences 8.7e-4); with the damping at v_{n+1/2} 5.5e-5 and 1.2e-4. That share,
+// (h^2/12) M^-1 K D v_{n+1/2}, is explicit and opposes the centred damping on the highest
+// modes of the damped nodes: measured stable up to 1.1 (p = 2) .. 1.3 (p = 8) x the
+// central-difference bound, which is the limit with dashpots (problem/stable_step.hpp). At the
+// predicted velocity v_{n+1/2} + h/2 a* it failed from 0.8 of the bound sqrt(12)/omega even on
+// a single mode. The damping itself stays second order.
 PetscErrorCode addCorrection(TS ts, PetscReal t, PetscReal h, Vec w, Vec a_star) {
   CentralDifference *cd = data(ts);
   PetscFunctionBeginUser;
