@@ -228,7 +228,7 @@ PetscErrorCode monitor(TS ts, PetscInt step, PetscReal t, Vec u, void *ctx) {
   // answers, frames) is the velocity and acceleration of the motion (at order 2 the same).
   PetscCall(TS2GetSolution(ts, &u, &v));
   PetscCall(time::CentralDifferenceGetAcceleration(ts, &a));
-  if (r->ledger.evaluated) PetscCall(DivergenceGuard(r->model, r->ledger, r->opt.energy_growth_limit, r->step, h, step, t, u, v, a));
+  if (r->ledger.evaluated) PetscCall(DivergenceGuard(r->model, r->ledger, r->opt.energy_growth_limit, r->integrator, h, step, t, u, v, a));
   // Formed only when something reads them (at order 4 a pass over the dofs).
   if (r->answers.active() || r->stations.due(step) || frame) PetscCall(time::CentralDifferenceGetReportedState(ts, &v, &a));
   if (r->model.pore) PetscCall(porous::PorePressureTotal(r->model.pore)); // for the stations and the frames

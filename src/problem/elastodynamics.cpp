@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/fem/node_fields.hpp"
@@ -276,7 +278,7 @@ PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
   PetscCall(VecDestroy(&m->f_interface));
   PetscCall(VecDestroy(&m->f_contact_damping));
   for (Vec *v : {&m->mass, &m->inv_mass, &m->damping_blocks, &m->u_local, &m->f_local, &m->f_internal, &m->f_external, &m->f_input, &m->f_stiffness_damping, &m->f_anelastic, &m->f_hysteretic,
-                 &m->correction_force, &m->load_curvature, &m->correction_local, &m->correction_f_local})
+                 &m->correction_force, &m->correction_local, &m->correction_f_local})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&m->dm));
   PetscFunctionReturn(0);
@@ -440,15 +442,36 @@ PetscErrorCode stiffnessTimes(Elastodynamics *m, Vec x, Vec f, Vec x_local, Vec 
   PetscFunctionReturn(0);
 }
 
-// out = f(t+h) - 2 f(t) + f(t-h) of the loads that are known functions of time: the timed
-// loads and the incident wave's force (as the RHS forms them, with the input on).
-PetscErrorCode loadSecondDifference(Elastodynamics *m, PetscReal t, PetscReal h, Vec out) {
+// c = (1/12) (free 1/m) (f(t+h) - 2 f(t) + f(t-h)) added for the loads that are known functions
+// of time (the timed loads and the incident wave's force, as the RHS forms them, with the input
+// on): on the dofs where they can be nonzero when the model lists them
+// (problem/nodal_acceleration.hpp), else on every dof.
+PetscErrorCode addLoadSecondDifference(Elastodynamics *m, PetscReal t, PetscReal h, Vec c) {
   PetscFunctionBeginUser;
-  PetscCall(VecZeroEntries(out));
   if (!m->input_enabled) PetscFunctionReturn(0);
-  const auto second = [t, h](const input::TimeFunction &f) { return f.velocity(t + h) - 2 * f.velocity(t) + f.velocity(t - h); };
-  for (const input::TimedLoad &l : m->bc.timed_loads) PetscCall(VecAXPY(out, second(l.history), l.pattern));
-  if (m->bc.input.active() && m->bc.input_wave != input::InputWave::None) PetscCall(VecAXPY(out, second(m->bc.input), m->bc.input_force));
+  const auto   second = [t, h](const input::TimeFunction &f) { return f.velocity(t + h) - 2 * f.velocity(t) + f.velocity(t - h); };
+  const bool   input  = m->bc.input.active() && m->bc.input_wave != input::InputWave::None;
+  PetscScalar *cc;
+  const PetscScalar *mim;
+  PetscInt     n;
+  PetscCall(VecGetLocalSize(c, &n));
+  PetscCall(VecGetArray(c, &cc));
+  PetscCall(VecGetArrayRead(m->nodal.free_inv_mass, &mim));
+  std::vector<std::pair<double, Vec>> loads;
+  for (const input::TimedLoad &l : m->bc.timed_loads) loads.emplace_back(second(l.history), l.pattern);
+  if (input) loads.emplace_back(second(m->bc.input), m->bc.input_force);
+  for (const auto &[weight, pattern] : loads) {
+    if (weight == 0) continue;
+    const PetscScalar *f;
+    PetscCall(VecGetArrayRead(pattern, &f));
+    if (m->nodal.listed)
+      for (PetscInt k : m->nodal.external_dofs) cc[k] += weight / 12 * mim[k] * f[k];
+    else
+      for (PetscInt k = 0; k < n; ++k) cc[k] += weight / 12 * mim[k] * f[k];
+    PetscCall(VecRestoreArrayRead(pattern, &f));
+  }
+  PetscCall(VecRestoreArrayRead(m->nodal.free_inv_mass, &mim));
+  PetscCall(VecRestoreArray(c, &cc));
   PetscFunctionReturn(0);
 }
 } // namespace
@@ -458,15 +481,14 @@ PetscErrorCode ElastodynamicsFourthOrderCorrection(Elastodynamics *m, PetscReal 
   PetscCall(PetscLogEventBegin(core::event_fourth_order, 0, 0, 0, 0));
   if (!m->correction_force) {
     PetscCall(VecDuplicate(m->mass, &m->correction_force));
-    PetscCall(VecDuplicate(m->mass, &m->load_curvature));
     PetscCall(VecDuplicate(m->u_local, &m->correction_local));
     PetscCall(VecDuplicate(m->u_local, &m->correction_f_local));
   }
   PetscCall(stiffnessTimes(m, a_star, m->correction_force, m->correction_local, m->correction_f_local));
-  PetscCall(loadSecondDifference(m, t, h, m->load_curvature));
-  // c = (free 1/m) (-(h^2/12) K a* + (1/12) second difference)
-  PetscCall(VecAXPBY(m->load_curvature, -h * h / 12, 1.0 / 12, m->correction_force));
-  PetscCall(VecPointwiseMult(c, m->nodal.free_inv_mass, m->load_curvature));
+  // c = -(h^2/12) (free 1/m) K a*, then the loads' share.
+  PetscCall(VecPointwiseMult(c, m->nodal.free_inv_mass, m->correction_force));
+  PetscCall(VecScale(c, -h * h / 12));
+  PetscCall(addLoadSecondDifference(m, t, h, c));
   PetscCall(input::LateralTieApply(m->tie, c));
   if (m->rigid) PetscCall(RigidBodiesProject(m->rigid, m->mass, c));
   PetscCall(PetscLogEventEnd(core::event_fourth_order, 0, 0, 0, 0));

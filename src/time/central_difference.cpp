@@ -22,7 +22,7 @@ struct CentralDifference {
   void     *correction_ctx = nullptr;
   // Order 4 only (null at order 2):
   Vec       corr        = nullptr; // c added at the current time
-  Vec       accel_full  = nullptr; // a* - D v, the acceleration c is computed from
+  std::vector<PetscScalar> damped_saved; // a* at the damped nodes while c is computed from a* - D v
   Vec       accel_prev  = nullptr, accel_prev2 = nullptr; // a_{n-1}, a_{n-2}
   PetscInt  history     = 0;       // how many of them the run has taken (0 .. 2)
   Vec       v_report    = nullptr, a_report = nullptr;
@@ -148,23 +148,32 @@ PetscErrorCode correct(PetscReal h, Vec v_half, Vec a_star, Vec v) {
   PetscFunctionReturn(0);
 }
 
-// out = a* - D w at the damped nodes (a* elsewhere): the acceleration with the nodal damping
-// at the velocity w last known, v_{n+1/2} within a step, v_0 at the start.
-PetscErrorCode dampedAcceleration(CentralDifference *cd, Vec w, Vec a_star, Vec out) {
+// a* -= D w at the damped nodes (the acceleration with the nodal damping at the velocity w last
+// known: v_{n+1/2} within a step, v_0 at the start), their values before kept in `saved`; and
+// back (restore: a* as it was, bit for bit).
+PetscErrorCode dampedAcceleration(CentralDifference *cd, Vec w, Vec a_star, std::vector<PetscScalar> *saved, bool restore) {
   PetscFunctionBeginUser;
-  PetscCall(VecCopy(a_star, out));
   if (!cd->damping) PetscFunctionReturn(0);
   const PetscInt     bs = cd->damping_bs;
   const PetscScalar *ww, *dd;
-  PetscScalar       *oo;
+  PetscScalar       *aa;
   PetscCall(VecGetArrayRead(w, &ww));
   PetscCall(VecGetArrayRead(cd->damping, &dd));
-  PetscCall(VecGetArray(out, &oo));
+  PetscCall(VecGetArray(a_star, &aa));
+  if (!restore) saved->clear();
+  size_t k = 0;
   for (const std::vector<PetscInt> *nodes : {&cd->diagonal_nodes, &cd->coupled_nodes})
     for (PetscInt node : *nodes)
-      for (PetscInt i = 0; i < bs; ++i)
-        for (PetscInt j = 0; j < bs; ++j) oo[node * bs + i] -= dd[node * bs * bs + i * bs + j] * ww[node * bs + j];
-  PetscCall(VecRestoreArray(out, &oo));
+      for (PetscInt i = 0; i < bs; ++i) {
+        PetscScalar &a = aa[node * bs + i];
+        if (restore) {
+          a = (*saved)[k++];
+          continue;
+        }
+        saved->push_back(a);
+        for (PetscInt j = 0; j < bs; ++j) a -= dd[node * bs * bs + i * bs + j] * ww[node * bs + j];
+      }
+  PetscCall(VecRestoreArray(a_star, &aa));
   PetscCall(VecRestoreArrayRead(cd->damping, &dd));
   PetscCall(VecRestoreArrayRead(w, &ww));
   PetscFunctionReturn(0);
@@ -187,8 +196,9 @@ PetscErrorCode addCorrection(TS ts, PetscReal t, PetscReal h, Vec w, Vec a_star)
   PetscFunctionBeginUser;
   if (cd->order != 4) PetscFunctionReturn(0);
   PetscCheck(cd->correction, PetscObjectComm((PetscObject)ts), PETSC_ERR_ORDER, "TS type cd of order 4 needs CentralDifferenceSetCorrection before TSSolve");
-  PetscCall(dampedAcceleration(cd, w, a_star, cd->accel_full));
-  PetscCall(cd->correction(cd->correction_ctx, t, h, cd->accel_full, cd->corr));
+  PetscCall(dampedAcceleration(cd, w, a_star, &cd->damped_saved, false));
+  PetscCall(cd->correction(cd->correction_ctx, t, h, a_star, cd->corr));
+  PetscCall(dampedAcceleration(cd, w, a_star, &cd->damped_saved, true));
   PetscCall(VecAXPY(a_star, 1.0, cd->corr));
   PetscFunctionReturn(0);
 }
@@ -243,7 +253,7 @@ PetscErrorCode stepCentralDifference(TS ts) {
 }
 
 // The vectors of order 4 (each created once, with the solution's layout).
-std::vector<Vec *> fourthOrderVectors(CentralDifference *cd) { return {&cd->corr, &cd->accel_full, &cd->accel_prev, &cd->accel_prev2, &cd->v_report, &cd->a_report}; }
+std::vector<Vec *> fourthOrderVectors(CentralDifference *cd) { return {&cd->corr, &cd->accel_prev, &cd->accel_prev2, &cd->v_report, &cd->a_report}; }
 
 PetscErrorCode setUpCentralDifference(TS ts) {
   CentralDifference *cd = data(ts);

@@ -71,10 +71,10 @@ struct Elastodynamics {
   Vec       f_pore = nullptr;   // + alpha Q^T p, the pore pressure's force on the skeleton (saturated scenes only)
   NodalAcceleration nodal;      // a* from the force parts, and where f_ext can be nonzero
   RigidBodies *rigid = nullptr; // regions of -material_<r>_model rigid, or null
-  // The fourth-order integrator's correction (ElastodynamicsFourthOrderCorrection): K a* and
-  // the loads' second difference (global), and the local vectors K a* is gathered in, apart
-  // from u_local and f_local, which hold the RHS's u for what reads it after the step.
-  Vec correction_force = nullptr, load_curvature = nullptr, correction_local = nullptr, correction_f_local = nullptr;
+  // The fourth-order integrator's correction (ElastodynamicsFourthOrderCorrection): K a*
+  // (global), and the local vectors it is gathered in, apart from u_local and f_local, which
+  // hold the RHS's u for what reads it after the step.
+  Vec correction_force = nullptr, correction_local = nullptr, correction_f_local = nullptr;
 };
 
 PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);
