@@ -263,7 +263,6 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
       if (verbose || isHeadline(line)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   if (verbose)
     for (const std::string &line : stations.ambiguities()) PetscCall(PetscPrintf(comm, "  %s\n", line.c_str()));
-  PetscCall(PetscPrintf(comm, "  %s\n", problem::IntegratorStepDescribe(integrator).c_str()));
   if (limit.dt_cfl < 1e300)
     PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", integrator.dt_limit, integrator.governing.c_str(), limit.dt_cfl));
   else PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s)\n", integrator.dt_limit, integrator.governing.c_str()));
@@ -271,7 +270,9 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
   if (limit.dt_without_interfaces < 1e300 && limit.dt_bulk < limit.dt_without_interfaces * (1 - 1e-12))
     PetscCall(PetscPrintf(comm, "  warning: the interface penalty lowers the stable step from %.4e s (bulk alone) to %.4e s (-%.1f %%)\n", limit.dt_without_interfaces,
                           limit.dt_bulk, 100 * (1 - limit.dt_bulk / limit.dt_without_interfaces)));
-  PetscCall(PetscPrintf(comm, "  time step %.4e s = %.3f of the limit; %.0f steps to t = %g s\n", (double)dt, dt / integrator.dt_limit, std::ceil(max_time / dt), (double)max_time));
+  PetscCall(PetscPrintf(comm, "  time step %.4e s = %.3f of the limit; %.0f steps to t = %g s; %s\n", (double)dt, dt / integrator.dt_limit, std::ceil(max_time / dt), (double)max_time,
+                        problem::IntegratorStepSummary(integrator).c_str()));
+  if (verbose) PetscCall(PetscPrintf(comm, "    %s\n", problem::IntegratorStepDetail(integrator).c_str()));
   char sampling[160] = "";
   if (!stations.empty())
     std::snprintf(sampling, sizeof sampling, "; %zu stations every %ld step%s (%.4g s, -station_interval)", stations.names().size(), stations.samplingSteps(),

@@ -46,7 +46,8 @@ PetscErrorCode IntegratorStepChoose(const Elastodynamics &m, const StableStep &s
   c->safety      = TimeStepSafety(options, !m.interfaces.empty());
   // The accuracy step: at p > 1, with a scene frequency, unless -time_step_safety sets the step.
   const SceneFrequency top = SceneTopFrequency(m);
-  if (m.bulk.degree() > 1 && top.hz > 0 && !options.safety_set) {
+  c->no_accuracy_step     = m.bulk.degree() == 1 ? "degree 1" : top.hz == 0 ? "no scene frequency" : options.safety_set ? "-time_step_safety given" : "";
+  if (c->no_accuracy_step.empty()) {
     for (size_t r = 0; r < m.materials.size(); ++r) {
       if (m.materials[r].model == medium::MaterialModel::Rigid) continue; // carries no waves
       const double n = RegionNodesPerWavelength(m, (PetscInt)r, top.hz);
@@ -80,27 +81,28 @@ PetscErrorCode IntegratorStepChoose(const Elastodynamics &m, const StableStep &s
   PetscFunctionReturn(0);
 }
 
-std::string IntegratorStepDescribe(const IntegratorStep &c) {
-  const char  *name = c.order == 4 ? "fourth-order modified equation (-ts_cd_order 4)" : "central difference (-ts_cd_order 2)";
+std::string IntegratorStepSummary(const IntegratorStep &c) {
+  return std::string(c.order == 4 ? "fourth-order integrator (-ts_cd_order 4" : "central difference (-ts_cd_order 2") + (c.order_given ? "" : ", the default") +
+         "), limited by " + (c.accuracyLimits() ? "accuracy" : "stability");
+}
+
+std::string IntegratorStepDetail(const IntegratorStep &c) {
   const double dt4 = c.order == 4 ? c.dt : c.dt_other, dt2 = c.order == 4 ? c.dt_other : c.dt;
   char         why[200], limit[640];
-  if (c.order_given) std::snprintf(why, sizeof why, "as asked");
-  else if (c.user_dt) std::snprintf(why, sizeof why, "the default with -ts_dt");
+  if (c.order_given) std::snprintf(why, sizeof why, "order %" PetscInt_FMT " as asked", c.order);
+  else if (c.user_dt) std::snprintf(why, sizeof why, "order 2, the default with -ts_dt");
   else
-    std::snprintf(why, sizeof why, "the default: the order-4 step %.4e s is %s %g x the order-2 step %.4e s", dt4, c.order == 4 ? "more than" : "not more than",
-                  kFourthOrderCost, dt2);
+    std::snprintf(why, sizeof why, "order %" PetscInt_FMT ": the order-4 step %.4e s is %s %g x the order-2 step %.4e s", c.order, dt4,
+                  c.order == 4 ? "more than" : "not more than", kFourthOrderCost, dt2);
   // The accuracy step's error: the space error, or the floor over the run (kPhaseErrorFloor).
   char target[96];
   if (c.time_error > c.space_error) std::snprintf(target, sizeof target, "%.2e (%g rad over the run)", c.time_error, kPhaseErrorFloor);
   else std::snprintf(target, sizeof target, "%.2e", c.time_error);
-  if (c.dt_accuracy >= 1e300) std::snprintf(limit, sizeof limit, "stability (%.2f of the limit)", c.safety);
-  else if (c.accuracyLimits())
-    std::snprintf(limit, sizeof limit, "accuracy: a phase-speed error of %s, the space error %.2e of degree %" PetscInt_FMT " at %.3g GLL nodes per S wavelength (region %s) at %.2f Hz (%s)",
-                  target, c.space_error, c.degree, c.nodes_per_wavelength, c.region.c_str(), c.frequency, c.frequency_source.c_str());
+  if (c.dt_accuracy >= 1e300) std::snprintf(limit, sizeof limit, "no accuracy step (%s)", c.no_accuracy_step.c_str());
   else
-    std::snprintf(limit, sizeof limit, "stability (%.2f of the limit; there the time error is below %s, the space error %.2e of degree %" PetscInt_FMT " at %.3g GLL nodes per S wavelength, region %s, %.2f Hz)",
-                  c.safety, target, c.space_error, c.degree, c.nodes_per_wavelength, c.region.c_str(), c.frequency);
-  return std::string("time integrator: ") + name + ", " + why + "; step limited by " + limit;
+    std::snprintf(limit, sizeof limit, "accuracy step %.4e s: a phase-speed error of %s at %.2f Hz (%s), the space error %.2e of degree %" PetscInt_FMT " at %.3g GLL nodes per S wavelength (region %s)",
+                  c.dt_accuracy, target, c.frequency, c.frequency_source.c_str(), c.space_error, c.degree, c.nodes_per_wavelength, c.region.c_str());
+  return std::string("time integrator: ") + why + "; " + limit;
 }
 
 } // namespace slipwave::problem

@@ -39,6 +39,7 @@ struct IntegratorStep {
   double      frequency = 0, nodes_per_wavelength = 0, space_error = 0;
   double      time_error = 0; // what the accuracy step allows: the space error, or the run's floor (integrator_step.cpp)
   std::string frequency_source, region;
+  std::string no_accuracy_step; // why there is none: degree 1, no scene frequency, -time_step_safety given ("" where there is one)
   // The other order's step [s] (the default order's comparison, for the report).
   double      dt_other = 0;
 
@@ -49,7 +50,10 @@ struct IntegratorStep {
 // (type cd, after TSSetFromOptions). Then TimeStepChoose sets the step.
 PetscErrorCode IntegratorStepChoose(const Elastodynamics &model, const StableStep &step, const TimeStepOptions &options, TS ts, IntegratorStep *choice);
 
-// One line for the run report: the order and why, the step and what limits it.
-std::string IntegratorStepDescribe(const IntegratorStep &choice);
+// For the run report: the integrator and what limits the step ("central difference
+// (-ts_cd_order 2, the default), limited by stability"), and the detail: why this order, the
+// accuracy step and the errors it balances.
+std::string IntegratorStepSummary(const IntegratorStep &choice);
+std::string IntegratorStepDetail(const IntegratorStep &choice);
 
 } // namespace slipwave::problem
