@@ -19,7 +19,7 @@ namespace slipwave::app {
 namespace {
 
 constexpr PetscInt kMagic   = 0x53574350; // "SWCP"
-constexpr PetscInt kVersion = 11; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
+constexpr PetscInt kVersion = 12; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
                                  // 4: state only (no RHS force parts, no attenuation trial);
                                  // 5: the scene options after the header, a seal at the end;
                                  // 6: the pore pressure state and the ledger's fluid terms;
@@ -32,13 +32,15 @@ constexpr PetscInt kVersion = 11; // 2: ledger with `anelastic`, attenuation mem
                                  // 10: each hysteretic point's state opens with a header (its
                                  //    tail, physics/hysteretic_soil.hpp)
                                  // 11: each interface's count of open/closed switches after its drift
+                                 // 12: the ledger's integrator_correction; at order 4 the two
+                                 //    accelerations before the current one (the reported velocity)
 constexpr PetscInt kHeader  = 10;
 
 // The ledger as a flat array, in a fixed order.
 std::vector<double> ledgerArray(const problem::EnergyLedger &e) {
   return {e.kinetic, e.strain,        e.input,        e.external,      e.reactions, e.absorbed,          e.damped, e.interface_work,
           e.shadow,  e.shadow_start,  e.balance_error, e.scale,        e.h_prev,    e.started ? 1.0 : 0.0, e.anelastic, e.contact_damped,
-          e.fluid_stored, e.darcy, e.fluid_inflow, e.hysteretic_work, e.hysteretic_dissipated, e.cavitation};
+          e.fluid_stored, e.darcy, e.fluid_inflow, e.hysteretic_work, e.hysteretic_dissipated, e.cavitation, e.integrator_correction};
 }
 
 void ledgerFromArray(const double *a, problem::EnergyLedger *e) {
@@ -48,16 +50,20 @@ void ledgerFromArray(const double *a, problem::EnergyLedger *e) {
   e->fluid_stored = a[16], e->darcy = a[17], e->fluid_inflow = a[18];
   e->hysteretic_work = a[19], e->hysteretic_dissipated = a[20];
   e->cavitation = a[21];
+  e->integrator_correction = a[22];
   e->external_gross = std::fabs(e->external); // not stored: the net work bounds it from below
 }
-constexpr PetscInt kLedgerSize = 22;
+constexpr PetscInt kLedgerSize = 23;
 
 std::vector<Vec> stateVectors(const CheckpointState &s) {
-  Vec u, v, a;
+  Vec u, v, a, a_previous, a_before;
   TS2GetSolution(s.ts, &u, &v);
   time::CentralDifferenceGetAcceleration(s.ts, &a);
   // The force parts of the last RHS evaluation are not state: the next step recomputes them
-  // before the ledger reads them (the monitor of the restart step itself is skipped).
+  // before the ledger reads them (the monitor of the restart step itself is skipped). At
+  // order 4 the accelerations of the two steps before are (the reported velocity's).
+  time::CentralDifferenceGetHistory(s.ts, &a_previous, &a_before);
+  if (a_previous) return {u, v, a, s.model->bc.constant_force, a_previous, a_before};
   return {u, v, a, s.model->bc.constant_force};
 }
 
@@ -245,6 +251,7 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
     PetscCheck(n_file == n_expected, comm, PETSC_ERR_USER_INPUT, "-restart = %s belongs to another mesh; allowed: the scene options of the run that wrote it", path.c_str());
   }
   PetscCall(time::CentralDifferenceSetAcceleration(s.ts, vecs[2]));
+  if (vecs.size() > 4) PetscCall(time::CentralDifferenceSetHistory(s.ts, vecs[4], vecs[5], header[4]));
   if (header[7]) PetscCall(loadLocalArray(comm, 6 * s.model->bulk.cellCount(), viewer, &s.model->initial_stress));
   for (size_t k = 0; k < s.model->interfaces.size(); ++k) {
     auto               &iface = s.model->interfaces[k];

@@ -109,7 +109,7 @@ PetscErrorCode inputCause(const problem::Elastodynamics &model, PetscReal t, std
 
 } // namespace
 
-PetscErrorCode DivergenceGuard(const problem::Elastodynamics &model, const problem::EnergyLedger &e, PetscReal growth_limit, const problem::StableStep &limit, PetscReal h,
+PetscErrorCode DivergenceGuard(const problem::Elastodynamics &model, const problem::EnergyLedger &e, PetscReal growth_limit, const problem::IntegratorStep &limit, PetscReal h,
                                PetscInt step, PetscReal t, Vec u, Vec v, Vec a) {
   MPI_Comm comm = model.comm;
   PetscFunctionBeginUser;

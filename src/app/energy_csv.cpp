@@ -16,12 +16,13 @@ constexpr std::array<const char *, 15> kValueColumns = {"time",           "kinet
 
 constexpr std::array<const char *, 4> kFluidColumns = {"fluid_stored", "darcy_dissipated", "fluid_inflow_work", "cavitation_work"};
 
-std::string header(bool fluid, bool hysteretic) {
+std::string header(bool fluid, bool hysteretic, bool fourth_order) {
   std::string line = "step";
   for (const char *name : kValueColumns) line += std::string(",") + name;
   if (fluid)
     for (const char *name : kFluidColumns) line += std::string(",") + name;
   if (hysteretic) line += ",hysteretic_dissipated";
+  if (fourth_order) line += ",integrator_correction";
   return line + "\n";
 }
 
@@ -30,7 +31,7 @@ std::string header(bool fluid, bool hysteretic) {
 PetscErrorCode EnergyCsv::Open(const std::string &dir, const std::string &previous, PetscInt restart_step) {
   const std::string path = dir + "/energy.csv";
   PetscFunctionBeginUser;
-  std::string kept = header(fluid_, hysteretic_);
+  std::string kept = header(fluid_, hysteretic_, fourth_order_);
   if (!previous.empty()) {
     if (FILE *in = std::fopen(previous.c_str(), "r")) {
       char line[4096];
@@ -86,6 +87,10 @@ void EnergyCsv::Append(PetscInt step, PetscReal t, const problem::EnergyLedger &
   }
   if (hysteretic_) {
     std::snprintf(cell, sizeof cell, ",%.10g", e.hysteretic_dissipated);
+    pending_ += cell;
+  }
+  if (fourth_order_) {
+    std::snprintf(cell, sizeof cell, ",%.10g", e.integrator_correction);
     pending_ += cell;
   }
   pending_ += '\n';

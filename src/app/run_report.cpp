@@ -19,8 +19,9 @@ namespace {
 // Memory in use after setup (all ranks) and a run-time estimate: the element loop timed here
 // times the ratio of a whole step to it (measured: 2.6 on a 512^2 mesh, docs/performance.md;
 // 4.3 on the default scene, where the per-step vector work weighs more; 4 is used, so the
-// estimate is good to a factor 2), doubled with stiffness-proportional damping (a second loop).
-PetscErrorCode reportCost(const problem::Elastodynamics &model, double steps) {
+// estimate is good to a factor 2), doubled with stiffness-proportional damping (a second loop),
+// plus one loop with the fourth-order integrator (its correction's pass).
+PetscErrorCode reportCost(const problem::Elastodynamics &model, PetscInt order, double steps) {
   constexpr double kStepOverLoop = 4.0;
   PetscLogDouble   memory, t0, t1;
   PetscFunctionBeginUser;
@@ -37,7 +38,7 @@ PetscErrorCode reportCost(const problem::Elastodynamics &model, double steps) {
   PetscCall(PetscTime(&t1));
   double loop = (t1 - t0) / repeats;
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &loop, 1, MPI_DOUBLE, MPI_MAX, model.comm));
-  const double per_step = loop * kStepOverLoop * (model.rayleigh.beta > 0 ? 2 : 1);
+  const double per_step = loop * kStepOverLoop * (model.rayleigh.beta > 0 ? 2 : 1) + (order == 4 ? loop : 0.0);
   PetscCall(PetscPrintf(model.comm, "  memory in use after setup: %.1f MB (all ranks); estimated run time %.0f s (%.0f steps x %.3g ms; within a factor 2)\n",
                         memory / 1048576.0, steps * per_step, steps, 1e3 * per_step));
   PetscFunctionReturn(0);
@@ -54,13 +55,6 @@ double nodesPerWavelengthNeeded(PetscInt degree) { return degree >= 4 ? 5.0 : 10
 
 const char *nodesPerWavelengthSource(PetscInt degree) {
   return degree == 1 ? "Kuhlemeyer & Lysmer 1973" : degree >= 4 ? "Komatitsch & Tromp 1999" : "between Kuhlemeyer & Lysmer 1973 at p = 1 and Komatitsch & Tromp 1999 at p = 4";
-}
-
-// GLL nodes per S wavelength at frequency f in region r (S speed vs), with the region's
-// largest element (its corners' shortest edge or diagonal; p = 1: the cell): on a graded
-// mesh the coarse cells, not the fine ones, limit what the region carries.
-double nodesPerWavelength(const problem::Elastodynamics &model, PetscInt region, double vs, double f) {
-  return (double)model.bulk.degree() * vs / f / model.bulk.regionElementSize(region);
 }
 
 // The highest frequency the mesh carries: nodesPerWavelengthNeeded GLL nodes per S
@@ -182,8 +176,8 @@ void WriteRunInfo(const problem::Elastodynamics &model, const std::string &outpu
   }
 }
 
-PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::StableStep &limit, const io::Stations &stations, PetscReal dt, PetscReal max_time,
-                           const std::string &output_dir, PetscReal output_interval, bool verbose) {
+PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::StableStep &limit, const problem::IntegratorStep &integrator, const io::Stations &stations, PetscReal dt,
+                           PetscReal max_time, const std::string &output_dir, PetscReal output_interval, bool verbose) {
   MPI_Comm    comm = model.comm;
   PetscMPIInt size;
   PetscInt    n_nodes, ncell_local = model.bulk.cellCount(), ncell;
@@ -213,10 +207,10 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
     PetscCall(PetscPrintf(comm, "  region %-10s rho %8.1f kg/m3  vp %8.1f m/s  vs %8.1f m/s", m.region.c_str(), m.elastic.rho, m.elastic.vp, m.elastic.vs));
     if (m.model == medium::MaterialModel::Rigid) PetscCall(PetscPrintf(comm, "  rigid (its vp, vs serve the geostatic stage only)"));
     else if (fmax > 0 && p == 1)
-      PetscCall(PetscPrintf(comm, "  %5.1f points per S wavelength at %.2f Hz (cell size %.3g m)", nodesPerWavelength(model, k, m.elastic.vs, fmax), fmax,
+      PetscCall(PetscPrintf(comm, "  %5.1f points per S wavelength at %.2f Hz (cell size %.3g m)", problem::RegionNodesPerWavelength(model, k, fmax), fmax,
                             model.bulk.regionElementSize(k)));
     else if (fmax > 0)
-      PetscCall(PetscPrintf(comm, "  %5.1f GLL nodes per S wavelength at %.2f Hz (degree %" PetscInt_FMT ", element size %.3g m)", nodesPerWavelength(model, k, m.elastic.vs, fmax),
+      PetscCall(PetscPrintf(comm, "  %5.1f GLL nodes per S wavelength at %.2f Hz (degree %" PetscInt_FMT ", element size %.3g m)", problem::RegionNodesPerWavelength(model, k, fmax),
                             fmax, p, model.bulk.regionElementSize(k)));
     // The compact report names the region's soil model here; its fitted bodies and curves
     // are details (-report_verbose).
@@ -227,7 +221,7 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
   }
   for (size_t r = 0; r < model.materials.size(); ++r) {
     const auto   &m = model.materials[r];
-    const double  n = fmax > 0 ? nodesPerWavelength(model, (PetscInt)r, m.elastic.vs, fmax) : 0.0;
+    const double  n = fmax > 0 ? problem::RegionNodesPerWavelength(model, (PetscInt)r, fmax) : 0.0;
     if (m.model != medium::MaterialModel::Rigid && fmax > 0 && n < nodesPerWavelengthNeeded(p))
       PetscCall(PetscPrintf(comm,
                             "  warning: region %s is under-resolved for the top frequency %.2f Hz of %s: %.1f %s per S wavelength, below the %.3g that elements of degree %" PetscInt_FMT " need (%s); refine the mesh or raise -element_degree\n",
@@ -270,19 +264,21 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
   if (verbose)
     for (const std::string &line : stations.ambiguities()) PetscCall(PetscPrintf(comm, "  %s\n", line.c_str()));
   if (limit.dt_cfl < 1e300)
-    PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", limit.dt_limit, limit.governing.c_str(), limit.dt_cfl));
-  else PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s)\n", limit.dt_limit, limit.governing.c_str()));
+    PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", integrator.dt_limit, integrator.governing.c_str(), limit.dt_cfl));
+  else PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s)\n", integrator.dt_limit, integrator.governing.c_str()));
   // dt_bulk, not dt_limit: the free-field columns or the pore-pressure diffusion may set the limit lower without any interface.
   if (limit.dt_without_interfaces < 1e300 && limit.dt_bulk < limit.dt_without_interfaces * (1 - 1e-12))
     PetscCall(PetscPrintf(comm, "  warning: the interface penalty lowers the stable step from %.4e s (bulk alone) to %.4e s (-%.1f %%)\n", limit.dt_without_interfaces,
                           limit.dt_bulk, 100 * (1 - limit.dt_bulk / limit.dt_without_interfaces)));
-  PetscCall(PetscPrintf(comm, "  time step %.4e s = %.3f of the limit; %.0f steps to t = %g s\n", (double)dt, dt / limit.dt_limit, std::ceil(max_time / dt), (double)max_time));
+  PetscCall(PetscPrintf(comm, "  time step %.4e s = %.3f of the limit; %.0f steps to t = %g s; %s\n", (double)dt, dt / integrator.dt_limit, std::ceil(max_time / dt), (double)max_time,
+                        problem::IntegratorStepSummary(integrator).c_str()));
+  if (verbose) PetscCall(PetscPrintf(comm, "    %s\n", problem::IntegratorStepDetail(integrator).c_str()));
   char sampling[160] = "";
   if (!stations.empty())
     std::snprintf(sampling, sizeof sampling, "; %zu stations every %ld step%s (%.4g s, -station_interval)", stations.names().size(), stations.samplingSteps(),
                   stations.samplingSteps() > 1 ? "s" : "", stations.samplingSteps() * (double)dt);
   PetscCall(PetscPrintf(comm, "  output: %s/, frames every %g s%s\n", output_dir.c_str(), (double)output_interval, sampling));
-  PetscCall(reportCost(model, std::ceil(max_time / dt)));
+  PetscCall(reportCost(model, integrator.order, std::ceil(max_time / dt)));
   PetscFunctionReturn(0);
 }
 

@@ -2,7 +2,7 @@
 
 namespace slipwave::core {
 
-PetscLogEvent event_bulk_force, event_boundary, event_interface, event_energy, event_stations, event_output, event_guard;
+PetscLogEvent event_bulk_force, event_boundary, event_interface, event_energy, event_stations, event_output, event_guard, event_fourth_order;
 PetscLogEvent event_mesh, event_bulk_setup, event_boundary_setup, event_output_open;
 PetscLogStage stage_setup, stage_geostatic, stage_solve, stage_output;
 
@@ -21,6 +21,7 @@ PetscErrorCode LogEventsRegister() {
   PetscCall(PetscLogEventRegister("SW:Bulk:Setup", id, &event_bulk_setup));
   PetscCall(PetscLogEventRegister("SW:Boundary:Setup", id, &event_boundary_setup));
   PetscCall(PetscLogEventRegister("SW:IO:Open", id, &event_output_open));
+  PetscCall(PetscLogEventRegister("SW:Time:Order4", id, &event_fourth_order));
   PetscCall(PetscLogStageRegister("Setup", &stage_setup));
   PetscCall(PetscLogStageRegister("Geostatic", &stage_geostatic));
   PetscCall(PetscLogStageRegister("Solve", &stage_solve));

@@ -56,6 +56,7 @@ struct Rule {
 const Rule kRules[] = {
   // run control
   {"-ts_type",                 Kind::Choice, 1, 1, kAny, "cd (central difference, the only time stepper of slipwave)"},
+  {"-ts_cd_order",             Kind::Choice, 1, 1, kAny, "2, 4 (central difference; the fourth-order modified-equation scheme)"},
   {"-ts_dt",                   Kind::Real, 1, 1, aboveZero(1e3), "0 < dt <= 1e3 s (and at most the stable limit the setup report prints)"},
   {"-ts_max_time",             Kind::Real, 1, 1, aboveZero(1e12), "0 < t <= 1e12 s (a large value lets -ts_max_steps end the run)"},
   {"-ts_max_steps",            Kind::Int,  1, 1, closed(0, 1e9), "0 to 1e9 steps"},

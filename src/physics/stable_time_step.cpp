@@ -23,4 +23,28 @@ double centralDifferenceStableStepOfRow(double omega2, double rate) {
   return 2.0 / (std::sqrt(omega2 + 0.25 * rate * rate) + 0.5 * rate);
 }
 
+double fourthOrderStableStep(double omega_max, double beta_stiffness_damping) {
+  const double xi = 0.5 * beta_stiffness_damping * omega_max, w_end = std::sqrt(12.0);
+  // The condition fails where xi >= Xi(W) = (1/(1 - W^2/12) - W^2/4) / W, a function that falls
+  // from +inf at W = 0 to its minimum 0.2007 at W = 2.364 and rises to +inf at sqrt(12)
+  // (unimodal: tests/unit/test_stable_time_step.cpp). Below the minimum every W < sqrt(12)
+  // passes; above it the limit is where the falling branch meets xi.
+  const auto big_xi = [](double W) { return (1 / (1 - W * W / 12) - W * W / 4) / W; };
+  double lo = 0, hi = w_end;
+  for (int it = 0; it < 200; ++it) { // golden-section search for the minimum of Xi
+    const double a = lo + 0.381966 * (hi - lo), b = hi - 0.381966 * (hi - lo);
+    if (big_xi(a) < big_xi(b)) hi = b;
+    else lo = a;
+  }
+  const double w_min = 0.5 * (lo + hi);
+  if (xi < big_xi(w_min)) return w_end / omega_max;
+  lo = 0, hi = w_min;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (big_xi(mid) > xi) lo = mid;
+    else hi = mid;
+  }
+  return lo / omega_max;
+}
+
 } // namespace slipwave::physics

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/fem/node_fields.hpp"
@@ -163,6 +165,15 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   // spectral elements do not have.
   PetscCheck(!any_saturated || m->mesh.degree == 1, comm, PETSC_ERR_USER_INPUT,
              "-material_<r>_saturated with -element_degree = %" PetscInt_FMT "; allowed: -element_degree 1 for saturated regions", m->mesh.degree);
+  {
+    // The pore pressure's coupling and diffusion step by central differences, outside the
+    // fourth-order correction (time/central_difference.hpp).
+    PetscInt  order = 2;
+    PetscBool set;
+    PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-ts_cd_order", &order, &set));
+    PetscCheck(!any_saturated || !set || order == 2, comm, PETSC_ERR_USER_INPUT,
+               "-ts_cd_order %" PetscInt_FMT " with a saturated region (-material_<r>_saturated): not supported; allowed: -ts_cd_order 2", order);
+  }
   for (const auto &info : m->materials)
     PetscCheck(info.model != medium::MaterialModel::Rigid || info.vp_undrained == 0, comm, PETSC_ERR_USER_INPUT,
                "-material_%s_saturated with -material_%s_model rigid; allowed: a dry rigid region (the pore fluid needs a deforming skeleton)", info.region.c_str(),
@@ -272,7 +283,8 @@ PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
   for (auto &iface : m->interfaces) PetscCall(iface.Destroy());
   PetscCall(VecDestroy(&m->f_interface));
   PetscCall(VecDestroy(&m->f_contact_damping));
-  for (Vec *v : {&m->mass, &m->inv_mass, &m->damping_blocks, &m->u_local, &m->f_local, &m->f_internal, &m->f_external, &m->f_input, &m->f_stiffness_damping, &m->f_anelastic, &m->f_hysteretic})
+  for (Vec *v : {&m->mass, &m->inv_mass, &m->damping_blocks, &m->u_local, &m->f_local, &m->f_internal, &m->f_external, &m->f_input, &m->f_stiffness_damping, &m->f_anelastic, &m->f_hysteretic,
+                 &m->correction_force, &m->correction_local, &m->correction_f_local})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&m->dm));
   PetscFunctionReturn(0);
@@ -415,12 +427,85 @@ PetscErrorCode ElastodynamicsDrainOpenGaps(Elastodynamics *m) {
 
 namespace {
 PetscErrorCode commitHook(void *ctx) { return ElastodynamicsCommit(static_cast<Elastodynamics *>(ctx)); }
+PetscErrorCode correctionHook(void *ctx, PetscReal t, PetscReal h, Vec a_star, Vec c) {
+  return ElastodynamicsFourthOrderCorrection(static_cast<Elastodynamics *>(ctx), t, h, a_star, c);
+}
+
+// Global f = K x through the local vectors x_local, f_local (ghost exchange included).
+PetscErrorCode stiffnessTimes(Elastodynamics *m, Vec x, Vec f, Vec x_local, Vec f_local) {
+  const PetscScalar *xl;
+  PetscScalar       *fl;
+  PetscFunctionBeginUser;
+  PetscCall(DMGlobalToLocal(m->dm, x, INSERT_VALUES, x_local));
+  PetscCall(VecZeroEntries(f_local));
+  PetscCall(VecGetArrayRead(x_local, &xl));
+  PetscCall(VecGetArray(f_local, &fl));
+  m->bulk.addStiffnessTimes(xl, fl);
+  PetscCall(VecRestoreArray(f_local, &fl));
+  PetscCall(VecRestoreArrayRead(x_local, &xl));
+  PetscCall(VecZeroEntries(f));
+  PetscCall(DMLocalToGlobal(m->dm, f_local, ADD_VALUES, f));
+  PetscFunctionReturn(0);
+}
+
+// c = (1/12) (free 1/m) (f(t+h) - 2 f(t) + f(t-h)) added for the loads that are known functions
+// of time (the timed loads and the incident wave's force, as the RHS forms them, with the input
+// on): on the dofs where they can be nonzero when the model lists them
+// (problem/nodal_acceleration.hpp), else on every dof.
+PetscErrorCode addLoadSecondDifference(Elastodynamics *m, PetscReal t, PetscReal h, Vec c) {
+  PetscFunctionBeginUser;
+  if (!m->input_enabled) PetscFunctionReturn(0);
+  const auto   second = [t, h](const input::TimeFunction &f) { return f.velocity(t + h) - 2 * f.velocity(t) + f.velocity(t - h); };
+  const bool   input  = m->bc.input.active() && m->bc.input_wave != input::InputWave::None;
+  PetscScalar *cc;
+  const PetscScalar *mim;
+  PetscInt     n;
+  PetscCall(VecGetLocalSize(c, &n));
+  PetscCall(VecGetArray(c, &cc));
+  PetscCall(VecGetArrayRead(m->nodal.free_inv_mass, &mim));
+  std::vector<std::pair<double, Vec>> loads;
+  for (const input::TimedLoad &l : m->bc.timed_loads) loads.emplace_back(second(l.history), l.pattern);
+  if (input) loads.emplace_back(second(m->bc.input), m->bc.input_force);
+  for (const auto &[weight, pattern] : loads) {
+    if (weight == 0) continue;
+    const PetscScalar *f;
+    PetscCall(VecGetArrayRead(pattern, &f));
+    if (m->nodal.listed)
+      for (PetscInt k : m->nodal.external_dofs) cc[k] += weight / 12 * mim[k] * f[k];
+    else
+      for (PetscInt k = 0; k < n; ++k) cc[k] += weight / 12 * mim[k] * f[k];
+    PetscCall(VecRestoreArrayRead(pattern, &f));
+  }
+  PetscCall(VecRestoreArrayRead(m->nodal.free_inv_mass, &mim));
+  PetscCall(VecRestoreArray(c, &cc));
+  PetscFunctionReturn(0);
+}
 } // namespace
+
+PetscErrorCode ElastodynamicsFourthOrderCorrection(Elastodynamics *m, PetscReal t, PetscReal h, Vec a_star, Vec c) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(core::event_fourth_order, 0, 0, 0, 0));
+  if (!m->correction_force) {
+    PetscCall(VecDuplicate(m->mass, &m->correction_force));
+    PetscCall(VecDuplicate(m->u_local, &m->correction_local));
+    PetscCall(VecDuplicate(m->u_local, &m->correction_f_local));
+  }
+  PetscCall(stiffnessTimes(m, a_star, m->correction_force, m->correction_local, m->correction_f_local));
+  // c = -(h^2/12) (free 1/m) K a*, then the loads' share.
+  PetscCall(VecPointwiseMult(c, m->nodal.free_inv_mass, m->correction_force));
+  PetscCall(VecScale(c, -h * h / 12));
+  PetscCall(addLoadSecondDifference(m, t, h, c));
+  PetscCall(input::LateralTieApply(m->tie, c));
+  if (m->rigid) PetscCall(RigidBodiesProject(m->rigid, m->mass, c));
+  PetscCall(PetscLogEventEnd(core::event_fourth_order, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode ElastodynamicsSetUpTS(Elastodynamics *m, TS ts) {
   PetscFunctionBeginUser;
   PetscCall(TSSetRHSFunction(ts, nullptr, ElastodynamicsRHS, m));
   PetscCall(time::CentralDifferenceSetCommit(ts, commitHook, m));
+  PetscCall(time::CentralDifferenceSetCorrection(ts, correctionHook, m));
   PetscCall(time::CentralDifferenceSetNodalDamping(ts, m->dim, m->damping_blocks));
   PetscFunctionReturn(0);
 }
@@ -436,20 +521,6 @@ PetscErrorCode ElastodynamicsSetInitialStress(Elastodynamics *m, Vec u) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ElastodynamicsStiffnessTimes(Elastodynamics *m, Vec x, Vec f) {
-  const PetscScalar *ul;
-  PetscScalar       *fl;
-  PetscFunctionBeginUser;
-  PetscCall(DMGlobalToLocal(m->dm, x, INSERT_VALUES, m->u_local));
-  PetscCall(VecZeroEntries(m->f_local));
-  PetscCall(VecGetArrayRead(m->u_local, &ul));
-  PetscCall(VecGetArray(m->f_local, &fl));
-  m->bulk.addStiffnessTimes(ul, fl);
-  PetscCall(VecRestoreArray(m->f_local, &fl));
-  PetscCall(VecRestoreArrayRead(m->u_local, &ul));
-  PetscCall(VecZeroEntries(f));
-  PetscCall(DMLocalToGlobal(m->dm, m->f_local, ADD_VALUES, f));
-  PetscFunctionReturn(0);
-}
+PetscErrorCode ElastodynamicsStiffnessTimes(Elastodynamics *m, Vec x, Vec f) { return stiffnessTimes(m, x, f, m->u_local, m->f_local); }
 
 } // namespace slipwave::problem

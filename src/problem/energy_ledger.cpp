@@ -108,6 +108,22 @@ void sumStored(const LedgerArrays &x, PetscInt n, double h, double s[12]) {
   }
 }
 
+// The power v . M c of the fourth-order correction c, added to *power (this rank's dofs).
+PetscErrorCode sumCorrectionPower(Elastodynamics *m, Vec v, Vec c, double *power) {
+  const PetscScalar *vv, *cc, *mm;
+  PetscInt           n;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(v, &n));
+  PetscCall(VecGetArrayRead(v, &vv));
+  PetscCall(VecGetArrayRead(c, &cc));
+  PetscCall(VecGetArrayRead(m->mass, &mm));
+  for (PetscInt k = 0; k < n; ++k) *power += PetscRealPart(vv[k] * mm[k] * cc[k]);
+  PetscCall(VecRestoreArrayRead(m->mass, &mm));
+  PetscCall(VecRestoreArrayRead(c, &cc));
+  PetscCall(VecRestoreArrayRead(v, &vv));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool evaluate, EnergyLedger *e) {
@@ -125,7 +141,7 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool ev
   PetscCall(VecGetLocalSize(u, &n));
   PetscCall(getArrays(m, u, v, a, &x));
   PetscCall(VecGetArrayRead(m->bc.absorbing_blocks, &C));
-  double       s[12] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  double       s[13] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
   const double alpha = m->rayleigh.alpha;
   const bool   listed = m->nodal.listed && alpha == 0 && m->rayleigh.beta == 0 && !m->attenuation && m->interfaces.empty() && !m->hysteresis;
   if (listed) {
@@ -166,7 +182,12 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool ev
     Cfree += bs * bs;
   }
   PetscCall(restoreArrays(m, u, v, a, &x));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 12, MPI_DOUBLE, MPI_SUM, m->comm));
+  // The fourth-order integrator's correction c (zero at order 2): its force M c is not in
+  // f_int or the loads, and its work is booked apart (13th sum).
+  Vec correction;
+  PetscCall(time::CentralDifferenceGetCorrection(ts, &correction));
+  if (correction) PetscCall(sumCorrectionPower(m, v, correction, &s[12]));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 13, MPI_DOUBLE, MPI_SUM, m->comm));
   if (m->hysteresis) {
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &relaxation, 1, MPI_DOUBLE, MPI_SUM, m->comm));
     // The soil's own stored energies: the linear ones less E_r (energy_ledger.hpp).
@@ -198,6 +219,7 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool ev
     e->anelastic -= h_mean * s[9];
     e->contact_damped -= h_mean * s[10];
     e->hysteretic_work -= h_mean * s[11];
+    e->integrator_correction += h_mean * s[12];
     e->darcy += fluid.darcy;
     e->fluid_inflow += fluid.inflow;
     e->cavitation += fluid.cavitation;
@@ -211,10 +233,10 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool ev
     if (m->pore) e->fluid_stored = fluid.storage;
     e->shadow        = s[2];
     e->balance_error = (e->shadow - e->shadow_start) - (e->input + e->external + e->reactions + e->interface_work - e->absorbed - e->damped - e->anelastic - e->contact_damped -
-                                         e->hysteretic_dissipated) -
+                                         e->hysteretic_dissipated + e->integrator_correction) -
                        (e->fluid_inflow - e->darcy - e->cavitation);
     e->scale         = std::max({e->scale, std::fabs(e->shadow), std::fabs(e->input), std::fabs(e->external), std::fabs(e->absorbed), std::fabs(e->damped), std::fabs(e->anelastic),
-                                 std::fabs(e->reactions), std::fabs(e->interface_work), std::fabs(e->contact_damped), std::fabs(e->hysteretic_dissipated), e->kinetic + std::fabs(e->strain), e->darcy, std::fabs(e->fluid_stored), std::fabs(e->cavitation)});
+                                 std::fabs(e->reactions), std::fabs(e->interface_work), std::fabs(e->contact_damped), std::fabs(e->hysteretic_dissipated), std::fabs(e->integrator_correction), e->kinetic + std::fabs(e->strain), e->darcy, std::fabs(e->fluid_stored), std::fabs(e->cavitation)});
   }
   PetscCall(PetscLogEventEnd(core::event_energy, 0, 0, 0, 0));
   PetscFunctionReturn(0);

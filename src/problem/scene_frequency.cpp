@@ -21,4 +21,8 @@ SceneFrequency SceneTopFrequency(const Elastodynamics &model) {
   return top;
 }
 
+double RegionNodesPerWavelength(const Elastodynamics &model, PetscInt region, double f) {
+  return (double)model.bulk.degree() * model.materials[region].elastic.vs / f / model.bulk.regionElementSize(region);
+}
+
 } // namespace slipwave::problem

@@ -11,7 +11,7 @@ if grep -q "^step " "$WORK/help.txt"; then echo "-help ran time steps"; exit 1; 
 missing=0
 for opt in -mesh_file -mesh_dim -element_degree -mesh_box_faces -regions -region_soil_box -void_regions -interfaces -material_soil_rho -material_rock_vs -bc_bottom_type -bc_left_components \
            -bc_top_traction -gravity -constrain_components -input_wave -input_boundary -input_stf -input_f0 -damping_ratio \
-           -damping_frequencies -station_file -station_coordinates -output_dir -output_interval -time_step_safety -dry_run \
+           -damping_frequencies -station_file -station_coordinates -output_dir -output_interval -time_step_safety -ts_cd_order -dry_run \
            -initial_velocity -energy_growth_limit -ts_max_time -petscpartitioner_type; do
   grep -q -- "^ *$opt[ <:]" "$WORK/help.txt" || { echo "-help lacks $opt"; missing=1; }
 done

@@ -20,6 +20,7 @@
 // same (t, u) give the same acceleration bit for bit.
 #include "slipwave/porous/pore_pressure.hpp"
 #include "slipwave/problem/elastodynamics.hpp"
+#include "slipwave/problem/integrator_step.hpp"
 #include "slipwave/problem/stable_step.hpp"
 #include "slipwave/time/central_difference.hpp"
 
@@ -55,7 +56,9 @@ PetscErrorCode runScene(const std::string &scene_options, PetscReal t_end, bool 
   PetscCall(TSSetType(ts, time::kTSCentralDifference));
   PetscCall(TSSetMaxTime(ts, t_end));
   PetscCall(TSSetExactFinalTime(ts, TS_EXACTFINALTIME_MATCHSTEP));
-  PetscCall(problem::TimeStepChoose(ts, step, problem::TimeStepOptions{}, !m.interfaces.empty()));
+  problem::IntegratorStep choice;
+  PetscCall(problem::IntegratorStepChoose(m, step, problem::TimeStepOptions{}, ts, &choice));
+  PetscCall(problem::TimeStepChoose(ts, choice));
   PetscCall(problem::ElastodynamicsSetUpTS(&m, ts));
   PetscCall(DMCreateGlobalVector(m.dm, &u));
   PetscCall(VecDuplicate(u, &v));

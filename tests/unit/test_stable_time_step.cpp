@@ -33,6 +33,28 @@ Envelope run(double omega, double beta, double h, int n) {
   return e;
 }
 
+// The fourth-order scheme on the same oscillator: the kick-drift-kick of
+// time/central_difference.hpp with the RHS a* = -w^2 u - beta w^2 v_{n-1/2} corrected by
+// -(h^2/12) w^2 a* (K a* for the mode).
+Envelope runFourthOrder(double omega, double beta, double h, int n) {
+  const double w2 = omega * omega;
+  double       u = 1, v = 0, a = (-w2 * u) * (1 - h * h * w2 / 12);
+  Envelope     e{0, 0};
+  for (int k = 0; k < n; ++k) {
+    const double v_half = v + 0.5 * h * a;
+    u += h * v_half;
+    a = (-w2 * u - beta * w2 * v_half) * (1 - h * h * w2 / 12);
+    v = v_half + 0.5 * h * a;
+    if (!(std::fabs(u) < 1e100)) {
+      e.late = HUGE_VAL;
+      return e;
+    }
+    if (k < 1000) e.early = std::fmax(e.early, std::fabs(u));
+    if (k >= n - 1000) e.late = std::fmax(e.late, std::fabs(u));
+  }
+  return e;
+}
+
 } // namespace
 
 int main() {
@@ -86,6 +108,40 @@ int main() {
     const std::string tag = "contact pair xi = " + std::to_string(xi).substr(0, 3);
     unit::check(run(0.99 * dt) <= 1 + 1e-12, tag + ": bounded at 0.99 x the row bound");
     unit::check(run(1.01 * dt) > 1e3, tag + ": grows at 1.01 x the row bound");
+  }
+
+  // Fourth order: sqrt(12)/omega undamped (sqrt(3) x central differences); with damping the
+  // Jury bound (1 - W^2/12)(W^2/4 + xi W) = 1, which holds at the returned step, is never
+  // below central differences' (the modified mass M (I - h^2/12 M^-1 K)^-1 >= M), and is
+  // sqrt(12) up to xi = 0.2007, the minimum of Xi(W) = (1/(1 - W^2/12) - W^2/4)/W.
+  unit::near(fourthOrderStableStep(omega, 0), std::sqrt(12.0) / omega, 1e-15, 0, "fourth order, undamped: sqrt(12)/omega");
+  {
+    int    turns = 0;
+    double previous = HUGE_VAL, slope = -1;
+    for (int k = 1; k < 4000; ++k) {
+      const double W = std::sqrt(12.0) * k / 4000, xi_w = (1 / (1 - W * W / 12) - W * W / 4) / W;
+      const double s = xi_w < previous ? -1 : 1;
+      turns += s != slope;
+      slope = s, previous = xi_w;
+    }
+    unit::check(turns == 1, "Xi(W) falls then rises on (0, sqrt 12): one turn (" + std::to_string(turns) + ")");
+  }
+  unit::near(fourthOrderStableStep(omega, 2 * 0.2 / omega), std::sqrt(12.0) / omega, 1e-15, 0, "fourth order, xi = 0.2 < 0.2007: still sqrt(12)/omega");
+  for (double xi : {0.05, 0.25, 0.75, 2.0}) {
+    const double beta = 2 * xi / omega, dt = fourthOrderStableStep(omega, beta), W = omega * dt;
+    const std::string tag = "fourth order, xi = " + std::to_string(xi).substr(0, 4);
+    unit::check(dt >= centralDifferenceStableStep(omega, beta), tag + ": not below central differences");
+    if (xi > 0.2007) unit::near((1 - W * W / 12) * (W * W / 4 + xi * W), 1.0, 1e-12, 0, tag + ": the Jury bound holds with equality");
+    const Envelope below = runFourthOrder(omega, beta, 0.99 * dt, 10000);
+    unit::check(below.late <= below.early * (1 + 1e-12) || (xi < 0.2007 && below.late < 1e3), tag + ": bounded at 0.99 x bound");
+    if (xi > 0.2007) {
+      const Envelope above = runFourthOrder(omega, beta, 1.01 * dt, 10000);
+      unit::check(above.late > 1e3 * above.early, tag + ": grows at 1.01 x bound (late/early " + std::to_string(above.late / above.early) + ")");
+    }
+  }
+  {
+    const Envelope below = runFourthOrder(omega, 0, 0.995 * std::sqrt(12.0) / omega, 10000), above = runFourthOrder(omega, 0, 1.005 * std::sqrt(12.0) / omega, 10000);
+    unit::check(below.late <= 1e3 && above.late > 1e3 * above.early, "fourth order, undamped: bounded at 0.995, grows at 1.005 x sqrt(12)/omega");
   }
   return unit::failures();
 }

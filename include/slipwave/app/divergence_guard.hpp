@@ -7,14 +7,14 @@
 
 #include "slipwave/problem/elastodynamics.hpp"
 #include "slipwave/problem/energy_ledger.hpp"
-#include "slipwave/problem/stable_step.hpp"
+#include "slipwave/problem/integrator_step.hpp"
 
 namespace slipwave::app {
 
 // ledger: updated for this step (its global sums cover every dof of u, v and the force parts);
-// growth_limit: -energy_growth_limit; limit: the stable step, named in the messages; h: this
+// growth_limit: -energy_growth_limit; limit: the order's stable step, named in the messages; h: this
 // step's size; u, v, a: the state after the step.
-PetscErrorCode DivergenceGuard(const problem::Elastodynamics &model, const problem::EnergyLedger &ledger, PetscReal growth_limit, const problem::StableStep &limit, PetscReal h,
+PetscErrorCode DivergenceGuard(const problem::Elastodynamics &model, const problem::EnergyLedger &ledger, PetscReal growth_limit, const problem::IntegratorStep &limit, PetscReal h,
                                PetscInt step, PetscReal t, Vec u, Vec v, Vec a);
 
 } // namespace slipwave::app

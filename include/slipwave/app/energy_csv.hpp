@@ -28,6 +28,9 @@ public:
   // Before Open, in scenes with hysteretic regions: hysteretic_dissipated follows, the
   // energy the soil's hysteresis took (problem/energy_ledger.hpp); the balance books it.
   void SetHysteretic(bool hysteretic) { hysteretic_ = hysteretic; }
+  // Before Open, with the fourth-order integrator (-ts_cd_order 4): integrator_correction
+  // follows, the work of its correction force (problem/energy_ledger.hpp); the balance books it.
+  void SetFourthOrder(bool fourth_order) { fourth_order_ = fourth_order; }
   void           Append(PetscInt step, PetscReal t, const problem::EnergyLedger &ledger, const interface::InterfaceTotals &interfaces);
   // Writes the rows kept since the last flush: the file on disk then holds every row so far.
   void Flush();
@@ -36,7 +39,7 @@ public:
 private:
   FILE       *file_ = nullptr;
   std::string pending_; // rows not yet written
-  bool        fluid_ = false, hysteretic_ = false;
+  bool        fluid_ = false, hysteretic_ = false, fourth_order_ = false;
 };
 
 } // namespace slipwave::app

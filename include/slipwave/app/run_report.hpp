@@ -10,17 +10,18 @@
 #include "slipwave/io/stations.hpp"
 #include "slipwave/problem/elastodynamics.hpp"
 #include "slipwave/problem/energy_ledger.hpp"
+#include "slipwave/problem/integrator_step.hpp"
 #include "slipwave/problem/stable_step.hpp"
 
 namespace slipwave::app {
 
-// dt: the time step chosen; max_time: -ts_max_time [s]; output_interval: between frames [s].
+// integrator: the order and the step's choice; dt: the time step chosen; max_time: -ts_max_time [s]; output_interval: between frames [s].
 // Compact by default (mesh, materials and their damping, resolution, input, interfaces, the
 // step and what governs it, output, memory and the run-time estimate, every warning);
 // verbose (-report_verbose) adds the details: boundaries, loads, damping fits, rigid bodies,
 // interface penalties and dashpots, pore-pressure stepping, stations on interfaces.
-PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::StableStep &limit, const io::Stations &stations, PetscReal dt, PetscReal max_time,
-                           const std::string &output_dir, PetscReal output_interval, bool verbose);
+PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::StableStep &limit, const problem::IntegratorStep &integrator, const io::Stations &stations, PetscReal dt,
+                           PetscReal max_time, const std::string &output_dir, PetscReal output_interval, bool verbose);
 
 // Rank 0: OUTPUT_DIR/run_info.json (resolved frequency, h_min, input top frequency, dt; with
 // hysteretic soil, each region's backbone and the parameters it was built from); answers: a

@@ -12,6 +12,7 @@ extern PetscLogEvent event_energy;      // SW:Energy:Ledger
 extern PetscLogEvent event_stations;    // SW:IO:Stations
 extern PetscLogEvent event_output;      // SW:IO:Fields
 extern PetscLogEvent event_guard;       // SW:Guard:Check     divergence detection
+extern PetscLogEvent event_fourth_order; // SW:Time:Order4    the fourth-order correction: K a* (its second bulk-force pass), the loads' second difference
 // Set-up (stage Setup): where a small run's fixed time goes.
 extern PetscLogEvent event_mesh;        // SW:Mesh:Build      the distributed, labelled mesh (meshing/mesh_builder.hpp)
 extern PetscLogEvent event_bulk_setup;  // SW:Bulk:Setup      element tables, matrices, spectral layout

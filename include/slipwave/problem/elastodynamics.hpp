@@ -71,6 +71,10 @@ struct Elastodynamics {
   Vec       f_pore = nullptr;   // + alpha Q^T p, the pore pressure's force on the skeleton (saturated scenes only)
   NodalAcceleration nodal;      // a* from the force parts, and where f_ext can be nonzero
   RigidBodies *rigid = nullptr; // regions of -material_<r>_model rigid, or null
+  // The fourth-order integrator's correction (ElastodynamicsFourthOrderCorrection): K a*
+  // (global), and the local vectors it is gathered in, apart from u_local and f_local, which
+  // hold the RHS's u for what reads it after the step.
+  Vec correction_force = nullptr, correction_local = nullptr, correction_f_local = nullptr;
 };
 
 PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);
@@ -82,7 +86,16 @@ PetscErrorCode ElastodynamicsCommit(Elastodynamics *model);
 // into their gaps for the next step (porous::PorePressureDrainOpenGaps). Part of the commit;
 // a restart calls it once the interface states are loaded. No-op without such interfaces.
 PetscErrorCode ElastodynamicsDrainOpenGaps(Elastodynamics *model);
-// A "cd" TS (type set, options read) gets the RHS, the commit hook and the nodal damping.
+// The correction of the fourth-order integrator (time/central_difference.hpp, -ts_cd_order 4)
+// of the acceleration a* = RHS(t, u) at step h, on free dofs:
+//   c = M^{-1} (-(h^2/12) K a* + (1/12) (f(t+h) - 2 f(t) + f(t-h))),
+// K the linear bulk stiffness (unrelaxed moduli; no interfaces, memory or relaxation forces),
+// f the loads that are known functions of time (timed loads, the incident-wave force), whose
+// second difference is h^2 f'' to O(h^4). Tied sides and rigid bodies constrain c as they
+// constrain a*; held dofs get none (their motion is prescribed).
+PetscErrorCode ElastodynamicsFourthOrderCorrection(Elastodynamics *model, PetscReal t, PetscReal h, Vec a_star, Vec c);
+// A "cd" TS (type set, options read) gets the RHS, the commit hook, the correction of order 4
+// and the nodal damping.
 PetscErrorCode ElastodynamicsSetUpTS(Elastodynamics *model, TS ts);
 // Global f = K x by the element loop (ghost exchange included), as the RHS computes it.
 PetscErrorCode ElastodynamicsStiffnessTimes(Elastodynamics *model, Vec x, Vec f);

@@ -7,6 +7,11 @@
 // dissipation), so
 //   balance error = W_{n+1/2} − W_{1/2} − Σ booked work
 // is round-off for a consistent discretisation, and a growth of it flags an instability.
+// The fourth-order integrator (-ts_cd_order 4) is the same kick-drift-kick with the
+// acceleration a + c: the identity holds with f_n = M (a_n + c_n) + K u_n, so the work of its
+// correction force M c is booked too (integrator_correction). In a closed system that work is
+// the change of (h^2/24) (K u_{n+1})^T M^{-1} K u_n, which bounds it: the scheme conserves
+// W_{n+1/2} minus that term (its modified energy), and the ledger closes with it to round-off.
 #pragma once
 #include <petscts.h>
 
@@ -40,6 +45,7 @@ struct EnergyLedger {
   // shadow are then the soil's own) and D = hysteretic_work + E_r is booked.
   double hysteretic_work = 0;        // cumulative work done against f_hy
   double hysteretic_dissipated = 0;  // D = hysteretic_work + E_r, at the last evaluation
+  double integrator_correction = 0;  // cumulative work of the fourth-order correction force M c (zero at order 2)
   // Saturated scenes (porous/pore_pressure.hpp): the pore pressure's work on the skeleton is
   // internal; the fluid's shadow storage energy F_{n+1/2} joins the stored energy.
   bool   fluid = false;

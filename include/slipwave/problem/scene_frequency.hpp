@@ -18,4 +18,10 @@ struct SceneFrequency {
 
 SceneFrequency SceneTopFrequency(const Elastodynamics &model);
 
+// GLL nodes per S wavelength at frequency f in region r, p vs / (f h) with the region's
+// largest element h (its corners' shortest edge or diagonal; p = 1: the cell, and the count is
+// the usual points per wavelength): on a graded mesh the coarse cells, not the fine ones,
+// limit what the region carries.
+double RegionNodesPerWavelength(const Elastodynamics &model, PetscInt region, double f);
+
 } // namespace slipwave::problem

@@ -24,6 +24,16 @@ struct StableStep {
   double dt_drained = 1e300;  // saturated scenes: the bulk bound without the undrained stiffening alpha^2 Q^T S^-1 Q [s]
   double dt_diffusion = 1e300; // saturated scenes: the explicit pore-pressure diffusion limit [s]
   std::string governing;     // which constraint sets dt_limit
+  // The fourth-order integrator (-ts_cd_order 4): its limit and what sets it. The bulk alone
+  // (no interfaces, contact or absorbing dashpots, rigid bodies) gets the scheme's own range,
+  // physics::fourthOrderStableStep (sqrt(3) x without stiffness damping); otherwise the
+  // central-difference bound: sufficient with interfaces and rigid bodies (the scheme is
+  // central differences with the larger mass M (I - h^2/12 M^-1 K)^-1), and with absorbing
+  // dashpots, whose share of the correction is explicit, measured to hold with a margin of
+  // 1.1 or more (time/central_difference.cpp). The free-field columns step by central
+  // differences whatever the order, so their limit is the same.
+  double dt_limit_fourth_order = 0;
+  std::string governing_fourth_order;
 };
 
 // Default fraction of the stable step with contact interfaces. The open/close switching of a
@@ -45,9 +55,14 @@ struct TimeStepOptions {
 PetscErrorCode StableStepCompute(Elastodynamics *model, StableStep *step);
 // -time_step_safety (read before the heavy setup, so a bad value stops early).
 PetscErrorCode TimeStepOptionsRead(MPI_Comm comm, TimeStepOptions *options);
-// Sets the TS's step (after TSSetFromOptions): -ts_dt when given, else the safety fraction of
-// the limit shortened to a whole number of equal steps to -ts_max_time; stops with one line
-// when the step is above the limit or not positive, or the end time is not positive.
-PetscErrorCode TimeStepChoose(TS ts, const StableStep &step, const TimeStepOptions &options, bool interfaces);
+// The fraction of the stable limit: -time_step_safety, or the default (kSafetyBulk, or
+// kSafetyInterfaces with interfaces).
+PetscReal TimeStepSafety(const TimeStepOptions &options, bool interfaces);
+struct IntegratorStep; // problem/integrator_step.hpp
+// Sets the TS's step (after TSSetFromOptions and IntegratorStepChoose): -ts_dt when given,
+// else the choice's step shortened to a whole number of equal steps to -ts_max_time; stops
+// with one line when the step is above the order's limit or not positive, or the end time is
+// not positive.
+PetscErrorCode TimeStepChoose(TS ts, const IntegratorStep &choice);
 
 } // namespace slipwave::problem
