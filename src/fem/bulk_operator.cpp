@@ -260,10 +260,19 @@ PetscErrorCode BulkOperator::setupSpectral(DM dm, const mesh::SpectralLayout &la
   // The certified bound costs a dense Cholesky per distinct geometry: cheap on box meshes
   // (one per region) and in 2D; unstructured 3D meshes take the Collatz-Wielandt bound
   // (also rigorous, ~1.2-1.3x looser, ~7x cheaper: docs/spectral-kernels.md).
-  const bool certified = dim_ == 2 || spectral_.distinctGeometries() <= 256;
+  // The choice is the same on every rank (the sum of the ranks' counts: the mesh's count
+  // when geometries are unique, as on unstructured meshes), so the step does not depend on it.
+  MPI_Comm comm       = PetscObjectComm((PetscObject)dm);
+  PetscInt geometries = spectral_.distinctGeometries();
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &geometries, 1, MPIU_INT, MPI_SUM, comm));
+  const bool certified = dim_ == 2 || geometries <= 256;
   omega2_bound_        = spectral_.maxElementEigenBound(certified ? EigenBoundKind::Certified : EigenBoundKind::CollatzWielandt);
-  MPI_Comm comm        = PetscObjectComm((PetscObject)dm);
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &omega2_bound_, 1, MPI_DOUBLE, MPI_MAX, comm));
+  // Another rank sees a cell in another orientation, which moves its bound by round-off:
+  // rounded up to 24 bits (6e-8, still an upper bound), every partition steps with the same dt.
+  int          exponent = 0;
+  const double mantissa = std::frexp(omega2_bound_, &exponent);
+  omega2_bound_         = std::ldexp(std::ceil(std::ldexp(mantissa, 24)), exponent - 24);
   // Element size from the corners (index 0 or p along each direction).
   h_elem_min_          = 1e300;
   const PetscInt ncorner = dim_ == 2 ? 4 : 8, n1 = degree_ + 1;

@@ -142,6 +142,10 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
     const bool diffusion  = !m->pore->subcycle && step->dt_diffusion < step->dt_limit;
     step->governing       = diffusion ? std::string("pore-pressure diffusion (explicit, Gershgorin bound on S^-1 H)") : "undrained " + step->governing;
     if (!m->pore->subcycle) step->dt_limit = std::min(step->dt_limit, step->dt_diffusion);
+    // Saturated regions step by central differences only (-ts_cd_order 4 is refused with
+    // them): no fourth-order range, so the default order stays 2 and the diffusion counts.
+    step->dt_limit_fourth_order  = step->dt_limit;
+    step->governing_fourth_order = step->governing;
   }
   PetscFunctionReturn(0);
 }

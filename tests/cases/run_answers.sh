@@ -26,7 +26,7 @@
 # ranks (the bounds of default_scene_ranks.sh: 1e-9 of u, 1e-8 of a and of what comes
 # from it), the station rows are uniform, every round(0.005 / dt) steps, rigid_block.csv has
 # a row per station row, and 15 s of stations (the default scene) stay under 1 MB a file.
-# A restart with the default sampling (0.4 s, from a checkpoint at step 2000, which is not a
+# A restart with the default sampling (0.4 s, from a checkpoint at step 1000, which is not a
 # sample step) writes station and rigid-body files identical to the straight run's, and
 # counts the steps it ran.
 set -eu -o pipefail
@@ -42,7 +42,7 @@ $PY scripts/scene_metrics.py "$WORK/np2" --json "$WORK/metrics.json" > /dev/null
 short="$opts -ts_max_time 0.4 -output_interval 1"
 together "$SLIPWAVE_BINARY" $opts -output_interval 1 -output_dir "$WORK/np1" > "$WORK/np1.log"
 together "$SLIPWAVE_BINARY" $short -output_dir "$WORK/straight" > "$WORK/straight.log"
-together "$SLIPWAVE_BINARY" $short -checkpoint_interval 1000 -ts_max_steps 2000 -output_dir "$WORK/first" > /dev/null
+together "$SLIPWAVE_BINARY" $short -checkpoint_interval 500 -ts_max_steps 1000 -output_dir "$WORK/first" > /dev/null
 together_wait
 $PY - "$WORK" <<'PY'
 import json, sys
@@ -99,11 +99,11 @@ sys.exit(0 if ok else 1)
 PY
 "$SLIPWAVE_BINARY" $short -restart "$WORK/first/checkpoint.bin" -output_dir "$WORK/resumed" > "$WORK/resumed.log"
 grep -E "^restart|^done|^answers" "$WORK/resumed.log"
-grep -q "^restart: continuing from step 2000," "$WORK/resumed.log"
+grep -q "^restart: continuing from step 1000," "$WORK/resumed.log"
 all=$(sed -n 's/^done: \([0-9]*\) steps.*/\1/p' "$WORK/straight.log")
 ran=$(sed -n 's/^done: \([0-9]*\) steps.*/\1/p' "$WORK/resumed.log")
-echo "restart: ran $ran steps of the straight run's $all (want $all - 2000)"
-[ "$ran" -eq $((all - 2000)) ]
+echo "restart: ran $ran steps of the straight run's $all (want $all - 1000)"
+[ "$ran" -eq $((all - 1000)) ]
 for f in rigid_block.csv stations/block_top.csv stations/free_field.csv; do
   cmp "$WORK/straight/$f" "$WORK/resumed/$f"
   echo "restart: $f identical to the straight run's ($(grep -c '' "$WORK/resumed/$f") lines)"
