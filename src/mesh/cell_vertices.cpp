@@ -1,5 +1,7 @@
 #include "slipwave/mesh/cell_vertices.hpp"
 
+#include "slipwave/mesh/dm_table.hpp"
+
 #include <utility>
 
 namespace slipwave::mesh {
@@ -7,30 +9,18 @@ namespace {
 
 constexpr char kTableKey[] = "slipwave_cell_vertices";
 
-PetscErrorCode destroyTable(void *ctx) {
-  PetscFunctionBeginUser;
-  delete static_cast<CellVertices *>(ctx);
-  PetscFunctionReturn(0);
-}
-
 } // namespace
 
 PetscErrorCode CellVerticesAttach(DM dm, CellVertices &&table) {
-  PetscContainer container;
   PetscFunctionBeginUser;
-  PetscCall(PetscContainerCreate(PETSC_COMM_SELF, &container));
-  PetscCall(PetscContainerSetPointer(container, new CellVertices(std::move(table))));
-  PetscCall(PetscContainerSetUserDestroy(container, destroyTable));
-  PetscCall(PetscObjectCompose((PetscObject)dm, kTableKey, (PetscObject)container));
-  PetscCall(PetscContainerDestroy(&container));
+  PetscCall(DMTableAttach(dm, kTableKey, std::move(table)));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CellVerticesOf(DM dm, const CellVertices **table) {
-  PetscContainer container = nullptr;
   PetscFunctionBeginUser;
-  PetscCall(PetscObjectQuery((PetscObject)dm, kTableKey, (PetscObject *)&container));
-  if (!container) {
+  PetscCall(DMTableFind(dm, kTableKey, table));
+  if (!*table) {
     CellVertices found;
     PetscInt     c_start, c_end, v_start, v_end;
     PetscCall(DMPlexGetHeightStratum(dm, 0, &c_start, &c_end));
@@ -46,11 +36,8 @@ PetscErrorCode CellVerticesOf(DM dm, const CellVertices **table) {
                  found.per_cell);
     }
     PetscCall(CellVerticesAttach(dm, std::move(found)));
-    PetscCall(PetscObjectQuery((PetscObject)dm, kTableKey, (PetscObject *)&container));
+    PetscCall(DMTableFind(dm, kTableKey, table));
   }
-  void *ctx;
-  PetscCall(PetscContainerGetPointer(container, &ctx));
-  *table = static_cast<const CellVertices *>(ctx);
   PetscFunctionReturn(0);
 }
 

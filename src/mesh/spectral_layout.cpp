@@ -1,5 +1,6 @@
 #include "slipwave/mesh/spectral_layout.hpp"
 
+#include "slipwave/mesh/dm_table.hpp"
 #include "slipwave/mesh/labels.hpp"
 
 #include <cmath>
@@ -9,12 +10,6 @@ namespace slipwave::mesh {
 namespace {
 
 constexpr char kLayoutKey[] = "slipwave_spectral_layout";
-
-PetscErrorCode destroyLayout(void *ctx) {
-  PetscFunctionBeginUser;
-  delete static_cast<SpectralLayout *>(ctx);
-  PetscFunctionReturn(0);
-}
 
 // Signed Jacobian of the Q1 map at the centre of the frame's corners (x: lexicographic).
 double centreJacobian(PetscInt dim, const double *x) {
@@ -208,16 +203,9 @@ PetscErrorCode SpectralLayoutBuild(DM dm, PetscInt degree, SpectralLayout *L) {
 }
 
 PetscErrorCode SpectralLayoutOf(DM dm, const SpectralLayout **layout) {
-  PetscContainer container = nullptr;
   PetscFunctionBeginUser;
-  *layout = nullptr;
-  PetscCall(PetscObjectQuery((PetscObject)dm, kLayoutKey, (PetscObject *)&container));
-  if (container) {
-    void *ctx;
-    PetscCall(PetscContainerGetPointer(container, &ctx));
-    *layout = static_cast<const SpectralLayout *>(ctx);
-    PetscFunctionReturn(0);
-  }
+  PetscCall(DMTableFind(dm, kLayoutKey, layout));
+  if (*layout) PetscFunctionReturn(0);
   DMLabel position;
   PetscCall(DMGetLabel(dm, kSpectralPositionLabel, &position));
   if (!position) PetscFunctionReturn(0);
@@ -243,13 +231,8 @@ PetscErrorCode SpectralLayoutOf(DM dm, const SpectralLayout **layout) {
 }
 
 PetscErrorCode SpectralLayoutAttach(DM dm, SpectralLayout &&layout) {
-  PetscContainer container;
   PetscFunctionBeginUser;
-  PetscCall(PetscContainerCreate(PETSC_COMM_SELF, &container));
-  PetscCall(PetscContainerSetPointer(container, new SpectralLayout(std::move(layout))));
-  PetscCall(PetscContainerSetUserDestroy(container, destroyLayout));
-  PetscCall(PetscObjectCompose((PetscObject)dm, kLayoutKey, (PetscObject)container));
-  PetscCall(PetscContainerDestroy(&container));
+  PetscCall(DMTableAttach(dm, kLayoutKey, std::move(layout)));
   PetscFunctionReturn(0);
 }
 
