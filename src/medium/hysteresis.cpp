@@ -110,29 +110,29 @@ bool untouched(const HystereticRegion &reg, size_t k, const double *u, size_t va
   return true;
 }
 
-// f_local += vol B^T T at a point of a degree-1 element of Nen nodes (dN: the point's shape
-// gradients), its loops unrolled.
+// fe += vol B^T T at a point of a degree-1 element of Nen nodes (dN: the point's shape
+// gradients; fe: the element's nodal forces, node-major), its loops unrolled.
 template <int Dim, int Nen>
-void scatterLinear(const double *dN, const PetscInt *dofs, const double (*T)[3], double vol, PetscScalar *f_local) {
+void scatterLinear(const double *dN, const double (*T)[3], double vol, double *fe) {
   for (int a = 0; a < Nen; ++a)
     for (int i = 0; i < Dim; ++i) {
       double s = 0;
       for (int j = 0; j < Dim; ++j) s += T[i][j] * dN[a * Dim + j];
-      f_local[dofs[a] + i] += vol * s;
+      fe[a * Dim + i] += vol * s;
     }
 }
 
-// f_local += vol B^T T at point q of element k (T the symmetric stress tensor, row-major 3x3).
+// fe += vol B^T T at point q (index p) of an element, fe its nodal forces (node-major; T the
+// symmetric stress tensor, row-major 3x3).
 template <int Dim>
-void scatter(const Hysteresis &h, const HystereticRegion &reg, size_t k, int q, size_t p, const double (*T)[3], double vol, PetscScalar *f_local) {
+void scatter(const Hysteresis &h, const HystereticRegion &reg, int q, size_t p, const double (*T)[3], double vol, double *fe) {
   const PetscInt nen = h.nodes;
-  const PetscInt *dofs = &reg.dofs[k * nen];
   if (h.degree == 1) {
     // Triangles (3 nodes), quadrilaterals and tetrahedra (4), hexahedra (8).
     const double *dN = &reg.gradient[p * nen * Dim];
-    if (nen == 3) scatterLinear<Dim, 3>(dN, dofs, T, vol, f_local);
-    else if (nen == 4) scatterLinear<Dim, 4>(dN, dofs, T, vol, f_local);
-    else scatterLinear<Dim, 8>(dN, dofs, T, vol, f_local);
+    if (nen == 3) scatterLinear<Dim, 3>(dN, T, vol, fe);
+    else if (nen == 4) scatterLinear<Dim, 4>(dN, T, vol, fe);
+    else scatterLinear<Dim, 8>(dN, T, vol, fe);
     return;
   }
   // dN_a/dxi_k(q) is nonzero only for the nodes a on line k through q: D[q_k][a_k].
@@ -148,11 +148,46 @@ void scatter(const Hysteresis &h, const HystereticRegion &reg, size_t k, int q, 
     }
     const double *Dq = &h.derivative[lp.along[k2] * n1];
     for (int m = 0; m < n1; ++m) {
-      const PetscInt a = dofs[lp.on(k2, m)];
-      for (int i = 0; i < Dim; ++i) f_local[a + i] += Dq[m] * S[i];
+      double *fa = &fe[lp.on(k2, m) * Dim];
+      for (int i = 0; i < Dim; ++i) fa[i] += Dq[m] * S[i];
     }
   }
 }
+
+// The nodal forces of a region's elements, gathered element by element (each point's B^T r
+// into its element's, then the element's into f_local once): the points of an element write
+// its nodes many times (4 Gauss points, 25 GLL points at p = 4), a local array rather than
+// the scattered entries of f_local.
+class ElementForces {
+public:
+  ElementForces(const Hysteresis &h, const HystereticRegion &reg, PetscScalar *f_local) : reg_(reg), f_(f_local), nen_(h.nodes), fe_((size_t)h.nodes * h.dim) {}
+  ~ElementForces() { flush(); }
+  // The forces of element k, zero when it is first asked for.
+  double *of(size_t k) {
+    if (k != element_) {
+      flush();
+      element_ = k;
+    }
+    return fe_.data();
+  }
+
+private:
+  void flush() {
+    if (element_ == kNone) return;
+    const PetscInt *dofs = &reg_.dofs[element_ * nen_];
+    const size_t    dim  = fe_.size() / nen_;
+    for (PetscInt a = 0; a < nen_; ++a)
+      for (size_t i = 0; i < dim; ++i) f_[dofs[a] + i] += fe_[a * dim + i];
+    std::fill(fe_.begin(), fe_.end(), 0.0);
+    element_ = kNone;
+  }
+  static constexpr size_t kNone = SIZE_MAX;
+  const HystereticRegion &reg_;
+  PetscScalar            *f_;
+  PetscInt                nen_;
+  std::vector<double>     fe_;
+  size_t                  element_ = kNone;
+};
 
 // C:eps - sigma as a symmetric tensor (xx, yy, zz, xy, yz, xz) from the kernel's stress. Its
 // products rounded apart (numerics/rounded_apart.hpp): the force, the relaxation it keeps for
@@ -196,12 +231,13 @@ PointState committedState(const Hysteresis &h, const HystereticRegion &reg, size
   return {buffer.data(), buffer.data() + kHeader};
 }
 
-// f_local += vol B^T r at point q of element k, r the relaxation stress (xx, yy, zz, xy, yz, xz).
+// fe += vol B^T r at point q (index p) of an element, r the relaxation stress (xx, yy, zz, xy,
+// yz, xz), fe the element's nodal forces.
 template <int Dim>
-void scatterRelaxation(const Hysteresis &h, const HystereticRegion &reg, size_t k, int q, size_t p, const double *r, double vol, PetscScalar *f_local) {
+void scatterRelaxation(const Hysteresis &h, const HystereticRegion &reg, int q, size_t p, const double *r, double vol, double *fe) {
   // Tensor rows (xx, xy, xz), (xy, yy, yz), (xz, yz, zz) of r.
   const double T[3][3] = {{r[0], r[3], r[5]}, {r[3], r[1], r[4]}, {r[5], r[4], r[2]}};
-  scatter<Dim>(h, reg, k, q, p, T, vol, f_local);
+  scatter<Dim>(h, reg, q, p, T, vol, fe);
 }
 
 // The relaxation stress a point keeps for HysteresisAddRegionForce: its first kStress
@@ -215,6 +251,7 @@ template <int Dim, class Stress, class Skip = EveryElement>
 void regionForce(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, double scale, PetscScalar *f_local, double *kept, Stress stress,
                  Skip skip = {}) {
   constexpr int kStress = physics::HystereticLayout<Dim>::kStress;
+  ElementForces forces(h, reg, f_local);
   forEachPoint<Dim>(
     h, reg, u_local,
     [&](size_t p, size_t k, int q, double vol, const double *eps) {
@@ -223,7 +260,7 @@ void regionForce(const Hysteresis &h, const HystereticRegion &reg, const PetscSc
       relaxationStress<Dim>(reg, eps, sigma, r);
       if (kept)
         for (int c = 0; c < kKept<Dim>; ++c) kept[p * kKept<Dim> + c] = r[c];
-      scatterRelaxation<Dim>(h, reg, k, q, p, r, scale * vol, f_local);
+      scatterRelaxation<Dim>(h, reg, q, p, r, scale * vol, forces.of(k));
     },
     0, SIZE_MAX, skip);
 }
@@ -253,8 +290,10 @@ void trialForce(const Hysteresis &h, HystereticRegion &reg, bool settle, const P
   };
   regionForce<Dim>(h, reg, u_local, 1.0, f_local, kept, [&](size_t p, const double *eps, double *sigma) {
     double *header = &reg.header[p * kHeader], *plastic = &reg.plastic[p * size], *strain = &reg.strain[p * kStrain];
-    // The headers stream; the plastic strains of a point with a head are hundreds of bytes
-    // from the last one's: ask for them a few points ahead, or each such point waits for memory.
+    // The plastic strains of a point with a head are hundreds of bytes from the last one's:
+    // ask for them a few points ahead, or each such point waits for memory. Whether it has a
+    // head is in its header, asked for as many points before (reading it unasked would wait).
+    if (p + 2 * kAhead < points) __builtin_prefetch(&reg.header[(p + 2 * kAhead) * kHeader]);
     if (p + kAhead < points && reg.header[(p + kAhead) * kHeader + physics::HystereticLayout<Dim>::kHead] > 0)
       for (int c = 0; c < physics::HystereticLayout<Dim>::kDeviator; ++c) __builtin_prefetch(&reg.plastic[(p + kAhead) * size + c * n], 1);
     // (The update's return, the plastic work, is not booked: the ledger's dissipation is the
@@ -279,13 +318,14 @@ void committedForce(const Hysteresis &h, const HystereticRegion &reg, const Pets
 // evaluated the same states at the same strains), without a strain or an update.
 template <int Dim>
 void keptForce(const Hysteresis &h, const HystereticRegion &reg, double scale, PetscScalar *f_local) {
-  const size_t points = (size_t)reg.points;
+  const size_t  points = (size_t)reg.points;
+  ElementForces forces(h, reg, f_local);
   for (size_t k = 0; k < reg.elements.size(); ++k)
-    for (size_t q = 0; q < points; ++q) {
+    for (size_t q = 0; q < points && reg.stirred[k]; ++q) { // (an untouched element keeps zeros)
       const size_t p = k * points + q;
       double       r[6] = {};
       std::copy(&reg.relaxation[p * kKept<Dim>], &reg.relaxation[p * kKept<Dim>] + kKept<Dim>, r);
-      scatterRelaxation<Dim>(h, reg, k, (int)q, p, r, scale * reg.volume[p], f_local);
+      scatterRelaxation<Dim>(h, reg, (int)q, p, r, scale * reg.volume[p], forces.of(k));
     }
 }
 

@@ -425,7 +425,7 @@ double FreeFieldColumn::stableStep() const { return centralDifferenceStableStep(
 // Each Iwan state's tail age (updates since the tail was set) to or from its kSince slot at
 // update `now` (the same map both ways).
 void FreeFieldColumn::swapTailAges(std::vector<double> &states, double now) const {
-  if (soil_.empty()) return; // an elastic column keeps no Iwan states
+  if (!hysteretic()) return; // an elastic column keeps no Iwan states
   for (int e = 0; e < elementCount(); ++e) {
     if (!soil_[e]) continue;
     const int size = soilStateSize(dim_, *soil_[e]);
