@@ -168,7 +168,7 @@ def parse_log(path):
     # "s per step" carries 3 significant digits where "s wall" has 2 decimals.
     loop = max(wall, steps * per) if wall < 10 else wall
     nodes = re.search(r"cells, (\d+) nodes", text)
-    order = re.search(r"time integrator: .*?\(-ts_cd_order (\d)\)", text)
+    order = re.search(r"\(-ts_cd_order (\d)", text)
     return steps, loop, int(nodes.group(1)) if nodes else None, int(order.group(1)) if order else 2
 
 

@@ -2,12 +2,12 @@
 # velocities at 25 and 50 m, 1 vs 2 ranks to 1e-10, energy balance 1e-9) on a mesh coarse for
 # the time integrator to matter (issue 25): 17 x 17 elements of degree 4, 6.56 GLL nodes per S
 # wavelength at the Ricker's top frequency 27.6 Hz (coarser than the issue's 6.8), at the
-# default step. There the default is the fourth-order integrator (its step, 0.9 of the
-# central-difference bound that absorbing sides keep, is 3.2 x the step central differences
-# would need to keep their time error below the space error, 2.1e-4), limited by stability;
-# bound 0.4 % relative L2 (the issue's). Measured at commit: 0.16-0.32 % (central
-# differences at 0.9 of their limit, the old default: 0.52-1.17 %; at their accuracy step,
-# 3.2 x as many steps: 0.17-0.40 %).
+# default step. There the default is the fourth-order integrator at 0.9 of the
+# central-difference bound that absorbing sides keep (1.32e-3 s: 14.7 x the step central
+# differences would need to keep their time error below the space error at half the top
+# frequency), limited by stability; bound 0.4 % relative L2 (the issue's). Measured at commit:
+# 0.16-0.32 % (central differences at 0.9 of their limit, the old default: 0.52-1.17 %; at
+# 0.28 of it, 3.2 x as many steps: 0.17-0.40 %).
 set -eu
 LAMB_CELLS=68 LAMB_BOUND=0.004 SEM_DEGREE=4 bash tests/cases/lamb_line_load.sh
 log="${BUILD:-build}/tests/work/lamb_line_load_p4/np1.log"
