@@ -178,6 +178,18 @@ PetscErrorCode TimeStepChoose(TS ts, const IntegratorStep &choice) {
              "-ts_dt = %.6g s is above the stable limit %.6g s (%s, -ts_cd_order %" PetscInt_FMT "); allowed: 0 < dt <= %.6g s (omit -ts_dt to use %.2f of the limit)", (double)dt,
              choice.dt_limit, choice.governing.c_str(), choice.order, choice.dt_limit, (double)choice.safety);
   PetscCheck(dt > 0, comm, PETSC_ERR_USER_INPUT, "-ts_dt = %g; allowed: 0 < dt <= %.6g s", (double)dt, choice.dt_limit);
+  // The user's step too, where the run reaches max_time (not where -ts_max_steps ends it
+  // first): rounded down to the nearest step that divides it, and said. (Kept, the last step
+  // was shortened and the ledger's balance error rose from round-off to ~1e-6.)
+  PetscInt max_steps;
+  PetscCall(TSGetMaxSteps(ts, &max_steps));
+  const double steps = max_time > 0 && dt > 0 ? std::ceil(max_time / dt * (1 - 1e-12)) : 0;
+  if (user_dt && steps > 0 && steps <= max_steps && std::fabs(steps * dt - max_time) > 1e-12 * max_time) {
+    PetscCall(PetscPrintf(comm, "  -ts_dt = %g s rounded down to %.9g s: %.0f equal steps to -ts_max_time %g s (a shortened last step would break the energy balance)\n",
+                          (double)dt, (double)(max_time / steps), steps, (double)max_time));
+    dt = max_time / steps;
+    PetscCall(TSSetTimeStep(ts, dt));
+  }
   PetscCheck(max_time > 0, comm, PETSC_ERR_USER_INPUT, "-ts_max_time = %g; allowed: > 0 s", (double)max_time);
   PetscFunctionReturn(0);
 }
