@@ -21,6 +21,7 @@
 #include "slipwave/input/record_files_check.hpp"
 #include "slipwave/io/input_motion_csv.hpp"
 #include "slipwave/io/stations.hpp"
+#include "slipwave/medium/hysteresis.hpp"
 #include "slipwave/porous/pore_pressure.hpp"
 #include "slipwave/problem/elastodynamics.hpp"
 #include "slipwave/problem/energy_ledger.hpp"
@@ -312,8 +313,21 @@ PetscErrorCode setInitialState(Run *r, TS ts, Vec u, Vec v) {
     PetscCall(VecDuplicate(u, &u_geo));
     PetscCall(problem::GeostaticStage(&r->model, r->geostatic, dt_geo, &g, u_geo));
     PetscCall(r->answers.SetGeostatic(r->model, r->stations, u_geo));
-    PetscCall(VecDestroy(&u_geo));
     PetscCall(PetscPrintf(r->model.comm, "%s\n", problem::GeostaticReportLine(r->geostatic, g).c_str()));
+    if (r->model.hysteresis) {
+      // Darendeli regions whose sigma'_0 comes from this stage (the states are still virgin).
+      Vec                      local;
+      const PetscScalar       *a;
+      std::vector<std::string> lines;
+      PetscCall(DMGetLocalVector(r->model.dm, &local));
+      PetscCall(DMGlobalToLocal(r->model.dm, u_geo, INSERT_VALUES, local));
+      PetscCall(VecGetArrayRead(local, &a));
+      PetscCall(medium::HysteresisSetGeostaticStress(r->model.hysteresis, r->model.comm, a, r->model.materials, &lines));
+      PetscCall(VecRestoreArrayRead(local, &a));
+      PetscCall(DMRestoreLocalVector(r->model.dm, &local));
+      for (const std::string &line : lines) PetscCall(PetscPrintf(r->model.comm, "%s\n", line.c_str()));
+    }
+    PetscCall(VecDestroy(&u_geo));
   }
   PetscCall(InitialVelocitySet(r->model.dm, r->model.bulk, r->model.bc.free_mask, r->opt.initial_velocity, r->region_velocity, v));
   PetscCall(TS2SetSolution(ts, u, v));

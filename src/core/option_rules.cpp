@@ -349,6 +349,26 @@ PetscErrorCode checkPenaltyRules(MPI_Comm comm, const std::map<std::string, std:
   PetscFunctionReturn(0);
 }
 
+// -material_<r>_mean_effective_stress geostatic takes each element's sigma'_0 from the
+// geostatic stage: the stage must run, under gravity. Checked here, before the mesh is built.
+PetscErrorCode checkGeostaticStress(MPI_Comm comm, const std::map<std::string, std::string> &given) {
+  PetscFunctionBeginUser;
+  for (const auto &[option, value] : given) {
+    PetscBool geostatic = PETSC_FALSE;
+    if (option.rfind("-material_", 0) != 0 || !endsWith(option, "_mean_effective_stress")) continue;
+    PetscCall(PetscStrcasecmp(value.c_str(), "geostatic", &geostatic));
+    if (!geostatic) continue;
+    const auto stage = given.find("-geostatic_stage"), gravity = given.find("-gravity");
+    PetscBool  on    = PETSC_FALSE;
+    if (stage != given.end()) PetscCall(PetscOptionsStringToBool(stage->second.empty() ? "true" : stage->second.c_str(), &on));
+    PetscCheck(on, comm, PETSC_ERR_USER_INPUT, "%s = geostatic without the geostatic stage; allowed: with -geostatic_stage true (and -gravity > 0), or sigma'_0 > 0 [Pa]",
+               option.c_str());
+    PetscCheck(gravity != given.end() && std::strtod(gravity->second.c_str(), nullptr) > 0, comm, PETSC_ERR_USER_INPUT,
+               "%s = geostatic without gravity; allowed: with -gravity > 0 [m/s^2] (the stage's stresses come from the weight), or sigma'_0 > 0 [Pa]", option.c_str());
+  }
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode OptionsValidate(MPI_Comm comm) {
@@ -366,6 +386,7 @@ PetscErrorCode OptionsValidate(MPI_Comm comm) {
   PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
   PetscCall(ierr);
   PetscCall(checkPenaltyRules(comm, given));
+  PetscCall(checkGeostaticStress(comm, given));
   PetscFunctionReturn(0);
 }
 

@@ -160,6 +160,11 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
   for (int e = 0; e < nseg; ++e) seg_soil[e] = region_soil[seg_min[e]];
   const std::string h_problem = side->column.setHysteresis(seg_soil);
   PetscCheck(h_problem.empty(), comm, PETSC_ERR_PLIB, "-bc_%s_type freefield: %s", name.c_str(), h_problem.c_str());
+  // Darendeli regions with sigma'_0 from the geostatic stage: the column's from its own weight
+  // (the stage's state beside a laterally confined side).
+  std::vector<bool> seg_geostatic(nseg);
+  for (int e = 0; e < nseg; ++e) seg_geostatic[e] = seg_soil[e] && materials[seg_min[e]].hysteretic.mean_stress_geostatic;
+  side->column.setGeostaticScales(bc.gravity, seg_geostatic, medium::kDarendeliReferenceStress, medium::kGeostaticStressFloor);
   if (bc.input_wave != InputWave::None) side->column.setInput((int)bc.input_component, bc.input_wave == InputWave::P);
   PetscFunctionReturn(0);
 }

@@ -47,7 +47,10 @@ struct EveryElement {
 
 // Runs fn(point index, element index k, point in the element, w |det J|, strain) over the
 // points of the region's elements k in [first, last) on this rank (default: all of them),
-// but those of an element that skip(k, its nodes' displacements) passes over.
+// but those of an element that skip(k, its nodes' displacements) passes over. The strain is
+// the model's: divided by the element's strain scale where the region has them (stresses
+// and relaxation stresses come back divided by it, energies by its square: elementScale).
+
 // Nen: the nodes of a degree-1 element (its loops unrolled), or 0 at degree p > 1.
 template <int Dim, int Nen, class Fn, class Skip>
 void forEachPointOf(const Hysteresis &h, const HystereticRegion &reg, const PetscScalar *u_local, Fn fn, size_t first, size_t last, Skip skip) {
@@ -84,6 +87,8 @@ void forEachPointOf(const Hysteresis &h, const HystereticRegion &reg, const Pets
       }
       double eps[kStrain];
       strainOf<Dim>(G, eps);
+      if (!reg.scale.empty())
+        for (int c = 0; c < kStrain; ++c) eps[c] /= reg.scale[k];
       fn(p, k, (int)q, reg.volume[p], eps);
     }
   }
@@ -109,6 +114,10 @@ bool untouched(const HystereticRegion &reg, size_t k, const double *u, size_t va
     if (u[i] != 0) return false;
   return true;
 }
+
+// Element k's strain scale (1 where the region has none): what turns the model's stress at
+// the scaled strain into the point's (HystereticRegion::scale).
+inline double elementScale(const HystereticRegion &reg, size_t k) { return reg.scale.empty() ? 1.0 : reg.scale[k]; }
 
 // fe += vol B^T T at a point of a degree-1 element of Nen nodes (dN: the point's shape
 // gradients; fe: the element's nodal forces, node-major), its loops unrolled.
@@ -258,6 +267,8 @@ void regionForce(const Hysteresis &h, const HystereticRegion &reg, const PetscSc
       double sigma[kStress], r[6];
       stress(p, eps, sigma);
       relaxationStress<Dim>(reg, eps, sigma, r);
+      if (!reg.scale.empty())
+        for (double &rc : r) rc *= reg.scale[k];
       if (kept)
         for (int c = 0; c < kKept<Dim>; ++c) kept[p * kKept<Dim> + c] = r[c];
       scatterRelaxation<Dim>(h, reg, q, p, r, scale * vol, forces.of(k));
@@ -359,13 +370,14 @@ double relaxationEnergy(Hysteresis *h, const PetscScalar *u_local) {
     auto         skip   = [&](size_t k, const double *u) { return untouched(reg, k, u, values); };
     forEachPoint<Dim>(
       *h, reg, u_local,
-      [&](size_t p, size_t, int, double vol, const double *eps) {
+      [&](size_t p, size_t k, int, double vol, const double *eps) {
         double tr = 0, ee = 0;
         for (int c = 0; c < Dim; ++c) tr += eps[c];
         for (int c = 0; c < physics::HystereticLayout<Dim>::kStrain; ++c) ee += (c < 3 && c < Dim ? 1.0 : 2.0) * eps[c] * eps[c];
         const double     linear = 0.5 * reg.lambda * tr * tr + reg.mu * ee;
         const PointState state  = committedState<Dim>(*h, reg, p, buffer);
-        sum += vol * (linear - physics::hystereticStoredEnergy<Dim>(*reg.model, state.header, state.plastic, eps));
+        const double     s2     = elementScale(reg, k) * elementScale(reg, k);
+        sum += s2 * vol * (linear - physics::hystereticStoredEnergy<Dim>(*reg.model, state.header, state.plastic, eps));
       },
       0, SIZE_MAX, skip);
   }
@@ -388,8 +400,9 @@ void elementFields(const HystereticRegion &reg, const Hysteresis &h, const Petsc
       // Evaluate only (no state out): the committed state stays as it is.
       physics::hystereticUpdate<Dim>(*reg.model, state.header, state.plastic, eps, sigma, nullptr, nullptr, 0);
       relaxationStress<Dim>(reg, eps, sigma, r);
-      for (int j = 0; j < 6; ++j) mean[6 * (k - first) + j] += r[j] / reg.points;
-      largest[k - first] = std::max(largest[k - first], physics::maxShearStrain<Dim>(*reg.model, state.header));
+      const double scale = elementScale(reg, k);
+      for (int j = 0; j < 6; ++j) mean[6 * (k - first) + j] += scale * r[j] / reg.points;
+      largest[k - first] = std::max(largest[k - first], scale * physics::maxShearStrain<Dim>(*reg.model, state.header));
     },
     first, last);
 }
@@ -408,7 +421,7 @@ void cellFields(const Hysteresis *h, const PetscScalar *u_local, double *relaxat
       if (region != (PetscInt)g) continue;
       for (int j = 0; j < 6; ++j) relaxation[6 * c + j] = mean[6 * k + j];
       max_strain[c]    = largest[k];
-      modulus_ratio[c] = reg.model->secantModulusRatio(largest[k]);
+      modulus_ratio[c] = reg.model->secantModulusRatio(largest[k] / elementScale(reg, k));
     }
   }
 }
@@ -526,6 +539,9 @@ PetscErrorCode HysteresisCreate(const fem::BulkOperator &bulk, const std::vector
     reg.plastic.assign(reg.volume.size() * (size - header), 0.0);
     reg.strain.assign(reg.volume.size() * (dim == 2 ? physics::HystereticLayout<2>::kStrain : physics::HystereticLayout<3>::kStrain), 0.0);
     reg.stirred.assign(reg.elements.size(), 0);
+    // Scales of 1 until the geostatic stage sets them (HysteresisSetGeostaticStress), or a
+    // checkpoint brings them back.
+    if (materials[r].hysteretic.mean_stress_geostatic) reg.scale.assign(reg.elements.size(), 1.0);
     h->regions.push_back(std::move(reg));
   }
   *out = h;
@@ -588,13 +604,15 @@ std::vector<double> HysteresisState(const Hysteresis *h) {
       physics::swapTailAge(&s[s.size() - header], now);
       s.insert(s.end(), state.plastic, state.plastic + size);
     }
+    // The geostatic stage is not run again on a restart: its strain scales come from here.
+    s.insert(s.end(), reg.scale.begin(), reg.scale.end());
   }
   return s;
 }
 
 PetscInt HysteresisStateSize(const Hysteresis *h) {
   size_t n = 0;
-  for (const HystereticRegion &reg : h->regions) n += reg.header.size() + reg.plastic.size();
+  for (const HystereticRegion &reg : h->regions) n += reg.header.size() + reg.plastic.size() + reg.scale.size();
   return (PetscInt)n;
 }
 
@@ -616,6 +634,8 @@ void HysteresisSetState(Hysteresis *h, const std::vector<double> &s) {
       for (size_t j = 0; j < header; ++j)
         if (j != since && state[j] != 0) reg.stirred[p / reg.points] = 1;
     }
+    std::copy_n(o, reg.scale.size(), reg.scale.begin());
+    o += reg.scale.size();
     // No strain is pending (pending is false): the untouched elements' must be zero.
     std::fill(reg.strain.begin(), reg.strain.end(), 0.0);
     // The relaxation kept for an untouched element is zero (it is not written while skipped).
@@ -623,6 +643,47 @@ void HysteresisSetState(Hysteresis *h, const std::vector<double> &s) {
   }
   h->pending   = false;
   h->has_trial = false;
+}
+
+PetscErrorCode HysteresisSetGeostaticStress(Hysteresis *h, MPI_Comm comm, const PetscScalar *u_local, const std::vector<RegionMaterialInfo> &materials,
+                                            std::vector<std::string> *report) {
+  PetscFunctionBeginUser;
+  for (HystereticRegion &reg : h->regions) {
+    if (reg.scale.empty()) continue;
+    // sigma'_0 = -K tr(eps) (plane strain too: sigma_zz = lambda tr(eps), so the three normal
+    // stresses sum to (3 lambda + 2 mu) tr(eps)), the volume average over the element's points.
+    std::fill(reg.scale.begin(), reg.scale.end(), 1.0);
+    std::vector<double> stress(reg.elements.size(), 0.0), volume(reg.elements.size(), 0.0);
+    const double        bulk = reg.lambda + 2.0 / 3.0 * reg.mu;
+    const auto          add  = [&](size_t, size_t k, int, double vol, const double *eps) {
+      double tr = 0;
+      for (int c = 0; c < h->dim; ++c) tr += eps[c];
+      stress[k] -= vol * bulk * tr;
+      volume[k] += vol;
+    };
+    if (h->dim == 2) forEachPoint<2>(*h, reg, u_local, add);
+    else forEachPoint<3>(*h, reg, u_local, add);
+    double   range[2] = {HUGE_VAL, HUGE_VAL}; // min sigma'_0, -max sigma'_0
+    PetscInt floored  = 0;
+    for (size_t k = 0; k < reg.elements.size(); ++k) {
+      double sigma = stress[k] / volume[k];
+      if (sigma < kGeostaticStressFloor) sigma = kGeostaticStressFloor, ++floored;
+      reg.scale[k] = physics::darendeliStrainScale(sigma, kDarendeliReferenceStress);
+      range[0]     = std::min(range[0], sigma);
+      range[1]     = std::min(range[1], -sigma);
+    }
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, range, 2, MPI_DOUBLE, MPI_MIN, comm));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &floored, 1, MPIU_INT, MPI_SUM, comm));
+    const RegionMaterialInfo &m = materials[reg.region];
+    char                      line[320];
+    std::snprintf(line, sizeof line,
+                  "  hysteretic region %s: sigma'_0 from the geostatic stage %.6g .. %.6g kPa, Darendeli's gamma_r %.3g .. %.3g%s", m.region.c_str(), 1e-3 * range[0],
+                  -1e-3 * range[1], m.hysteretic.backbone.reference_strain * physics::darendeliStrainScale(range[0], kDarendeliReferenceStress),
+                  m.hysteretic.backbone.reference_strain * physics::darendeliStrainScale(-range[1], kDarendeliReferenceStress),
+                  floored ? (" (" + std::to_string(floored) + " elements below 1 kPa taken at 1 kPa)").c_str() : "");
+    report->push_back(line);
+  }
+  PetscFunctionReturn(0);
 }
 
 double HysteresisRelaxationEnergy(Hysteresis *h, const PetscScalar *u_local) { return h->dim == 2 ? relaxationEnergy<2>(h, u_local) : relaxationEnergy<3>(h, u_local); }
@@ -652,8 +713,12 @@ std::vector<std::string> HysteresisReport(const std::vector<RegionMaterialInfo> 
       std::snprintf(buf, sizeof buf, "mkz, gamma_r %.4g, s %.4g, beta %.4g", s.backbone.reference_strain, s.backbone.curvature, s.backbone.beta);
       break;
     case BackboneChoice::Darendeli:
-      std::snprintf(buf, sizeof buf, "darendeli, PI %.4g %%, OCR %.4g, sigma'_0 %.4g Pa: gamma_r %.4g, a %.4g", s.darendeli.plasticity_index, s.darendeli.ocr,
-                    s.darendeli.mean_effective_stress, s.backbone.reference_strain, s.backbone.curvature);
+      if (s.mean_stress_geostatic)
+        std::snprintf(buf, sizeof buf, "darendeli, PI %.4g %%, OCR %.4g, sigma'_0 from the geostatic stage (the curve at 1 atm: gamma_r %.4g, a %.4g)",
+                      s.darendeli.plasticity_index, s.darendeli.ocr, s.backbone.reference_strain, s.backbone.curvature);
+      else
+        std::snprintf(buf, sizeof buf, "darendeli, PI %.4g %%, OCR %.4g, sigma'_0 %.4g Pa: gamma_r %.4g, a %.4g", s.darendeli.plasticity_index, s.darendeli.ocr,
+                      s.darendeli.mean_effective_stress, s.backbone.reference_strain, s.backbone.curvature);
       break;
     case BackboneChoice::Gqh:
       std::snprintf(buf, sizeof buf, "gqh, theta %.4g,%.4g,%.4g,%.4g,%.4g", s.backbone.theta[0], s.backbone.theta[1], s.backbone.theta[2], s.backbone.theta[3],

@@ -70,7 +70,17 @@ PetscErrorCode hystereticRead(PetscOptionItems *PetscOptionsObject, MPI_Comm com
                                   "the hyperbola)", "MaterialsRead", theta, &ntheta, &has_theta));
   PetscCall(PetscOptionsReal("-plasticity_index", "Darendeli plasticity index PI [%], 0 to 200", "MaterialsRead", pi, &pi, &has_pi));
   PetscCall(PetscOptionsReal("-ocr", "Darendeli overconsolidation ratio OCR [-], 1 to 100", "MaterialsRead", ocr, &ocr, &has_ocr));
-  PetscCall(PetscOptionsReal("-mean_effective_stress", "Darendeli mean effective stress sigma'_0 [Pa], > 0 (required)", "MaterialsRead", mean_stress, &mean_stress, &has_mean));
+  char mean_text[64] = "";
+  PetscCall(PetscOptionsString("-mean_effective_stress",
+                               "Darendeli mean effective stress sigma'_0 [Pa], > 0, or geostatic (each element's from the geostatic stage, the free-field columns' "
+                               "from their weight: -(sigma_xx + sigma_yy + sigma_zz)/3) (required)",
+                               "MaterialsRead", mean_text, mean_text, sizeof mean_text, &has_mean));
+  const bool mean_geostatic = has_mean && std::strcmp(mean_text, "geostatic") == 0;
+  if (has_mean && !mean_geostatic) {
+    char *end = nullptr;
+    mean_stress = std::strtod(mean_text, &end);
+    PetscCheck(end != mean_text && *end == '\0', comm, PETSC_ERR_USER_INPUT, "-material_%s_mean_effective_stress = %s; allowed: sigma'_0 > 0 [Pa] or geostatic", r, mean_text);
+  }
   PetscCall(PetscOptionsInt("-surfaces", "number N of Iwan surfaces of a hysteretic region, 2 to 1000 (docs/hysteretic-soil.md: error and cost against N)", "MaterialsRead",
                             surfaces, &surfaces, &has_surfaces));
   PetscCall(core::OptionsChoice(PetscOptionsObject, "-stress_points",
@@ -129,9 +139,19 @@ PetscErrorCode hystereticRead(PetscOptionItems *PetscOptionsObject, MPI_Comm com
       spec->backbone = physics::mkzBackbone(gamma_r, curvature, beta, cap);
       break;
     case BackboneChoice::Darendeli:
-      PetscCheck(has_mean, comm, PETSC_ERR_USER_INPUT, "-material_%s_mean_effective_stress is missing (-material_%s_backbone darendeli); allowed: sigma'_0 > 0 [Pa]", r, r);
-      PetscCheck(mean_stress > 0 && std::isfinite(mean_stress), comm, PETSC_ERR_USER_INPUT, "-material_%s_mean_effective_stress = %g; allowed: sigma'_0 > 0 [Pa]", r,
+      PetscCheck(has_mean, comm, PETSC_ERR_USER_INPUT, "-material_%s_mean_effective_stress is missing (-material_%s_backbone darendeli); allowed: sigma'_0 > 0 [Pa] or geostatic",
+                 r, r);
+      // geostatic: the model is the curve at 1 atm, each point's strains scaled by its
+      // sigma'_0 (physics::darendeliStrainScale). A cap would scale with them, which no
+      // strength does (an undrained strength grows with sigma'_v, not as sigma'_0^0.35).
+      PetscCheck(!mean_geostatic || !has_strength, comm, PETSC_ERR_USER_INPUT,
+                 "-material_%s_strength with -material_%s_mean_effective_stress geostatic; allowed: one of them (the strains of a point are scaled by its sigma'_0, "
+                 "which would scale the cap too)",
+                 r, r);
+      if (mean_geostatic) mean_stress = kDarendeliReferenceStress;
+      PetscCheck(mean_stress > 0 && std::isfinite(mean_stress), comm, PETSC_ERR_USER_INPUT, "-material_%s_mean_effective_stress = %g; allowed: sigma'_0 > 0 [Pa] or geostatic", r,
                  (double)mean_stress);
+      spec->mean_stress_geostatic           = mean_geostatic;
       PetscCheck(pi >= 0 && pi <= 200, comm, PETSC_ERR_USER_INPUT, "-material_%s_plasticity_index = %g; allowed: 0 to 200 [%%]", r, (double)pi);
       PetscCheck(ocr >= 1 && ocr <= 100, comm, PETSC_ERR_USER_INPUT, "-material_%s_ocr = %g; allowed: 1 to 100", r, (double)ocr);
       spec->darendeli.plasticity_index      = pi;

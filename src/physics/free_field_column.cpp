@@ -49,17 +49,18 @@ int soilStateSize(int dim, const HystereticSoilModel &model) { return dim == 2 ?
 // The Iwan update number `update`, in place, at a point of a height-only motion with
 // g[c] = du_c/dz (the last axis vertical): the full strain tensor of the motion in,
 // out[c] = sigma_{c z} (c = dim-1: sigma_zz) and out[dim] = sigma_xx.
-void soilPoint(const HystereticSoilModel &model, int dim, const double *g, double update, double *state, double *out) {
+// scale: the element's strain scale (the model runs at g / scale, its stress comes back times it).
+void soilPoint(const HystereticSoilModel &model, int dim, const double *g, double scale, double update, double *state, double *out) {
   if (dim == 2) {
-    const double strain[3] = {0.0, g[1], 0.5 * g[0]}; // xx, yy, xy
+    const double strain[3] = {0.0, g[1] / scale, 0.5 * g[0] / scale}; // xx, yy, xy
     double       sigma[4];
     hystereticUpdate<2>(model, state, strain, sigma, state, update);
-    out[0] = sigma[2], out[1] = sigma[1], out[2] = sigma[0];
+    out[0] = scale * sigma[2], out[1] = scale * sigma[1], out[2] = scale * sigma[0];
   } else {
-    const double strain[6] = {0.0, 0.0, g[2], 0.0, 0.5 * g[1], 0.5 * g[0]}; // xx, yy, zz, xy, yz, xz
+    const double strain[6] = {0.0, 0.0, g[2] / scale, 0.0, 0.5 * g[1] / scale, 0.5 * g[0] / scale}; // xx, yy, zz, xy, yz, xz
     double       sigma[6];
     hystereticUpdate<3>(model, state, strain, sigma, state, update);
-    out[0] = sigma[5], out[1] = sigma[4], out[2] = sigma[2], out[3] = sigma[0];
+    out[0] = scale * sigma[5], out[1] = scale * sigma[4], out[2] = scale * sigma[2], out[3] = scale * sigma[0];
   }
 }
 
@@ -206,6 +207,32 @@ std::string FreeFieldColumn::setHysteresis(const std::vector<std::shared_ptr<con
   return "";
 }
 
+void FreeFieldColumn::setGeostaticScales(double gravity, const std::vector<bool> &geostatic, double reference_stress, double floor) {
+  const int ne = elementCount();
+  soil_scale_.clear();
+  bool any = false;
+  for (int e = 0; e < ne; ++e) any = any || (soil_[e] && geostatic[e * p_]);
+  if (!any) return;
+  soil_scale_.assign(ne, 1.0);
+  // The weight above the top of element e, from the top down.
+  double above = 0;
+  for (int e = ne - 1; e >= 0; --e) {
+    double weight = 0; // of the element, per unit area
+    for (int a = 0; a < p_; ++a) weight += mat_[e * p_ + a].rho * (z_[e * p_ + a + 1] - z_[e * p_ + a]);
+    if (soil_[e] && geostatic[e * p_]) {
+      double mid = above; // the weight above the element's mid-height
+      for (int a = 0; a < p_; ++a) {
+        const double z0 = z_[e * p_ + a], z1 = z_[e * p_ + a + 1], zm = 0.5 * (z_[e * p_] + z_[(e + 1) * p_]);
+        mid += mat_[e * p_ + a].rho * std::max(0.0, z1 - std::max(z0, zm));
+      }
+      const auto   lm    = lame(mat_[e * p_]);
+      const double sigma = std::max(floor, gravity * mid * (lm.lambda + 2.0 / 3.0 * lm.mu) / (lm.lambda + 2 * lm.mu));
+      soil_scale_[e]     = darendeliStrainScale(sigma, reference_stress);
+    }
+    above += weight;
+  }
+}
+
 void FreeFieldColumn::setInput(int component, bool p_wave) {
   input_component_ = component;
   input_impedance_ = mat_.empty() ? 0.0 : mat_[0].rho * (p_wave ? mat_[0].vp : mat_[0].vs);
@@ -244,7 +271,7 @@ void FreeFieldColumn::soilForce(std::vector<double> &f) {
     double      *sig  = &soil_stress_[(size_t)e * n1 * ns];
     for (int q = 0; q <= p_; ++q) {
       for (int c = 0; c < dim_; ++c) g[c] = scaledGradient(u_, e, c, q) / L;
-      soilPoint(*soil_[e], dim_, g, soil_updates_, &soil_state_[soil_offset_[e] + (long)q * size], &sig[q * ns]);
+      soilPoint(*soil_[e], dim_, g, soil_scale_.empty() ? 1.0 : soil_scale_[e], soil_updates_, &soil_state_[soil_offset_[e] + (long)q * size], &sig[q * ns]);
     }
     for (int c = 0; c < dim_; ++c)
       for (int a = 0; a <= p_; ++a) {

@@ -160,6 +160,8 @@ double darendeliReferenceStrain(const DarendeliSoil &s) {
   return percent / 100;
 }
 
+double darendeliStrainScale(double mean_effective_stress, double reference_stress) { return std::pow(mean_effective_stress / reference_stress, kPhi[4]); }
+
 double darendeliCurvature() { return kPhi[5]; }
 
 double darendeliModulusReduction(const DarendeliSoil &s, double gamma) {

@@ -145,6 +145,24 @@ void testDarendeli() {
     unit::check(damping_ok, tag + "D at 1e-5 .. 1e-2 = b (G/Gmax)^0.1 D_Masing + D_min");
     unit::check(backbone_ok, tag + "the MKZ backbone built from it is his G/Gmax curve");
   }
+  // The strain scale of a point at sigma'_0 against the curve at a reference stress (what
+  // -material_<r>_mean_effective_stress geostatic uses): gamma_r(sigma'_0) = scale x
+  // gamma_r(reference), and G/Gmax(gamma; sigma'_0) = G/Gmax(gamma / scale; reference), from
+  // the formula (gamma_r ~ sigma'_0^phi4, phi4 = 0.3483; nothing else in G/Gmax moves).
+  {
+    const DarendeliSoil reference{15, 2, 101325, 1, 10};
+    bool                scale_ok = true;
+    for (double sigma : {1e3, 6.2e3, 62.1e3, 310.7e3, 2e6}) {
+      DarendeliSoil at = reference;
+      at.mean_effective_stress = sigma;
+      const double scale = darendeliStrainScale(sigma, reference.mean_effective_stress);
+      scale_ok = scale_ok && std::fabs(scale - std::pow(sigma / 101325, 0.3483)) <= 1e-15 * scale &&
+                 std::fabs(darendeliReferenceStrain(at) - scale * darendeliReferenceStrain(reference)) <= 1e-14 * darendeliReferenceStrain(at);
+      for (double gamma : {1e-5, 1e-4, 1e-3, 1e-2})
+        scale_ok = scale_ok && std::fabs(darendeliModulusReduction(at, gamma) - darendeliModulusReduction(reference, gamma / scale)) <= 1e-14;
+    }
+    unit::check(scale_ok, "Darendeli strain scale: (sigma'_0 / reference)^0.3483, gamma_r and G/Gmax(gamma) move by it (1 kPa .. 2 MPa)");
+  }
   // Anchors from the thesis' numbers by hand: PI = 0 at 1 atm, gamma_r = phi1 = 0.0352 %, and
   // D_min = phi6 = 0.8005 % at 1 Hz (ln 1 = 0).
   const DarendeliSoil sand{0, 1, 101325, 1, 10};

@@ -71,7 +71,15 @@ struct HystereticRegion {
   // Per element: whether any of its points has had a nonzero strain (else its states are
   // virgin at a zero strain, and a pass over the points skips it while its nodes rest).
   std::vector<unsigned char>                          stirred;
+  // Per element, a Darendeli region whose sigma'_0 comes from the geostatic stage: the strain
+  // scale s of its sigma'_0 (physics::darendeliStrainScale against the model's 1 atm), empty
+  // otherwise. Its points run the model at eps / s, so their stress is s sigma(eps / s) and
+  // their state (kept in the checkpoint with s) is the model's at the scaled strains.
+  std::vector<double>                                 scale;
 };
+
+// sigma'_0 below this is taken at it [Pa]: a free surface's first elements, or tension.
+constexpr double kGeostaticStressFloor = 1e3;
 
 struct Hysteresis {
   PetscInt                      dim = 0, nodes = 0, degree = 1; // nodes per element
@@ -102,6 +110,12 @@ void HysteresisForce(Hysteresis *h, const PetscScalar *u_local, PetscScalar *f_l
 // later HysteresisForce then keeps (kStress doubles per point), so that a call after a force
 // (before the commit) scatters them: the same bits, without a second evaluation.
 void HysteresisAddRegionForce(Hysteresis *h, PetscInt region, const PetscScalar *u_local, double scale, PetscScalar *f_local);
+// After the geostatic stage (u_local: its ghosted displacement; the states still virgin):
+// each element of a region with -material_<r>_mean_effective_stress geostatic gets the strain
+// scale of its sigma'_0 = -(sigma_xx + sigma_yy + sigma_zz)/3, the volume average over its
+// points (at least kGeostaticStressFloor). *report: a line per such region with the range.
+PetscErrorCode HysteresisSetGeostaticStress(Hysteresis *h, MPI_Comm comm, const PetscScalar *u_local, const std::vector<RegionMaterialInfo> &materials,
+                                            std::vector<std::string> *report);
 // The strains of the last HysteresisForce become the committed state (no-op without one).
 void HysteresisCommit(Hysteresis *h);
 // Committed state for checkpoints: this rank's points' states, region by region. The size is fixed by the mesh and the models (a checkpoint of another

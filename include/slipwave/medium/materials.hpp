@@ -43,8 +43,15 @@ struct HystereticSpec {
   double                                             strength = 0; // tau_max [Pa]; 0: no cap (MKZ, Darendeli, table)
   std::string                                        table_file, table_source; // choice Table: the CSV file and its "# source:"
   StressPoints                                       points = StressPoints::Gauss;
+  // choice Darendeli with -material_<r>_mean_effective_stress geostatic: the model is the curve
+  // at kDarendeliReferenceStress, each element's strains scaled by its own sigma'_0
+  // (medium/hysteresis.hpp, physics/free_field_column.hpp).
+  bool                                               mean_stress_geostatic = false;
   std::shared_ptr<const physics::HystereticSoilModel> model;
 };
+
+// The sigma'_0 of the curve a geostatic Darendeli region's model holds [Pa]: 1 atm.
+constexpr double kDarendeliReferenceStress = 101325;
 
 struct RegionMaterialInfo {
   std::string               region;

@@ -97,6 +97,14 @@ public:
   // its region use. The segments of an element share it. Call after setAttenuation, if any.
   std::string setHysteresis(const std::vector<std::shared_ptr<const HystereticSoilModel>> &models);
   bool        hysteretic() const { return !soil_offset_.empty(); }
+  // Darendeli segments whose sigma'_0 comes from the geostatic state (geostatic[segment];
+  // their model is the curve at reference_stress): each such element's strain scale
+  // (darendeliStrainScale) of sigma'_0 = sigma_v K / M at its mid-height, sigma_v = gravity x
+  // the weight of the column above, K / M its bulk over P modulus (the laterally confined
+  // column: sigma_h = lambda / M sigma_v, the main mesh's geostatic stage beside the side),
+  // at least floor. Its points run the model at the strain divided by the scale and return
+  // the stress times it, as the main mesh's (medium/hysteresis.hpp). Call after setHysteresis.
+  void setGeostaticScales(double gravity, const std::vector<bool> &geostatic, double reference_stress, double floor);
 
   // State at rest at time t0; a_0 from the input velocity v_in(t0).
   void start(double t0, double v_in0);
@@ -166,6 +174,7 @@ private:
   // drive lateral_old_[j].
   std::vector<std::shared_ptr<const HystereticSoilModel>> soil_;
   std::vector<long>            soil_offset_;
+  std::vector<double>          soil_scale_; // per element: its strain scale (setGeostaticScales), empty: 1
   std::vector<double>          soil_state_, soil_stress_, lateral_zeta_, lateral_old_;
   double                       soil_updates_ = 0; // Iwan updates so far (the kernel's count)
   int    elementCount() const { return segmentCount() / p_; }

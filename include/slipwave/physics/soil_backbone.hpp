@@ -66,6 +66,11 @@ struct DarendeliSoil {
 };
 // gamma_r = (phi1 + phi2 PI OCR^phi3) (sigma'_0/p_a)^phi4 percent, returned as a ratio.
 double darendeliReferenceStrain(const DarendeliSoil &s);
+// The strain scale of Darendeli's curve at sigma'_0 against the curve at reference_stress:
+// gamma_r grows as sigma'_0^phi4 and nothing else in G/Gmax moves, so G/Gmax(gamma; sigma'_0)
+// = G/Gmax(gamma / scale; reference) and the backbone tau(gamma) = scale tau_ref(gamma /
+// scale) (a point's Iwan model is the reference one in strains divided by the scale).
+double darendeliStrainScale(double mean_effective_stress, double reference_stress);
 // a = phi5.
 double darendeliCurvature();
 // G/Gmax = 1 / (1 + (gamma/gamma_r)^a).
