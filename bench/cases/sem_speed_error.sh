@@ -25,7 +25,6 @@ RANKS=${SEM_BENCH_RANKS:-1}
 REPEATS=${SEM_BENCH_REPEATS:-1}
 WORK=${SEM_BENCH_WORK:-$BUILD/bench/work/sem_speed_error}
 mkdir -p "$WORK"
-rm -f "$WORK/manifest.txt"
 
 eval "$($PY bench/sem_speed_error.py geometry)" # L, H, ..., and LAMB: the run's options but mesh and degree
 launch="$SW"
@@ -40,35 +39,47 @@ has_degree=0
 #            at p = 4, 8 nodes per wavelength, 3.1 % error at 0.9, 0.83 % at 0.45, 0.27 % at
 #            0.225; its dispersion (omega dt)^2 / 24 dominated the elements');
 #   default: no option: the integrator and step the code chooses (docs/spectral-elements.md:
-#            the fourth-order scheme where it pays, the step that accuracy needs).
+#            the fourth-order scheme where it pays, the step that accuracy needs);
+#   order4:  -ts_cd_order 4 at the code's step (for a case where the default keeps order 2).
 # SEM_BENCH_SAFETY_<p> still overrides the tuned mode's 0.45.
 MODES=${SEM_BENCH_MODES:-tuned default}
-while read -r p m nx ny; do
-  degree=""
-  if [ "$p" != 1 ]; then
-    if [ "$has_degree" = 0 ]; then
+
+# run_mode P M FACES MODE REPEATS MANIFEST WORKDIR OPTIONS...: the run of degree P on FACES
+# ("nx,ny" or "nx,ny,nz") elements in MODE, REPEATS times; the fastest time loop is kept and
+# its line "P M <FACES, spaces for commas> RANKS LOG STATIONS MODE" goes to MANIFEST.
+run_mode() {
+  local p=$1 m=$2 faces=$3 mode=$4 repeats=$5 manifest=$6 dir=$7
+  shift 7
+  local degree="" options="" best="" keep="" k out loop safety_var
+  [ "$p" != 1 ] && degree="-element_degree $p"
+  case $mode in
+    tuned) safety_var="SEM_BENCH_SAFETY_$p"; options="-ts_cd_order 2 -time_step_safety ${!safety_var:-0.45}" ;;
+    default) ;;
+    order4) options="-ts_cd_order 4" ;;
+    *) echo "sem_speed_error: unknown mode $mode" >&2; return 1 ;;
+  esac
+  for k in $(seq 1 "$repeats"); do
+    out="$dir/p${p}_${faces//,/x}_${mode}_np${RANKS}_$k"
+    $launch "$@" $degree $options -mesh_box_faces "$faces" -output_dir "$out" -output_overwrite > "$out.log"
+    loop=$(sed -n 's/^done: [0-9]* steps in \([0-9.]*\) s wall.*/\1/p' "$out.log")
+    echo "p = $p, ${faces//,/ x } elements, $mode: time loop $loop s"
+    if [ -z "$best" ] || $PY -c "import sys; sys.exit(0 if $loop < $best else 1)"; then best=$loop; keep=$out; fi
+  done
+  echo "$p $m ${faces//,/ } $RANKS $keep.log $keep/stations $mode" >> "$manifest"
+}
+
+# The 2D series (SEM_BENCH_2D=0 skips it): Lamb's line load.
+if [ "${SEM_BENCH_2D:-1}" != 0 ]; then
+  rm -f "$WORK/manifest.txt"
+  while read -r p m nx ny; do
+    if [ "$p" != 1 ] && [ "$has_degree" = 0 ]; then
       [ "${skipped:-}" = "$p" ] || echo "sem_speed_error: p = $p skipped: $SW has no -element_degree"
       skipped=$p; continue
     fi
-    degree="-element_degree $p"
-  fi
-  for mode in $MODES; do
-    [ "$p" = 1 ] && [ "$mode" != default ] && continue
-    options=""
-    if [ "$mode" = tuned ]; then
-      safety_var="SEM_BENCH_SAFETY_$p"
-      options="-ts_cd_order 2 -time_step_safety ${!safety_var:-0.45}"
-    fi
-    best=""
-    for k in $(seq 1 "$REPEATS"); do
-      out="$WORK/p${p}_${nx}x${ny}_${mode}_np${RANKS}_$k"
-      $launch $LAMB $degree $options -mesh_box_faces "$nx,$ny" -output_dir "$out" -output_overwrite > "$out.log"
-      loop=$(sed -n 's/^done: [0-9]* steps in \([0-9.]*\) s wall.*/\1/p' "$out.log")
-      echo "p = $p, $nx x $ny elements, $mode: time loop $loop s"
-      if [ -z "$best" ] || $PY -c "import sys; sys.exit(0 if $loop < $best else 1)"; then best=$loop; keep=$out; fi
+    for mode in $MODES; do
+      [ "$p" = 1 ] && [ "$mode" != default ] && continue
+      run_mode "$p" "$m" "$nx,$ny" "$mode" "$REPEATS" "$WORK/manifest.txt" "$WORK" $LAMB
     done
-    echo "$p $m $nx $ny $RANKS $keep.log $keep/stations $mode" >> "$WORK/manifest.txt"
-  done
-done < <($PY bench/sem_speed_error.py plan)
-
-$PY bench/sem_speed_error.py analyse "$WORK/manifest.txt"
+  done < <($PY bench/sem_speed_error.py plan)
+  $PY bench/sem_speed_error.py analyse "$WORK/manifest.txt"
+fi
