@@ -14,6 +14,19 @@
 # stable step, and the defaults (the fourth-order integrator where it pays); the analysis
 # gives the time to 1 % and to 0.1 % error per (p, mode).
 # Default series: ~15 min on one idle core (p = 1 at 48 nodes per wavelength is ~4-5 min).
+# SEM_BENCH_2D=0 skips this 2D series.
+#
+# The 3D series (issue 25; SEM_BENCH_3D=0 skips it): a vertical point force (Ricker f0 10 Hz) in
+# an elastic whole space, its octant meshed (three planes of symmetry), six receivers at 2-4
+# minimum S wavelengths, relative L2 error of their velocity traces against a reference run
+# (degree 8, 10^3 elements, fourth order at 0.45 of the stable step; its own error is measured
+# against the closed form), set out in bench/sem_speed_error_3d.py. Per p in
+# SEM_BENCH_3D_DEGREES (default "4"; "2 4" adds p = 2, ~5 min more) a series of meshes
+# (SEM_BENCH_3D_PPW_<p>: target GLL nodes per lambda_min, default p = 4: "3 4 5 6 8"), each in
+# the modes SEM_BENCH_MODES; SEM_BENCH_3D_REF="p m safety" replaces the reference run, which is
+# kept in the work folder and rerun only when its options, the ranks or the executable change.
+# Table to the 3D section of SEM_BENCH_DOC; CSV rows "sem_speed_error_3d,...". ~7 min on one
+# core of a loaded 2-core machine, of which the reference ~2.5 min.
 set -eu
 cd "$(dirname "$0")/../.."
 BUILD=${BUILD:-build}
@@ -40,7 +53,8 @@ has_degree=0
 #            0.225; its dispersion (omega dt)^2 / 24 dominated the elements');
 #   default: no option: the integrator and step the code chooses (docs/spectral-elements.md:
 #            the fourth-order scheme where it pays, the step that accuracy needs);
-#   order4:  -ts_cd_order 4 at the code's step (for a case where the default keeps order 2).
+#   order4:  -ts_cd_order 4 at the code's step (for a case where the default keeps order 2);
+#   reference (3D only): -ts_cd_order 4 at SEM_BENCH_3D_REF's fraction of the stable step.
 # SEM_BENCH_SAFETY_<p> still overrides the tuned mode's 0.45.
 MODES=${SEM_BENCH_MODES:-tuned default}
 
@@ -56,6 +70,7 @@ run_mode() {
     tuned) safety_var="SEM_BENCH_SAFETY_$p"; options="-ts_cd_order 2 -time_step_safety ${!safety_var:-0.45}" ;;
     default) ;;
     order4) options="-ts_cd_order 4" ;;
+    reference) options="-ts_cd_order 4 -time_step_safety $REF_SAFETY" ;;
     *) echo "sem_speed_error: unknown mode $mode" >&2; return 1 ;;
   esac
   for k in $(seq 1 "$repeats"); do
@@ -82,4 +97,39 @@ if [ "${SEM_BENCH_2D:-1}" != 0 ]; then
     done
   done < <($PY bench/sem_speed_error.py plan)
   $PY bench/sem_speed_error.py analyse "$WORK/manifest.txt"
+fi
+
+# The 3D series (SEM_BENCH_3D=0 skips it): a point force in a whole space, its octant meshed,
+# errors against a reference run at a higher degree on a finer mesh (bench/sem_speed_error_3d.py).
+if [ "${SEM_BENCH_3D:-1}" != 0 ]; then
+  if [ "$has_degree" = 0 ]; then
+    echo "sem_speed_error: 3D series skipped: $SW has no -element_degree"
+  else
+    eval "$($PY bench/sem_speed_error_3d.py geometry)" # WHOLE: the runs' options but mesh, degree, integrator; REF_P, REF_M, REF_SAFETY
+    dir3="$WORK/3d"
+    mkdir -p "$dir3"
+    # The reference (1.5-4 min) is kept between runs of the script and run again only when its
+    # options, the ranks or the executable change.
+    key="$REF_P $REF_M $REF_SAFETY $RANKS $(md5sum < "$SW") $WHOLE"
+    if [ -s "$dir3/reference.txt" ] && [ "$(cat "$dir3/reference.key" 2>/dev/null)" = "$key" ]; then
+      echo "3D reference: kept from an earlier run ($(cut -d' ' -f7 "$dir3/reference.txt"))"
+    else
+      rm -f "$dir3/reference.txt" "$dir3/reference.key"
+      run_mode "$REF_P" "$REF_M" "$REF_M,$REF_M,$REF_M" reference 1 "$dir3/reference.txt" "$dir3" $WHOLE
+      echo "$key" > "$dir3/reference.key"
+    fi
+    cp "$dir3/reference.txt" "$dir3/manifest.txt"
+    while read -r p m; do
+      for mode in $MODES; do
+        run_mode "$p" "$m" "$m,$m,$m" "$mode" "$REPEATS" "$dir3/manifest.txt" "$dir3" $WHOLE
+        # Where the defaults keep central differences (the coarsest meshes, where the elements'
+        # error leaves the step free) the fourth order runs too, at the code's step: with the
+        # default runs that chose it, it makes the series "order4" (the analysis).
+        if [ "$mode" = default ] && grep -q -- "(-ts_cd_order 2, the default)" "$(tail -n 1 "$dir3/manifest.txt" | cut -d' ' -f7)"; then
+          run_mode "$p" "$m" "$m,$m,$m" order4 "$REPEATS" "$dir3/manifest.txt" "$dir3" $WHOLE
+        fi
+      done
+    done < <($PY bench/sem_speed_error_3d.py plan)
+    $PY bench/sem_speed_error_3d.py analyse "$dir3/manifest.txt"
+  fi
 fi
