@@ -21,8 +21,8 @@
 # minimum S wavelengths, relative L2 error of their velocity traces against a reference run
 # (degree 8, 10^3 elements, fourth order at 0.45 of the stable step; its own error is measured
 # against the closed form), set out in bench/sem_speed_error_3d.py. Per p in
-# SEM_BENCH_3D_DEGREES (default "4"; "2 4" adds p = 2, ~5 min more) a series of meshes
-# (SEM_BENCH_3D_PPW_<p>: target GLL nodes per lambda_min, default p = 4: "3 4 5 6 8"), each in
+# SEM_BENCH_3D_DEGREES (default "2 4") a series of meshes (SEM_BENCH_3D_PPW_<p>: target GLL
+# nodes per lambda_min, default p = 2: "4 5 6 8", p = 4: "3 4 5 6 8"), each in
 # the modes SEM_BENCH_MODES; SEM_BENCH_3D_REF="p m safety" replaces the reference run, which is
 # kept in the work folder and rerun only when its options, the ranks or the executable change.
 # Table to the 3D section of SEM_BENCH_DOC; CSV rows "sem_speed_error_3d,...". ~7 min on one
