@@ -46,7 +46,7 @@ import sys
 
 import numpy as np
 
-from speed_error_common import (ROOT, TARGETS, fmt, machine_state, observed_orders, parse_log, pooled_error, replace_section,  # noqa: F401
+from speed_error_common import (ROOT, TARGETS, fmt, machine_state, main, observed_orders, parse_log, pooled_error, replace_section,  # noqa: F401
                                 ricker_rate, times_at_targets)
 
 sys.path.insert(0, os.path.join(ROOT, "tests", "tools"))
@@ -252,12 +252,4 @@ def write_doc(doc, png_name, table, lines):
 
 
 if __name__ == "__main__":
-    command = sys.argv[1] if len(sys.argv) > 1 else ""
-    if command == "geometry":
-        geometry()
-    elif command == "plan":
-        plan()
-    elif command == "analyse" and len(sys.argv) == 3:
-        analyse(sys.argv[2])
-    else:
-        sys.exit(__doc__)
+    main(__doc__, geometry, plan, analyse)

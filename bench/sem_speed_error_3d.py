@@ -33,8 +33,8 @@ Error: relative L2 of the receivers' velocity traces, v_x, v_y and v_z of all si
 sqrt(sum |v - v_ref|^2 / sum |v_ref|^2) over the station samples in [0, T] (every step), as
 bench/sem_speed_error.py does in 2D; the reference run's record, sampled at its own (shorter)
 step, is interpolated to the run's times by 4-point Lagrange cubics (a relative error of at most
-(omega dt)^4 x 9 / 16 / 4!, 1.5e-7 at the top frequency for the reference's step 2.9e-4 s). The closed form gives every
-run a second error, reported beside it, and the reference's own.
+(omega dt)^4 x 9 / 16 / 4!, 1.5e-7 at the top frequency for the reference's step 2.9e-4 s). The
+closed form gives every run a second error, reported beside it, and the reference's own.
 
 Usage (bench/cases/sem_speed_error.sh drives it):
   sem_speed_error_3d.py geometry          shell assignments: WHOLE (the runs' options but mesh,
@@ -49,11 +49,10 @@ SEM_BENCH_DOC (markdown file whose 3D results section is replaced).
 import math
 import os
 import re
-import sys
 
 import numpy as np
 
-from speed_error_common import (fmt, machine_state, observed_orders, parse_log, pooled_error, read_csv, replace_section,
+from speed_error_common import (fmt, machine_state, main, observed_orders, parse_log, pooled_error, read_csv, replace_section,
                                 ricker_rate, times_at_targets)
 
 # The material and the source's time function are the 2D series' (bench/sem_speed_error.py).
@@ -260,12 +259,4 @@ BEGIN, END = "<!-- sem_speed_error_3d: begin (written by bench/sem_speed_error_3
 
 
 if __name__ == "__main__":
-    command = sys.argv[1] if len(sys.argv) > 1 else ""
-    if command == "geometry":
-        geometry()
-    elif command == "plan":
-        plan()
-    elif command == "analyse" and len(sys.argv) == 3:
-        analyse(sys.argv[2])
-    else:
-        sys.exit(__doc__)
+    main(__doc__, geometry, plan, analyse)

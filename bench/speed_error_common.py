@@ -115,3 +115,16 @@ def replace_section(doc, begin, end, section):
         text = text + ("\n" if text and not text.endswith("\n\n") else "") + section
     with open(doc, "w") as out:
         out.write(text)
+
+
+def main(usage, geometry, plan, analyse):
+    """The command line of a series' module: geometry, plan or analyse MANIFEST (usage otherwise)."""
+    command = sys.argv[1] if len(sys.argv) > 1 else ""
+    if command == "geometry":
+        geometry()
+    elif command == "plan":
+        plan()
+    elif command == "analyse" and len(sys.argv) == 3:
+        analyse(sys.argv[2])
+    else:
+        sys.exit(usage)
