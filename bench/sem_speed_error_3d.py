@@ -249,7 +249,9 @@ def analyse(manifest):
                         out.write(f"sem_speed_error_3d,p{key[0]}_{key[1]},time_loop_at_{name}_error_{how},{value:.4g},s\n")
 
     doc = os.environ.get("SEM_BENCH_DOC", os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "docs", "spectral-elements.md"))
-    section = (f"{BEGIN}\n### 3D results (last `bench/cases/sem_speed_error.sh` run with `SEM_BENCH_3D=1`)\n\n{machine_state()}\n\n"
+    repeats = os.environ.get("SEM_BENCH_REPEATS", "1")
+    section = (f"{BEGIN}\n### 3D results (last `bench/cases/sem_speed_error.sh` run with `SEM_BENCH_3D=1`)\n\n{machine_state()} "
+               f"Time loop: the fastest of {repeats} run(s) per mesh and mode, {ref['ranks']} rank(s).\n\n"
                f"{ref_line}\n{table}\n{lines}{END}\n")
     replace_section(doc, BEGIN, END, section)
     print(f"3D table in {doc}")

@@ -25,8 +25,8 @@
 # nodes per lambda_min, default p = 2: "4 5 6 8", p = 4: "3 4 5 6 8"), each in
 # the modes SEM_BENCH_MODES; SEM_BENCH_3D_REF="p m safety" replaces the reference run, which is
 # kept in the work folder and rerun only when its options, the ranks or the executable change.
-# Table to the 3D section of SEM_BENCH_DOC; CSV rows "sem_speed_error_3d,...". ~7 min on one
-# core of a loaded 2-core machine, of which the reference ~2.5 min.
+# Table to the 3D section of SEM_BENCH_DOC; CSV rows "sem_speed_error_3d,...". ~8 min on one
+# core of a loaded 2-core machine (load 3.5-4), of which the reference 2 min.
 set -eu
 cd "$(dirname "$0")/../.."
 BUILD=${BUILD:-build}
