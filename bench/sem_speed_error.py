@@ -40,20 +40,17 @@ whole elements per 4 lambda_min), SEM_BENCH_FULL=1 (adds p = 1 meshes at 14 and 
 BENCH_CSV (rows appended there), SEM_BENCH_DOC (markdown file whose results section is
 replaced; default docs/spectral-elements.md; the PNG goes next to it).
 """
-import datetime
 import math
 import os
-import re
-import subprocess
 import sys
 
 import numpy as np
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from speed_error_common import (ROOT, TARGETS, fmt, machine_state, main, observed_orders, parse_log, pooled_error, replace_section,  # noqa: F401
+                                ricker_rate, times_at_targets)
+
 sys.path.insert(0, os.path.join(ROOT, "tests", "tools"))
-sys.path.insert(0, os.path.join(ROOT, "python"))
 from lamb_line_load import ricker, surface_response  # noqa: E402
-from slipwave import read_csv  # noqa: E402
 
 RHO, VP, VS = 2000.0, 692.820323, 400.0
 F, F0, T0 = 1e5, 10.0, 0.12
@@ -63,8 +60,6 @@ LENGTH_UNITS, DEPTH_UNITS = 12, 8        # L = 48 lambda_min, H = 32 lambda_min
 RECEIVERS = [8, 12, 16, 20, 24, 28]      # travel in lambda_min
 T_END = 1.33
 TARGET_ERROR = 0.01
-# The issue 25 goals: time to 1 % and to 0.1 % error.
-TARGETS = (0.01, 0.001)
 
 # Default refinement series, target GLL nodes per lambda_min. Sized for ~10 min on one core of
 # this machine when idle; p = 1 dominates (48 nodes per wavelength: 7.1 M DOFs, ~3900 steps,
@@ -128,8 +123,7 @@ def reference(cache):
             return data["t"], data["vx"], data["vy"]
     t = np.arange(0.0, 4.0, 2.5e-4)
     # d/dt of the Ricker: the response to it is the velocity.
-    a = (np.pi * F0 * (t - T0)) ** 2
-    dricker = -2 * (np.pi * F0) ** 2 * (t - T0) * (3 - 2 * a) * np.exp(-a)
+    dricker = ricker_rate(t, F0, T0)
     assert np.allclose(np.gradient(ricker(t, F0, T0), t)[1:-1], dricker[1:-1], atol=2e-3 * np.abs(dricker).max())
     vx, vy = [], []
     for x in receivers_x():
@@ -144,53 +138,8 @@ def reference(cache):
 def run_error(stations_dir, ref):
     from scipy.interpolate import CubicSpline
     t_ref, vx_ref, vy_ref = ref
-    num = den = 0.0
-    per_receiver = []
-    for i, k in enumerate(RECEIVERS):
-        d = read_csv(os.path.join(stations_dir, f"r{k}.csv"))
-        inside = d["t"] <= T_END + 1e-9
-        e2 = r2 = 0.0
-        for name, ref_c in (("v_x", vx_ref[i]), ("v_y", vy_ref[i])):
-            r = CubicSpline(t_ref, ref_c)(d["t"][inside])
-            e2 += np.sum((d[name][inside] - r) ** 2)
-            r2 += np.sum(r ** 2)
-        per_receiver.append(math.sqrt(e2 / r2))
-        num += e2
-        den += r2
-    return math.sqrt(num / den), per_receiver
-
-
-def parse_log(path):
-    text = open(path).read()
-    m = re.search(r"done: (\d+) steps in ([0-9.]+) s wall \(([0-9.eE+-]+) s per step\)", text)
-    steps, wall, per = int(m.group(1)), float(m.group(2)), float(m.group(3))
-    # The time loop (TSSolve: the steps and their monitor, no set-up, no final output);
-    # "s per step" carries 3 significant digits where "s wall" has 2 decimals.
-    loop = max(wall, steps * per) if wall < 10 else wall
-    nodes = re.search(r"cells, (\d+) nodes", text)
-    order = re.search(r"\(-ts_cd_order (\d)", text)
-    return steps, loop, int(nodes.group(1)) if nodes else None, int(order.group(1)) if order else 2
-
-
-def at_target(points, target=TARGET_ERROR):
-    """Time at the target error by log-log interpolation between the bracketing runs, or
-    extrapolation from the two nearest ones (flagged). points: (error, time), any order."""
-    pts = sorted(points, key=lambda q: -q[0])
-    if len(pts) < 2:
-        return None, ""
-    for (e1, t1), (e2, t2) in zip(pts, pts[1:]):
-        if e1 >= target >= e2:
-            s = math.log(target / e1) / math.log(e2 / e1)
-            return math.exp(math.log(t1) + s * math.log(t2 / t1)), "interpolated"
-    (e1, t1), (e2, t2) = (pts[-2], pts[-1]) if pts[-1][0] > target else (pts[0], pts[1])
-    if e2 >= e1 or t2 <= t1:
-        return None, ""
-    s = math.log(target / e1) / math.log(e2 / e1)
-    return math.exp(math.log(t1) + s * math.log(t2 / t1)), "extrapolated"
-
-
-def fmt(value, spec, missing="n/a"):
-    return missing if value is None else format(value, spec)
+    traces = {"v_x": vx_ref, "v_y": vy_ref}
+    return pooled_error(stations_dir, [f"r{k}" for k in RECEIVERS], ("v_x", "v_y"), lambda i, c, t: CubicSpline(t_ref, traces[c][i])(t), T_END)
 
 
 def analyse(manifest):
@@ -214,9 +163,7 @@ def analyse(manifest):
                          err_far=per_receiver[-1], rate=dofs * steps / loop / ranks))
     runs.sort(key=lambda r: (r["p"], r["mode"], r["m"]))
     series_keys = sorted({(r["p"], r["mode"]) for r in runs})
-    for r in runs:
-        prev = [q for q in runs if q["p"] == r["p"] and q["mode"] == r["mode"] and q["m"] < r["m"]]
-        r["observed"] = math.log(prev[-1]["err"] / r["err"]) / math.log(r["m"] / prev[-1]["m"]) if prev else None
+    observed_orders(runs, "m")
 
     label = lambda r: f"{r['mode']}, order {r['order']}"
     header = ("| p | integrator | elements | h / lambda_min | GLL nodes per lambda_min | DOFs | steps | time loop [s] | error | error, farthest receiver | observed order | M DOF-updates/s/core |\n"
@@ -226,9 +173,8 @@ def analyse(manifest):
         f"{100 * r['err_far']:.3g} % | {fmt(r['observed'], '.2f', '')} | {r['rate'] / 1e6:.1f} |\n" for r in runs)
 
     summary = {}
-    for key in series_keys:
+    for key, times in times_at_targets(runs).items():
         mine = [r for r in runs if (r["p"], r["mode"]) == key]
-        times = {target: at_target([(r["err"], r["loop"]) for r in mine], target) for target in TARGETS}
         summary[key] = dict(times=times, rate=mine[-1]["rate"], label=label(mine[-1]))
     q1 = summary.get((1, "default"), {}).get("times", {}).get(TARGET_ERROR, (None, ""))[0]
     lines = ("| p | integrator | time loop at 1 % error [s] | how | time loop at 0.1 % error [s] | how | Q1 time / this time at 1 % (target >= 40) | M DOF-updates/s/core (finest run) |\n"
@@ -300,31 +246,10 @@ BEGIN, END = "<!-- sem_speed_error: begin (written by bench/sem_speed_error.py) 
 
 
 def write_doc(doc, png_name, table, lines):
-    try:
-        commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, capture_output=True, text=True).stdout.strip()
-    except OSError:
-        commit = "?"
-    load = os.getloadavg()
-    section = (f"{BEGIN}\n## Results (last `bench/cases/sem_speed_error.sh` run)\n\n"
-               f"{datetime.datetime.utcnow():%Y-%m-%d %H:%M} UTC, commit {commit}, {os.cpu_count()} cores, load average "
-               f"{load[0]:.1f} / {load[1]:.1f} / {load[2]:.1f} (1 / 5 / 15 min) when the analysis ran.\n\n"
+    section = (f"{BEGIN}\n## Results (last `bench/cases/sem_speed_error.sh` run)\n\n{machine_state()}\n\n"
                f"![wall time against error]({png_name})\n\n{table}\n{lines}{END}\n")
-    text = open(doc).read() if os.path.exists(doc) else ""
-    if BEGIN in text and END in text:
-        text = text[:text.index(BEGIN)] + section + text[text.index(END) + len(END) + 1:]
-    else:
-        text = text + ("\n" if text and not text.endswith("\n\n") else "") + section
-    with open(doc, "w") as out:
-        out.write(text)
+    replace_section(doc, BEGIN, END, section)
 
 
 if __name__ == "__main__":
-    command = sys.argv[1] if len(sys.argv) > 1 else ""
-    if command == "geometry":
-        geometry()
-    elif command == "plan":
-        plan()
-    elif command == "analyse" and len(sys.argv) == 3:
-        analyse(sys.argv[2])
-    else:
-        sys.exit(__doc__)
+    main(__doc__, geometry, plan, analyse)
