@@ -2,7 +2,7 @@
 
 namespace slipwave::core {
 
-PetscLogEvent event_bulk_force, event_boundary, event_interface, event_energy, event_stations, event_output, event_guard, event_fourth_order;
+PetscLogEvent event_bulk_force, event_boundary, event_acceleration, event_interface, event_energy, event_stations, event_output, event_guard, event_fourth_order;
 PetscLogEvent event_mesh, event_bulk_setup, event_boundary_setup, event_output_open;
 PetscLogStage stage_setup, stage_geostatic, stage_solve, stage_output;
 
@@ -12,6 +12,7 @@ PetscErrorCode LogEventsRegister() {
   PetscCall(PetscClassIdRegister("slipwave", &id));
   PetscCall(PetscLogEventRegister("SW:Bulk:Force", id, &event_bulk_force));
   PetscCall(PetscLogEventRegister("SW:Boundary:Apply", id, &event_boundary));
+  PetscCall(PetscLogEventRegister("SW:Accel:Assemble", id, &event_acceleration));
   PetscCall(PetscLogEventRegister("SW:Interface:Update", id, &event_interface));
   PetscCall(PetscLogEventRegister("SW:Energy:Ledger", id, &event_energy));
   PetscCall(PetscLogEventRegister("SW:IO:Stations", id, &event_stations));

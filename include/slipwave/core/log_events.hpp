@@ -6,7 +6,8 @@
 namespace slipwave::core {
 
 extern PetscLogEvent event_bulk_force;  // SW:Bulk:Force      element loop + ghost exchange
-extern PetscLogEvent event_boundary;    // SW:Boundary:Apply  loads, incident wave, held dofs
+extern PetscLogEvent event_boundary;    // SW:Boundary:Apply  loads, incident wave, free-field columns, DRM forces
+extern PetscLogEvent event_acceleration; // SW:Accel:Assemble a = M^-1 (the forces), held dofs, ties, rigid bodies: a pass over every dof
 extern PetscLogEvent event_interface;   // SW:Interface:Update  gather, law per pair, scatter
 extern PetscLogEvent event_energy;      // SW:Energy:Ledger
 extern PetscLogEvent event_stations;    // SW:IO:Stations
