@@ -20,9 +20,7 @@ set -eu
 O="-options_file config/scenes/site_response_2d.yaml -ts_max_time 10 -output_interval 0.2 -progress_interval 100 -energy_interval 1"
 for run in TERM KILL TERM2; do
   sig=${run%2}
-  # mpiexec passes SIGTERM on and SIGKILLs its ranks 1 s later by default: on a loaded
-  # machine that came before they had flushed and said so (seen in a suite beside other runs).
-  launch="$SW"; [ "$run" = TERM2 ] && launch="env OMPI_MCA_odls_base_sigkill_timeout=20 $MPIEXEC -n 2 $SW"
+  launch="$SW"; [ "$run" = TERM2 ] && launch="$MPIEXEC -n 2 $SW"
   delay=$($PY -c "import random; print(round(random.uniform(0.5, 1.8), 2))")
   $launch $O -output_dir "$WORK/$run" > "$WORK/$run.log" 2> "$WORK/$run.err" &
   pid=$!
