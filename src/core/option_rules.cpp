@@ -23,6 +23,7 @@ enum class Kind {
   Real,       // every entry a finite number in the range
   RealOrAuto, // like Real, or the word auto
   RealOrNone, // like Real, or the word none
+  RealOrGeostatic, // like Real, or the word geostatic
   Int,        // every entry an integer in the range
   Names,      // every entry a safe file name (IsSafeFileName)
   File,       // a readable regular file (a directory, a device or an empty file is refused)
@@ -95,6 +96,7 @@ const Rule kRules[] = {
   {"-material_*_nu",           Kind::Real, 1, 1, closed(-1, 0.5), "0 <= nu < 0.5"},
   {"-material_*_damping_ratio", Kind::Real, 1, 1, {0, 0.5, false, true}, "0 <= xi < 0.5 (0: elastic)"},
   {"-material_*_reference_frequency", Kind::Real, 1, 1, magnitude(1e6), "0 < f <= 1e6 Hz"},
+  {"-material_*_mean_effective_stress", Kind::RealOrGeostatic, 1, 1, aboveZero(1e12), "sigma'_0 > 0 [Pa] or geostatic"},
   {"-damping_ratio",           Kind::Real, 1, 1, magnitude(1e3), "0 <= xi < 1"},
   {"-damping_frequencies",     Kind::Real, 2, 2, magnitude(1e6), "two frequencies f1,f2 [Hz], 0 < f1 < f2 <= 1e6"},
   {"-attenuation_band",        Kind::Real, 2, 2, magnitude(1e6), "two frequencies f_min,f_max [Hz]"},
@@ -169,6 +171,7 @@ const char *kindName(Kind k) {
   case Kind::Real: return "number";
   case Kind::RealOrAuto: return "number|auto";
   case Kind::RealOrNone: return "number|none";
+  case Kind::RealOrGeostatic: return "number|geostatic";
   case Kind::Int: return "integer";
   case Kind::Names: return "name";
   case Kind::File:
@@ -211,6 +214,7 @@ bool inRange(double x, const Range &r) {
 bool numberAllowed(const Rule &rule, const std::string &entry) {
   if (rule.kind == Kind::RealOrAuto && entry == "auto") return true;
   if (rule.kind == Kind::RealOrNone && entry == "none") return true;
+  if (rule.kind == Kind::RealOrGeostatic && entry == "geostatic") return true;
   double x = 0;
   // A word PETSc's parser took (checkOne: its named constants) or a fraction for an integer:
   // its parser's to judge where the option is read. Another word where a keyword may stand:
@@ -261,6 +265,7 @@ PetscErrorCode checkOne(MPI_Comm comm, const std::string &option, const char *va
   case Kind::Real:
   case Kind::RealOrAuto:
   case Kind::RealOrNone:
+  case Kind::RealOrGeostatic:
   case Kind::Int:
   case Kind::Names:
     PetscCheck(n >= rule->min_entries && n <= rule->max_entries, comm, PETSC_ERR_USER_INPUT, "%s has %d values; allowed: %s", option.c_str(), n, rule->allowed);
@@ -358,6 +363,12 @@ PetscErrorCode checkGeostaticStress(MPI_Comm comm, const std::map<std::string, s
     if (option.rfind("-material_", 0) != 0 || !endsWith(option, "_mean_effective_stress")) continue;
     PetscCall(PetscStrcasecmp(value.c_str(), "geostatic", &geostatic));
     if (!geostatic) continue;
+    // A cap would scale with the point's strains (s tau_max): no strength does that (an undrained
+    // strength grows with sigma'_v, not as sigma'_0^0.35; medium/hysteresis.hpp).
+    const std::string strength = option.substr(0, option.size() - std::string("mean_effective_stress").size()) + "strength";
+    PetscCheck(given.find(strength) == given.end(), comm, PETSC_ERR_USER_INPUT,
+               "%s with %s geostatic; allowed: one of them (the strains of a point are scaled by its sigma'_0, which would scale the cap too)", strength.c_str(),
+               option.c_str());
     const auto stage = given.find("-geostatic_stage"), gravity = given.find("-gravity");
     PetscBool  on    = PETSC_FALSE;
     if (stage != given.end()) PetscCall(PetscOptionsStringToBool(stage->second.empty() ? "true" : stage->second.c_str(), &on));

@@ -142,12 +142,7 @@ PetscErrorCode hystereticRead(PetscOptionItems *PetscOptionsObject, MPI_Comm com
       PetscCheck(has_mean, comm, PETSC_ERR_USER_INPUT, "-material_%s_mean_effective_stress is missing (-material_%s_backbone darendeli); allowed: sigma'_0 > 0 [Pa] or geostatic",
                  r, r);
       // geostatic: the model is the curve at 1 atm, each point's strains scaled by its
-      // sigma'_0 (physics::darendeliStrainScale). A cap would scale with them, which no
-      // strength does (an undrained strength grows with sigma'_v, not as sigma'_0^0.35).
-      PetscCheck(!mean_geostatic || !has_strength, comm, PETSC_ERR_USER_INPUT,
-                 "-material_%s_strength with -material_%s_mean_effective_stress geostatic; allowed: one of them (the strains of a point are scaled by its sigma'_0, "
-                 "which would scale the cap too)",
-                 r, r);
+      // sigma'_0 (physics::darendeliStrainScale); core/option_rules.cpp refuses a cap with it.
       if (mean_geostatic) mean_stress = kDarendeliReferenceStress;
       PetscCheck(mean_stress > 0 && std::isfinite(mean_stress), comm, PETSC_ERR_USER_INPUT, "-material_%s_mean_effective_stress = %g; allowed: sigma'_0 > 0 [Pa] or geostatic", r,
                  (double)mean_stress);

@@ -17,8 +17,10 @@
 # 4. A restart from step 3500 writes the straight run's stations and energy byte for byte (the
 #    scales come from the checkpoint: the stage does not run again).
 # 5. The curve's dependence matters: the surface peak velocity against the same site with one
-#    sigma'_0 at mid-depth (186 kPa, K0 = 0.5 as the default scene's sublayers) is printed.
-# 6. Without the geostatic stage, or with a strength cap, the run stops at once with one line.
+#    sigma'_0 at mid-depth (186 kPa, K0 = 0.5 as the default scene's sublayers) is printed
+#    (measured +12.2 %; on 0.5 m cells +11.3 %, each peak within 0.6 % of the 1 m one).
+# 6. Without the geostatic stage, or with a strength cap, the run stops at once with one line,
+#    before the output folder is made (core/option_rules.cpp).
 set -eu
 . tests/tools/lib.sh
 . tests/tools/together.sh
@@ -88,3 +90,4 @@ grep -q "^slipwave: error: -material_soil_mean_effective_stress = geostatic with
 if $SW $geo -material_soil_strength 5e4 -output_dir "$WORK/capped" 2> "$WORK/capped.err" > /dev/null; then echo "a cap with geostatic sigma'_0 was accepted"; exit 1; fi
 cat "$WORK/capped.err"
 grep -q "^slipwave: error: -material_soil_strength with -material_soil_mean_effective_stress geostatic" "$WORK/capped.err"
+[ ! -e "$WORK/capped" ] || { echo "the refused run left its output folder"; exit 1; }
