@@ -214,19 +214,14 @@ void FreeFieldColumn::setGeostaticScales(double gravity, const std::vector<bool>
   for (int e = 0; e < ne; ++e) any = any || (soil_[e] && geostatic[e * p_]);
   if (!any) return;
   soil_scale_.assign(ne, 1.0);
-  // The weight above the top of element e, from the top down.
+  // The weight above the top of element e, from the top down (an element is one region's: its
+  // segments share the material, as lame(mat_[e p]) takes them elsewhere).
   double above = 0;
   for (int e = ne - 1; e >= 0; --e) {
-    double weight = 0; // of the element, per unit area
-    for (int a = 0; a < p_; ++a) weight += mat_[e * p_ + a].rho * (z_[e * p_ + a + 1] - z_[e * p_ + a]);
+    const double weight = mat_[e * p_].rho * elementLength(e); // per unit area
     if (soil_[e] && geostatic[e * p_]) {
-      double mid = above; // the weight above the element's mid-height
-      for (int a = 0; a < p_; ++a) {
-        const double z0 = z_[e * p_ + a], z1 = z_[e * p_ + a + 1], zm = 0.5 * (z_[e * p_] + z_[(e + 1) * p_]);
-        mid += mat_[e * p_ + a].rho * std::max(0.0, z1 - std::max(z0, zm));
-      }
       const auto   lm    = lame(mat_[e * p_]);
-      const double sigma = std::max(floor, gravity * mid * (lm.lambda + 2.0 / 3.0 * lm.mu) / (lm.lambda + 2 * lm.mu));
+      const double sigma = std::max(floor, gravity * (above + 0.5 * weight) * (lm.lambda + 2.0 / 3.0 * lm.mu) / (lm.lambda + 2 * lm.mu));
       soil_scale_[e]     = darendeliStrainScale(sigma, reference_stress);
     }
     above += weight;
