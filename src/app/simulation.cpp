@@ -16,6 +16,7 @@
 #include "slipwave/app/run_report.hpp"
 #include "slipwave/app/setup_cost.hpp"
 #include "slipwave/app/stop_request.hpp"
+#include "slipwave/core/errors.hpp"
 #include "slipwave/core/log_events.hpp"
 #include "slipwave/core/options_check.hpp"
 #include "slipwave/input/record_files_check.hpp"
@@ -151,7 +152,6 @@ PetscErrorCode stopIfRequested(Run *r, PetscInt step, PetscReal t) {
   PetscFunctionBeginUser;
   PetscCall(StopRequested(r->model.comm, step, &signal));
   if (!signal) PetscFunctionReturn(0);
-  PetscCall(flushSeries(r, true));
   const PetscInt every = r->opt.checkpoint_interval;
   char           resume[PETSC_MAX_PATH_LEN + 256];
   if (every > 0 && step >= every)
@@ -160,9 +160,14 @@ PetscErrorCode stopIfRequested(Run *r, PetscInt step, PetscReal t) {
     std::snprintf(resume, sizeof resume, "%s", every > 0 ? "no checkpoint yet (-checkpoint_interval steps not reached)" : "to be able to resume, run with -checkpoint_interval <steps>, then -restart <output_dir>/checkpoint.bin");
   char time_text[32]; // PETSc's own %g would print 0 as "0."
   std::snprintf(time_text, sizeof time_text, "%g", (double)t);
-  SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT,
-          "stopped by %s after step %" PetscInt_FMT ", t = %s s; stations hold every sample up to it, energy.csv every -energy_interval-th, the fields every output time up to it (%s); %s",
-          StopSignalName(signal), step, time_text, r->opt.output_dir, resume);
+  char line[2 * PETSC_MAX_PATH_LEN + 512];
+  std::snprintf(line, sizeof line,
+                "stopped by %s after step %" PetscInt_FMT ", t = %s s; stations hold every sample up to it, energy.csv every -energy_interval-th, the fields every output time up to it (%s); %s",
+                StopSignalName(signal), step, time_text, r->opt.output_dir, resume);
+  // The line first, then the flush: mpiexec follows its SIGTERM with a SIGKILL 1 s later.
+  PetscCall(core::ErrorsSayNow(r->model.comm, line));
+  PetscCall(flushSeries(r, true));
+  SETERRQ(r->model.comm, PETSC_ERR_USER_INPUT, "%s", line);
 }
 
 PetscErrorCode checkpointIfDue(Run *r, TS ts, PetscInt step) {

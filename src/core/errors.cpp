@@ -14,6 +14,7 @@ namespace slipwave::core {
 namespace {
 
 const char *g_program = "slipwave";
+std::string g_said; // the message ErrorsSayNow printed before its error is raised
 
 bool isUserInputError(PetscErrorCode code, const char *mess) {
   // PETSc raises a bad boolean option value as PETSC_ERR_ARG_WRONG.
@@ -94,6 +95,7 @@ PetscErrorCode userInputHandler(MPI_Comm comm, int line, const char *func, const
   // The first call carries the message; the calls that follow are the unwinding stack.
   if (type == PETSC_ERROR_INITIAL && !reported) {
     reported = true;
+    if (mess && g_said == mess) return code; // ErrorsSayNow printed it already
     PetscMPIInt rank = 0;
     if (comm != PETSC_COMM_SELF) MPI_Comm_rank(comm, &rank);
     if (rank == 0) {
@@ -105,6 +107,18 @@ PetscErrorCode userInputHandler(MPI_Comm comm, int line, const char *func, const
 }
 
 } // namespace
+
+PetscErrorCode ErrorsSayNow(MPI_Comm comm, const char *message) {
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  g_said = message;
+  if (rank == 0) {
+    std::fprintf(stderr, "%s: error: %s\n", g_program, message);
+    std::fflush(stderr);
+  }
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode ErrorsPushUserInputHandler(const char *program_name) {
   PetscFunctionBeginUser;

@@ -4,13 +4,14 @@
 // The ranks agree on it with one MPI_Allreduce, not at every step (on 2 ranks of a small 2D box
 // that reduction was 12-17 % of the run's wall time, -log_view, 80 x 40 cells, 4000 steps)
 // but about every kStopAgreementSeconds of wall time: a stop then comes at most that long (and
-// one step) after the signal, well inside a batch system's grace period before its SIGKILL.
+// one step) after the signal, well inside a batch system's grace period before its SIGKILL
+// and the 1 s mpiexec leaves between the SIGTERM it passes on and its own SIGKILL.
 #pragma once
 #include <petscsys.h>
 
 namespace slipwave::app {
 
-inline constexpr double   kStopAgreementSeconds  = 0.25;
+inline constexpr double   kStopAgreementSeconds  = 0.1;
 inline constexpr PetscInt kStopAgreementMaxSteps = 100000; // bounds the wait when steps slow down
 
 // Replaces PETSc's SIGTERM and SIGINT handlers (which abort at once) with one that only notes

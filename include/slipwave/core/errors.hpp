@@ -9,5 +9,9 @@ namespace slipwave::core {
 
 // Installs the handler that prints user-input errors as one line "<program>: error: <message>".
 PetscErrorCode ErrorsPushUserInputHandler(const char *program_name);
+// Collective: prints the user-facing line of an error now, before the work that precedes
+// raising it with the same message (which then prints nothing): a stop by SIGTERM says so
+// before it flushes the series, since mpiexec's SIGKILL follows its SIGTERM by 1 s.
+PetscErrorCode ErrorsSayNow(MPI_Comm comm, const char *message);
 
 } // namespace slipwave::core
