@@ -1,6 +1,34 @@
-# The part of a batch job that does not depend on the scheduler: provenance, a dry run, the
-# run and the plots. Sourced by slurm_job.sh and pbs_job.sh after they have set SELF, MODE,
-# JOBID, NODES, NP, SCENE, EXTRA, OUT, BIN, SLIPWAVE_HOME and the launch command RUN.
+# The part of a batch job that does not depend on the scheduler: the executable, the scene,
+# the output folder and the launch command, provenance, a dry run, the run and the plots.
+# Sourced by slurm_job.sh and pbs_job.sh after they have set SELF, MODE, JOBID, NODES, NP,
+# SCENE, EXTRA, OUT, SLIPWAVE_BIN, MPIEXEC, SLIPWAVE_HOME, die and SCHEDULER_LAUNCH (the
+# scheduler's launcher with its rank count; empty for a local run).
+BIN=${SLIPWAVE_BIN:-$SLIPWAVE_HOME/build/slipwave}
+[ -x "$BIN" ] || die "no executable $BIN (run 'make build-only' in $SLIPWAVE_HOME, or set SLIPWAVE_BIN)"
+
+if [ -f "$SCENE" ]; then SCENE=$(cd "$(dirname "$SCENE")" && pwd)/$(basename "$SCENE")
+elif [ -f "$SLIPWAVE_HOME/$SCENE" ]; then SCENE=$SLIPWAVE_HOME/$SCENE
+else die "scene file $SCENE not found (in $START_DIR or $SLIPWAVE_HOME)"; fi
+
+OUT=${OUT:-${SCRATCH:-$START_DIR}/run-$JOBID}
+mkdir -p "$OUT"
+OUT=$(cd "$OUT" && pwd)
+read -r -a EXTRA_ARGS <<<"$EXTRA"
+
+if [ -n "$MPIEXEC" ]; then
+  read -r -a LAUNCH <<<"$MPIEXEC"
+  LAUNCH+=(-n "$NP")
+elif [ ${#SCHEDULER_LAUNCH[@]} -gt 0 ]; then
+  LAUNCH=("${SCHEDULER_LAUNCH[@]}")
+else
+  LAUNCH=(mpiexec -n "$NP")
+  if mpiexec --version 2>&1 | grep -qi 'open mpi\|openrte'; then
+    LAUNCH+=(--oversubscribe)
+    [ "$(id -u)" = 0 ] && LAUNCH+=(--allow-run-as-root)
+  fi
+fi
+RUN=("${LAUNCH[@]}" "$BIN" -options_file "$SCENE" ${EXTRA_ARGS[@]+"${EXTRA_ARGS[@]}"})
+
 # Provenance: the scene, the version, where and how it ran.
 cp "$SCENE" "$OUT/"
 {

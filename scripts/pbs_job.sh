@@ -59,32 +59,11 @@ for d in "$SLIPWAVE_HOME" "$(dirname "$0")/.." "$START_DIR"; do
   if [ -n "$d" ] && [ -f "$d/scripts/plot_results.py" ]; then SLIPWAVE_HOME=$(cd "$d" && pwd); break; fi
 done
 [ -n "$SLIPWAVE_HOME" ] || die "cannot find the slipwave directory; set SLIPWAVE_HOME"
-BIN=${SLIPWAVE_BIN:-$SLIPWAVE_HOME/build/slipwave}
-[ -x "$BIN" ] || die "no executable $BIN (run 'make build-only' in $SLIPWAVE_HOME, or set SLIPWAVE_BIN)"
-
-if [ -f "$SCENE" ]; then SCENE=$(cd "$(dirname "$SCENE")" && pwd)/$(basename "$SCENE")
-elif [ -f "$SLIPWAVE_HOME/$SCENE" ]; then SCENE=$SLIPWAVE_HOME/$SCENE
-else die "scene file $SCENE not found (in $START_DIR or $SLIPWAVE_HOME)"; fi
-
-OUT=${OUT:-${SCRATCH:-$START_DIR}/run-$JOBID}
-mkdir -p "$OUT"
-OUT=$(cd "$OUT" && pwd)
-read -r -a EXTRA_ARGS <<<"$EXTRA"
-
-if [ -n "$MPIEXEC" ]; then
-  read -r -a LAUNCH <<<"$MPIEXEC"
-  LAUNCH+=(-n "$NP")
-elif [ "$MODE" = pbs ]; then
-  LAUNCH=(mpiexec -n "$NP")
-  [ -n "${PBS_NODEFILE:-}" ] && LAUNCH+=(-machinefile "$PBS_NODEFILE")
-else
-  LAUNCH=(mpiexec -n "$NP")
-  if mpiexec --version 2>&1 | grep -qi 'open mpi\|openrte'; then
-    LAUNCH+=(--oversubscribe)
-    [ "$(id -u)" = 0 ] && LAUNCH+=(--allow-run-as-root)
-  fi
+SCHEDULER_LAUNCH=()
+if [ "$MODE" = pbs ]; then
+  SCHEDULER_LAUNCH=(mpiexec -n "$NP")
+  [ -n "${PBS_NODEFILE:-}" ] && SCHEDULER_LAUNCH+=(-machinefile "$PBS_NODEFILE")
 fi
-RUN=("${LAUNCH[@]}" "$BIN" -options_file "$SCENE" ${EXTRA_ARGS[@]+"${EXTRA_ARGS[@]}"})
 
 SELF=pbs_job.sh
 NODES=$(if [ -n "${PBS_NODEFILE:-}" ] && [ -f "$PBS_NODEFILE" ]; then sort -u "$PBS_NODEFILE" | tr '\n' ' '; else hostname; fi)
