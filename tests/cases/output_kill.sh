@@ -1,5 +1,4 @@
 #!/usr/bin/env bash
-# suite: alone (it times SIGTERM against mpiexec's SIGKILL 1 s later: tests/run_tests.sh)
 # Output that survives a kill (issue 9): the 2D site-response scene (10 s, about 25 s wall on one loaded core,
 # 3 stations, a frame every 0.2 s) is killed at a random moment by SIGTERM (T) and by SIGKILL
 # (K), and run uninterrupted (F) past the latest of those moments. Expected, from the writers' contract (stations and

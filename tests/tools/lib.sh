@@ -18,9 +18,7 @@ elements() { echo $(( ($1 + DEGREE - 1) / DEGREE )); }
 # (-ts_cd_order 4 on every slipwave command line of $SW, before the test's own options;
 # tests/cases/fourth_order_*.sh, issue 25).
 [ -n "${CD_ORDER:-}" ] && export SLIPWAVE_TEST_OPTIONS="-ts_cd_order $CD_ORDER"
-# WORK_TAG: a caller's own suffix, where two scripts rerun one test alike but for options of
-# their own (the suite runs scripts side by side: their folders must differ).
-WORK="$BUILD/tests/work/$(basename "$0" .sh)${SEM_DEGREE:+_p$SEM_DEGREE}${SEM_DIM:+_${SEM_DIM}d}${CD_ORDER:+_o$CD_ORDER}${WORK_TAG:+_$WORK_TAG}"
+WORK="$BUILD/tests/work/$(basename "$0" .sh)${SEM_DEGREE:+_p$SEM_DEGREE}${SEM_DIM:+_${SEM_DIM}d}${CD_ORDER:+_o$CD_ORDER}"
 rm -rf "$WORK"; mkdir -p "$WORK"
 # 1D column options: 100 m of soil, rho 2000, vp 400, vs 200, Ricker f0 = 5 Hz, peak 0.1 m/s.
 COLUMN="-regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -bc_bottom_type absorbing -input_boundary bottom
