@@ -15,9 +15,13 @@ namespace slipwave::app {
 namespace fs = std::filesystem;
 namespace {
 
-// Longest folder name accepted: the longest file slipwave puts in it
-// ("interface_<name>/.<step>.h5.partial", stations/<name>.csv) must still fit PATH_MAX = 4096.
-constexpr size_t kMaxDirLength = 3800;
+// Longest folder path accepted, absolute: the HDF5 files are opened through Open MPI's MPI-IO,
+// whose shared-file-pointer component writes the file's path and a suffix ("_cid-<c>-<r>.sm",
+// 12 to about 20 characters) into a 256-byte buffer and aborts the run past it (measured with
+// Open MPI 4.1: volume/.000000.h5.partial under a 218-character folder runs, under 219 it
+// aborts with "buffer overflow detected"). 180 leaves about 55 characters for the longest name
+// inside ("interface_<name>/.<step>.h5.partial" with a name of up to ~20 characters).
+constexpr size_t kMaxDirLength = 180;
 
 // True for a name slipwave writes into the output folder (see the writers: energy_csv.cpp,
 // run_report.cpp, input_motion_csv.cpp, checkpoint.cpp, stations.cpp, field_writer.cpp, rigid_histories.cpp).
@@ -59,7 +63,11 @@ fs::path existingAncestor(fs::path path) {
 std::string check(const OutputDirRequest &q) {
   const std::string &dir = q.dir;
   if (dir.empty()) return "the folder name is empty; allowed: a folder path (created if missing)";
-  if (dir.size() > kMaxDirLength) return "the path is too long; allowed: at most " + std::to_string(kMaxDirLength) + " characters";
+  std::error_code absolute_error;
+  const size_t    length = fs::absolute(dir, absolute_error).string().size();
+  if (length > kMaxDirLength)
+    return "the path is too long (" + std::to_string(length) + " characters from the root); allowed: at most " + std::to_string(kMaxDirLength) +
+           " (Open MPI's file writing aborts on longer paths)";
   std::error_code error;
   const fs::file_status status = fs::status(dir, error);
   if (fs::exists(status) && !fs::is_directory(status)) return "it exists and is not a folder; allowed: a folder path (created if missing)";

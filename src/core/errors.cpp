@@ -95,7 +95,9 @@ PetscErrorCode userInputHandler(MPI_Comm comm, int line, const char *func, const
   // The first call carries the message; the calls that follow are the unwinding stack.
   if (type == PETSC_ERROR_INITIAL && !reported) {
     reported = true;
-    if (mess && g_said == mess) return code; // ErrorsSayNow printed it already
+    // ErrorsSayNow printed it already. A prefix match: PETSc formats the raised message into a
+    // fixed buffer, so a long line (a long output path) comes back cut short.
+    if (mess && mess[0] && g_said.compare(0, std::strlen(mess), mess) == 0) return code;
     PetscMPIInt rank = 0;
     if (comm != PETSC_COMM_SELF) MPI_Comm_rank(comm, &rank);
     if (rank == 0) {

@@ -34,9 +34,13 @@ $PY scripts/check_output.py "$WORK/a" --expect-steps 3
 echo "ok: a reused folder is refused before the set-up; -output_overwrite deletes only the earlier run's files"
 
 long="$WORK/$(printf 'd%.0s' $(seq 3900))"
+# 219 characters from the root: Open MPI 4.1's MPI-IO aborted the run (buffer overflow) on
+# volume/.000000.h5.partial under such a folder, 218 ran (measured); the limit is 180.
+abs=$(cd "$WORK" && pwd)/
+mpi_long=$abs$(printf 'm%.0s' $(seq $((219 - ${#abs}))))
 # /proc/1 refuses new folders even to root (the tests may run as root, for whom permissions
 # alone do not make a folder unwritable).
-for dir in "$long" "$WORK/a/notes.txt/out" /proc/1/slipwave_out ""; do
+for dir in "$long" "$mpi_long" "$WORK/a/notes.txt/out" /proc/1/slipwave_out ""; do
   rc=0; $SW $O -output_dir "$dir" > "$WORK/d.out" 2> "$WORK/d.err" || rc=$?
   [ $rc -eq 1 ] && [ "$(grep -c '' "$WORK/d.err")" -eq 1 ] || { echo "FAIL: -output_dir = ${dir:0:60}...: exit $rc, stderr:"; cat "$WORK/d.err"; exit 1; }
   grep -E "^slipwave: error: -output_dir = .*: .*; allowed: " "$WORK/d.err"
