@@ -19,7 +19,7 @@ namespace slipwave::app {
 namespace {
 
 constexpr PetscInt kMagic   = 0x53574350; // "SWCP"
-constexpr PetscInt kVersion = 12; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
+constexpr PetscInt kVersion = 13; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
                                  // 4: state only (no RHS force parts, no attenuation trial);
                                  // 5: the scene options after the header, a seal at the end;
                                  // 6: the pore pressure state and the ledger's fluid terms;
@@ -34,6 +34,7 @@ constexpr PetscInt kVersion = 12; // 2: ledger with `anelastic`, attenuation mem
                                  // 11: each interface's count of open/closed switches after its drift
                                  // 12: the ledger's integrator_correction; at order 4 the two
                                  //    accelerations before the current one (the reported velocity)
+                                 // 13: each interface pair's sigma* (the friction lag's normal traction)
 constexpr PetscInt kHeader  = 10;
 
 // The ledger as a flat array, in a fixed order.
@@ -258,6 +259,7 @@ PetscErrorCode CheckpointRead(const std::string &path, const CheckpointState &s)
     std::vector<double> state;
     PetscCall(loadLocalArray(comm, (PetscInt)iface.pairs().id.size() * iface.stateWidth(), viewer, &state));
     iface.loadState(state.data());
+    iface.setCommittedTime(scalars[0]);
     iface.setMaxDrift(scalars[3 + kLedgerSize + nframes + 2 * k]);
     // The run's total so far, held by one rank (Totals sums the ranks).
     iface.setSwitches(rank == 0 ? (PetscInt)scalars[3 + kLedgerSize + nframes + 2 * k + 1] : 0);

@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "slipwave/physics/contact_damping.hpp"
+#include "slipwave/physics/friction_lag.hpp"
 
 namespace slipwave::interface {
 namespace {
@@ -36,10 +37,13 @@ void tangentBasis(PetscInt dim, const double *n, double *t) {
 }
 
 // pore: the trial pore pressure at each pair's soil node (saturated soil side), or null;
-// pore_committed: that of the committed state.
+// pore_committed: that of the committed state. lag: the friction's lag, and dt the step
+// since the committed state (NaN: none, friction_lag.hpp).
 template <int Dim>
 double updatePairs(const physics::InterfaceLaw &law, const meshing::InterfacePairs &pairs, const double *tangent, std::vector<physics::InterfaceState<Dim>> &states,
-                   std::vector<double> &jump_prev, const PetscScalar *pu, const PetscScalar *pore, const double *pore_committed, PetscScalar *pf) {
+                   std::vector<double> &jump_prev, const PetscScalar *pu, const PetscScalar *pore, const double *pore_committed, const physics::FrictionLag &lag,
+                   double dt, PetscScalar *pf) {
+  const bool lagged = physics::frictionLagged(lag);
   constexpr int NT = Dim - 1;
   double        max_drift = 0;
   for (size_t p = 0; p < states.size(); ++p) {
@@ -58,9 +62,11 @@ double updatePairs(const physics::InterfaceLaw &law, const meshing::InterfacePai
       for (int i = 0; i < Dim; ++i) dw_T[k] += dj[i] * t[k * Dim + i];
     }
     physics::InterfaceState<Dim> &s = states[p];
+    const physics::FrictionLagStep step{lag, pore ? PetscRealPart(pore[p]) : 0.0, dt};
+    const physics::FrictionLagStep *lag_step = lagged ? &step : nullptr;
     const double drift = pore ? physics::interfaceUpdate<Dim>(physics::interfaceLawWithPorePressure(law, PetscRealPart(pore[p])), s, dw_T, dw_N,
-                                                              PetscRealPart(pore[p]) - pore_committed[p])
-                              : physics::interfaceUpdate<Dim>(law, s, dw_T, dw_N);
+                                                              PetscRealPart(pore[p]) - pore_committed[p], lag_step)
+                              : physics::interfaceUpdate<Dim>(law, s, dw_T, dw_N, 0.0, lag_step);
     max_drift = std::max(max_drift, drift);
     // tau: force per unit area of the structure on the soil (spec §2).
     const double A = pairs.area[p];
@@ -87,10 +93,11 @@ void totalsOf(const physics::InterfaceLaw &law, const meshing::InterfacePairs &p
 }
 
 // opening w_N, slip vector (tangential jump in x,y,z), sigma_N, sigma_T vector (x,y,z),
-// plastic opening, accumulated slip, status (0 stick, 1 slip, 2 open), dissipation [J/m^2].
+// plastic opening, accumulated slip, status (0 stick, 1 slip, 2 open), dissipation [J/m^2];
+// a lagged friction's sigma*; on a saturated soil side the pore pressure and sigma_N + p.
 template <int Dim>
 void fieldsOf(const meshing::InterfacePairs &pairs, const double *tangent, const std::vector<physics::InterfaceState<Dim>> &states, const std::vector<double> &jump,
-              const std::vector<double> &pore, std::vector<double> *out) {
+              bool lagged, const std::vector<double> &pore, std::vector<double> *out) {
   constexpr int NT = Dim - 1;
   for (size_t p = 0; p < states.size(); ++p) {
     const auto   &s = states[p];
@@ -110,6 +117,7 @@ void fieldsOf(const meshing::InterfacePairs &pairs, const double *tangent, const
     out->push_back(s.slip);
     out->push_back((double)s.status);
     out->push_back(s.dissipation);
+    if (lagged) out->push_back(s.sigma_friction);
     if (!pore.empty()) {
       // Saturated soil side: the law acts on sigma_N + p (physics/mohr_coulomb_interface.hpp).
       out->push_back(pore[p]);
@@ -122,13 +130,15 @@ void fieldsOf(const meshing::InterfacePairs &pairs, const double *tangent, const
 
 std::vector<std::string> InterfaceAssembler::pairFieldNames() const {
   std::vector<std::string> names = {"opening", "slip", "sigma_N", "sigma_T", "plastic_opening", "accumulated_slip", "status", "dissipation"};
+  if (physics::frictionLagged(lag_)) names.push_back("sigma_N_friction");
   if (pore_scatter_) names.insert(names.end(), {"pore_pressure", "sigma_N_effective"});
   return names;
 }
 
 PetscErrorCode InterfaceAssembler::Setup(MPI_Comm comm, PetscInt dim, const meshing::InterfaceSpec &spec, const meshing::InterfacePairs &pairs,
-                                         const physics::InterfaceParams &params, double sigma_N0, double contact_damping, Vec mass) {
+                                         const physics::InterfaceParams &params, double sigma_N0, double contact_damping, const physics::FrictionLag &lag, Vec mass) {
   PetscFunctionBeginUser;
+  lag_    = lag;
   comm_   = comm;
   dim_    = dim;
   spec_   = spec;
@@ -170,12 +180,15 @@ PetscErrorCode InterfaceAssembler::Setup(MPI_Comm comm, PetscInt dim, const mesh
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode InterfaceAssembler::AddForces(Vec u, Vec f) {
+PetscErrorCode InterfaceAssembler::AddForces(Vec u, Vec f, PetscReal t) {
   PetscFunctionBeginUser;
   const physics::InterfaceLaw law(params_);
   trial_states2_ = states2_;
   trial_states3_ = states3_;
   trial_jump_    = jump_prev_;
+  trial_time_    = t;
+  // The first step after a static stage has no committed time: no time passed.
+  const double dt = !std::isfinite(t) ? NAN : (std::isfinite(committed_time_) ? t - committed_time_ : 0.0);
   const PetscScalar *pore = nullptr;
   if (pore_scatter_) {
     PetscCall(VecScatterBegin(pore_scatter_, pore_source_, pair_p_, INSERT_VALUES, SCATTER_FORWARD));
@@ -184,8 +197,8 @@ PetscErrorCode InterfaceAssembler::AddForces(Vec u, Vec f) {
     trial_pair_pore_.assign(pore, pore + pairs_.id.size());
   }
   PetscCall(applyToPairs(u, f, [&](const PetscScalar *pu, PetscScalar *pf) {
-    const double drift = dim_ == 2 ? updatePairs<2>(law, pairs_, tangent_.data(), trial_states2_, trial_jump_, pu, pore, pair_pore_.data(), pf)
-                                   : updatePairs<3>(law, pairs_, tangent_.data(), trial_states3_, trial_jump_, pu, pore, pair_pore_.data(), pf);
+    const double drift = dim_ == 2 ? updatePairs<2>(law, pairs_, tangent_.data(), trial_states2_, trial_jump_, pu, pore, pair_pore_.data(), lag_, dt, pf)
+                                   : updatePairs<3>(law, pairs_, tangent_.data(), trial_states3_, trial_jump_, pu, pore, pair_pore_.data(), lag_, dt, pf);
     trial_max_drift_   = std::max(max_drift_, drift);
   }));
   if (pore) PetscCall(VecRestoreArrayRead(pair_p_, &pore));
@@ -281,6 +294,7 @@ void InterfaceAssembler::Commit() {
   states3_.swap(trial_states3_);
   jump_prev_.swap(trial_jump_);
   if (pore_scatter_) pair_pore_.swap(trial_pair_pore_);
+  committed_time_ = trial_time_;
   max_drift_ = trial_max_drift_;
   has_trial_ = false;
 }
@@ -420,9 +434,10 @@ PetscErrorCode InterfaceAssembler::CountCutPairs(Vec u_template, PetscInt *cut) 
 
 void InterfaceAssembler::pairFields(std::vector<double> *values, int *per_pair) const {
   values->clear();
-  if (dim_ == 2) fieldsOf<2>(pairs_, tangent_.data(), states2_, jump_prev_, pair_pore_, values);
-  else fieldsOf<3>(pairs_, tangent_.data(), states3_, jump_prev_, pair_pore_, values);
-  *per_pair = pore_scatter_ ? 14 : 12;
+  const bool lagged = physics::frictionLagged(lag_);
+  if (dim_ == 2) fieldsOf<2>(pairs_, tangent_.data(), states2_, jump_prev_, lagged, pair_pore_, values);
+  else fieldsOf<3>(pairs_, tangent_.data(), states3_, jump_prev_, lagged, pair_pore_, values);
+  *per_pair = (pore_scatter_ ? 14 : 12) + (lagged ? 1 : 0);
 }
 
 namespace {
@@ -434,7 +449,7 @@ void packStates(const std::vector<physics::InterfaceState<Dim>> &states, const s
     out->insert(out->end(), s.sigma_T, s.sigma_T + Dim - 1);
     out->push_back(s.sigma_N);
     out->insert(out->end(), s.wp_T, s.wp_T + Dim - 1);
-    out->insert(out->end(), {s.wp_N, s.opening, s.slip, s.dissipation, (double)s.status});
+    out->insert(out->end(), {s.wp_N, s.opening, s.slip, s.dissipation, s.sigma_friction, (double)s.status});
     out->insert(out->end(), &jump[p * Dim], &jump[p * Dim] + Dim);
   }
 }
@@ -450,6 +465,7 @@ void unpackStates(const double *in, std::vector<physics::InterfaceState<Dim>> &s
     s.opening     = *in++;
     s.slip        = *in++;
     s.dissipation = *in++;
+    s.sigma_friction = *in++;
     s.status      = (physics::InterfaceStatus)(int)*in++;
     for (int k = 0; k < Dim; ++k) jump[p * Dim + k] = *in++;
   }

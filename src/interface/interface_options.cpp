@@ -80,6 +80,13 @@ PetscErrorCode InterfaceOptionsRead(MPI_Comm comm, const char *prefix, Interface
     PetscCall(PetscOptionsReal("-contact_damping",
                                "normal dashpot of closed pairs, fraction of the critical damping of the pair's penalty spring between its two nodal masses [-], 0..1",
                                "InterfaceOptionsRead", o.contact_damping, &o.contact_damping, nullptr));
+    PetscCall(PetscOptionsReal("-friction_slip_length",
+                               "slip over which the friction takes up a change of the effective normal traction (Prakash-Clifton lag, physics/friction_lag.hpp) [m], "
+                               "0 <= L <= 1; 0: at once",
+                               "InterfaceOptionsRead", o.friction_lag.slip_length, &o.friction_lag.slip_length, nullptr));
+    PetscCall(PetscOptionsReal("-friction_reference_velocity",
+                               "reference velocity V* of that lag [m/s], 0 <= V* <= 1e3: a sticking pair follows the normal traction over friction_slip_length / V*",
+                               "InterfaceOptionsRead", o.friction_lag.reference_velocity, &o.friction_lag.reference_velocity, nullptr));
   }
   PetscOptionsEnd();
 
@@ -96,6 +103,10 @@ PetscErrorCode InterfaceOptionsRead(MPI_Comm comm, const char *prefix, Interface
              "-%spenalty_length = %s; allowed: > 0 m (the thickness of softer material the interface is as compliant as)", pre, length_text);
   // A penalty option the rule does not read stops earlier, before the mesh (core/option_rules).
   PetscCheck(o.penalty_factor > 0, comm, PETSC_ERR_USER_INPUT, "-%spenalty_factor = %g; allowed: > 0", pre, o.penalty_factor);
+  PetscCheck(std::isfinite(o.friction_lag.slip_length) && o.friction_lag.slip_length >= 0 && o.friction_lag.slip_length <= 1, comm, PETSC_ERR_USER_INPUT,
+             "-%sfriction_slip_length = %g; allowed: 0 <= L <= 1 m (0: no lag)", pre, o.friction_lag.slip_length);
+  PetscCheck(std::isfinite(o.friction_lag.reference_velocity) && o.friction_lag.reference_velocity >= 0 && o.friction_lag.reference_velocity <= 1e3, comm,
+             PETSC_ERR_USER_INPUT, "-%sfriction_reference_velocity = %g; allowed: 0 <= V* <= 1e3 m/s", pre, o.friction_lag.reference_velocity);
   PetscCheck(o.contact_damping >= 0 && o.contact_damping <= 1, comm, PETSC_ERR_USER_INPUT, "-%scontact_damping = %g; allowed: 0 <= ratio <= 1 (fraction of critical)", pre,
              o.contact_damping);
   *options = o;

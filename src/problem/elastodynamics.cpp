@@ -143,7 +143,7 @@ PetscErrorCode createInterfaces(Elastodynamics *m) {
     PetscCall(interface::InterfaceAutoPenalty(m->comm, prefix.c_str(), m_soft, mu_soft, h, width, &opt, &note));
     note = "interface " + spec.name + ": " + note;
     m->interfaces.emplace_back();
-    PetscCall(m->interfaces.back().Setup(m->comm, m->dim, spec, pairs, opt.params, opt.sigma_N0, opt.contact_damping, m->mass));
+    PetscCall(m->interfaces.back().Setup(m->comm, m->dim, spec, pairs, opt.params, opt.sigma_N0, opt.contact_damping, opt.friction_lag, m->mass));
     m->penalty_notes.push_back(note);
   }
   PetscFunctionReturn(0);
@@ -333,7 +333,8 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   if (!m->interfaces.empty()) {
     PetscCall(PetscLogEventBegin(core::event_interface, 0, 0, 0, 0));
     PetscCall(VecZeroEntries(m->f_interface));
-    for (auto &iface : m->interfaces) PetscCall(iface.AddForces(u, m->f_interface));
+    // The geostatic stage (no TS) passes no time: a lagged friction is at rest there.
+    for (auto &iface : m->interfaces) PetscCall(iface.AddForces(u, m->f_interface, ts ? t : NAN));
     // The contact dashpots use the half-step velocity, like stiffness-proportional damping;
     // the geostatic stage (no TS) relaxes without them.
     if (ts) {

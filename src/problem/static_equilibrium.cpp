@@ -122,7 +122,7 @@ PetscErrorCode StaticEquilibriumSolve(Elastodynamics *m, KSP ksp, Vec free, Vec 
   PetscCall(VecDuplicate(u, &f));
   PetscCall(VecZeroEntries(u));
   PetscCall(VecZeroEntries(f));
-  for (auto &iface : m->interfaces) PetscCall(iface.AddForces(u, f));
+  for (auto &iface : m->interfaces) PetscCall(iface.AddForces(u, f, NAN));
   PetscCall(VecAXPY(f, 1.0, m->bc.constant_force));
   // Held dofs: identity rows and columns, zero load (they stay at zero).
   {

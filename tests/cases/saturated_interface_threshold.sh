@@ -23,9 +23,9 @@
 #     loading of the base makes): the onset follows the same criterion with the pore pressure
 #     of the pairs' soil nodes at that instant, a* = tan(phi) (W - sum_p A_p p_p) / m, within
 #     2 %, and it differs from the drained onset by more than 2 % (the excess pressure is
-#     measured, not assumed zero). After the onset the noflow contact is not checked: with
-#     undrained soil on one side the slip changes p at the contact, p changes the friction,
-#     and grid-scale modes grow (docs/saturated-soil.md, "Interfaces on saturated soil").
+#     measured, not assumed zero). After the onset the noflow contact is not checked here:
+#     sliding on undrained soil is saturated_interface_sliding.sh's (the friction lag,
+#     docs/saturated-soil.md).
 #  4. The energy balance closes to 1e-9 in both runs.
 set -eu
 . tests/tools/lib.sh

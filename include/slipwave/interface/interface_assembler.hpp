@@ -8,12 +8,14 @@
 #pragma once
 #include <petscmat.h>
 
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "slipwave/interface/interface_options.hpp"
 #include "slipwave/meshing/interface_split.hpp"
+#include "slipwave/physics/friction_lag.hpp"
 #include "slipwave/physics/mohr_coulomb_interface.hpp"
 
 namespace slipwave::interface {
@@ -30,12 +32,14 @@ class InterfaceAssembler {
 public:
   // `mass`: the global lumped mass per dof (its layout gives the pairs' dof indices; its
   // values size the contact dashpots). `contact_damping`: fraction of each pair's critical
-  // normal damping, 0 for none (physics/contact_damping.hpp).
+  // normal damping, 0 for none (physics/contact_damping.hpp). `lag`: the friction's lag
+  // behind the normal traction (physics/friction_lag.hpp; none: slip_length 0).
   PetscErrorCode Setup(MPI_Comm comm, PetscInt dim, const meshing::InterfaceSpec &spec, const meshing::InterfacePairs &pairs, const physics::InterfaceParams &params,
-                       double sigma_N0, double contact_damping, Vec mass);
-  // f += interface forces at displacement u: every pair advanced from its committed state into
-  // the trial state.
-  PetscErrorCode AddForces(Vec u, Vec f);
+                       double sigma_N0, double contact_damping, const physics::FrictionLag &lag, Vec mass);
+  // f += interface forces at displacement u and time t: every pair advanced from its committed
+  // state into the trial state. t is the friction lag's clock; NaN where no time passes (a
+  // static solve, the geostatic stage: the lag is then at rest, sigma* = sigma_N + p).
+  PetscErrorCode AddForces(Vec u, Vec f, PetscReal t);
   // The trial state of the last AddForces becomes the committed state (no-op without one).
   void Commit();
   // Saturated soil side: from now on AddForces reads the pore pressure at the pairs' soil
@@ -73,7 +77,9 @@ public:
   // displacements restart from zero); tractions and state are kept.
   void ResetJumpReference() { jump_prev_.assign(jump_prev_.size(), 0.0); }
   // Checkpoints: each owned pair's state and jump reference as stateWidth() doubles.
-  int    stateWidth() const { return dim_ == 2 ? 10 : 13; }
+  int    stateWidth() const { return dim_ == 2 ? 11 : 14; }
+  // The time of the committed state (a restart sets it: the friction lag's clock).
+  void   setCommittedTime(double t) { committed_time_ = t; }
   void   saveState(std::vector<double> *out) const;
   void   loadState(const double *in);
   double maxDrift() const { return max_drift_; }
@@ -118,6 +124,8 @@ private:
   std::vector<double> trial_jump_;
   std::vector<double> pair_pore_, trial_pair_pore_; // saturated soil side: p at each pair, committed and trial
   double              trial_max_drift_ = 0;
+  physics::FrictionLag lag_{};
+  double              committed_time_ = NAN, trial_time_ = NAN; // of the committed and the trial state [s]
   bool                has_trial_       = false;
   double              contact_damping_ = 0;
   std::vector<double> dashpot_;   // normal dashpot c per pair [N s/m]

@@ -1,12 +1,14 @@
 // Command-line options of one interface law: -<prefix>E, -<prefix>G, -<prefix>phi,
 // -<prefix>psi, -<prefix>c, -<prefix>e_ini, -<prefix>tensile_strength, -<prefix>sigma_N0,
 // and, for an interface of a mesh, -<prefix>penalty_rule, -<prefix>penalty_length,
-// -<prefix>penalty_factor and -<prefix>contact_damping;
+// -<prefix>penalty_factor, -<prefix>contact_damping, -<prefix>friction_slip_length and
+// -<prefix>friction_reference_velocity;
 // default prefix "interface_" (a simulation with several interfaces passes its own). The
 // interface's geometry (-interfaces, -interface_<n>_regions, _faces) is the mesh's: see
 // meshing/mesh_builder.hpp.
 #pragma once
 
+#include "slipwave/physics/friction_lag.hpp"
 #include "slipwave/physics/mohr_coulomb_interface.hpp"
 
 #include <petscsys.h>
@@ -52,6 +54,10 @@ struct InterfaceOptions {
   // default scene; larger ratios cost more step and raised the block's peaks there (docs/features.md,
   // interfaces).
   double contact_damping = 0.1;
+  // The friction's lag behind the effective normal traction (physics/friction_lag.hpp):
+  // L = 5 mm (the thickness of a sand-structure shear band, ~10 grain diameters), V* = 1 m/s,
+  // so a sticking pair follows its normal traction within 5 ms. Docs: docs/features.md.
+  physics::FrictionLag friction_lag{0.005, 1.0};
 };
 
 // Where the law is used: alone (slipwave-law: one pair, no mesh) or on the split pairs of a

@@ -20,6 +20,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "slipwave/physics/friction_lag.hpp"
+
 namespace slipwave::physics {
 
 // Angles in radians (the options layer converts from degrees).
@@ -73,7 +75,19 @@ struct InterfaceState {
   double opening;           // u: normal jump beyond the zero-stress state
   double slip;              // accumulated plastic slip, sum of lambda (path length)
   double dissipation;       // plastic work plus elastic energy lost at each opening
+  // sigma*: the effective normal traction the friction sees, kept by a lagged law only
+  // (friction_lag.hpp; an instantaneous law leaves it as it was).
+  double sigma_friction;
   InterfaceStatus status;
+};
+
+// What a lagged law needs over one step (friction_lag.hpp): the lag, the pore pressure p the
+// step ends with (0 on dry soil; the law passed with it is interfaceLawWithPorePressure(law,
+// p)) and the step dt [s], NaN where no time passes (a static solve): sigma* = sigma' then.
+struct FrictionLagStep {
+  FrictionLag lag;
+  double      p  = 0.0;
+  double      dt = NAN;
 };
 
 // A pair in contact at rest under the normal traction sigma_N0 (validated beforehand:
@@ -83,6 +97,7 @@ InterfaceState<Dim> interfaceInitialState(const InterfaceLaw &law, double sigma_
   InterfaceState<Dim> s{};
   s.sigma_N = sigma_N0;
   s.opening = sigma_N0 / law.E;
+  s.sigma_friction = sigma_N0;
   s.status = InterfaceStatus::Stick;
   return s;
 }
@@ -190,8 +205,12 @@ double exitFraction(const double *a, const double *b, double R0, double d, doubl
 // surface starts on it, and the slip a rising pressure forces is found by the consistency
 // condition instead of being returned as drift. Returns the drift returned to the yield
 // surface [stress].
+// With `lagged` the strength is c - sigma* tan(phi) instead (friction_lag.hpp): sigma* moves
+// over the step from its committed value to the lagged one, along the path as the effective
+// traction does without a lag, and the plastic flow's change of sigma_N (dilatancy) reaches
+// the strength only through the lag, so the plastic modulus is G.
 template <int Dim>
-double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const double *dw_T, double dw_N, double dp) {
+double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const double *dw_T, double dw_N, double dp, const FrictionLagStep *lagged = nullptr) {
   constexpr int NT = Dim - 1;
   const double u_tr = s.opening + dw_N;
   // The part of the normal increment spent on the tension plateau carries no stress.
@@ -207,13 +226,24 @@ double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const doub
 
   double lambda = 0.0;
   double u_new = u_tr;
+  // Lagged: the cohesion on effective stress (law.c is c - p tan(phi)) and sigma* at the end.
+  double c_eff = 0.0, friction_end = 0.0;
+  if (lagged) {
+    double slip = 0.0;
+    for (int i = 0; i < NT; ++i) slip += dw_T[i] * dw_T[i];
+    c_eff        = law.c + lagged->p * law.tan_phi;
+    const double target = sN_tr + lagged->p;
+    friction_end = std::isfinite(lagged->dt) ? laggedNormalTraction(lagged->lag, s.sigma_friction, target, std::sqrt(slip), lagged->dt) : target;
+  }
   // f(trial) <= 0 compared in squares: no square root on the elastic path.
-  const double R_tr = law.c - sN_tr * law.tan_phi;
+  const double R_tr = lagged ? c_eff - friction_end * law.tan_phi : law.c - sN_tr * law.tan_phi;
   if (R_tr >= 0.0 && nn_tr <= R_tr * R_tr) {
     for (int i = 0; i < NT; ++i) s.sigma_T[i] = sT_tr[i];
   } else {
-    // The effective normal traction changes by dsN + dp along the path.
-    const double R0 = law.c + dp * law.tan_phi - s.sigma_N * law.tan_phi, d = (dsN + dp) * law.tan_phi;
+    // The effective normal traction changes by dsN + dp along the path (lagged: sigma* by
+    // its own change).
+    const double R0 = lagged ? c_eff - s.sigma_friction * law.tan_phi : law.c + dp * law.tan_phi - s.sigma_N * law.tan_phi;
+    const double d  = lagged ? (friction_end - s.sigma_friction) * law.tan_phi : (dsN + dp) * law.tan_phi;
     double b_l1 = 0.0;
     for (int i = 0; i < NT; ++i) b_l1 += std::fabs(b[i]);
     const double scale = std::fabs(R0) + std::fabs(d) + b_l1;
@@ -252,7 +282,7 @@ double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const doub
     double t_dot_b = 0.0;
     for (int i = 0; i < NT; ++i) t_dot_b += t_hat[i] * b[i];
     // (G t.dw_T + E tan(phi) dw_N) / H on the plastic part, with total (not elastic) rates.
-    lambda = rest * (t_dot_b + law.tan_phi * (dsN + dp)) * law.inv_H;
+    lambda = lagged ? rest * (t_dot_b + d) / law.G : rest * (t_dot_b + law.tan_phi * (dsN + dp)) * law.inv_H;
     if (lambda <= 0.0) {
       lambda = 0.0; // elastic unloading from the yield surface
       for (int i = 0; i < NT; ++i) s.sigma_T[i] = sT_tr[i];
@@ -267,7 +297,11 @@ double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const doub
       u_new = u_tr - lambda * law.tan_psi;
       // sigma_N and the pore pressure are linear in lambda along the plastic part: the
       // trapezoid rule is exact (the cohesion's mean over it is law.c + rest dp tan(phi) / 2).
-      s.dissipation += lambda * (law.c + 0.5 * rest * dp * law.tan_phi - 0.5 * (sN_star + sN_end) * (law.tan_phi - law.tan_psi));
+      // Lagged: the strength runs from R0 - gamma d to R_tr, and sigma_N does the normal work.
+      if (lagged)
+        s.dissipation += lambda * (0.5 * (R0 - gamma * d + R_tr) + 0.5 * (sN_star + sN_end) * law.tan_psi);
+      else
+        s.dissipation += lambda * (law.c + 0.5 * rest * dp * law.tan_phi - 0.5 * (sN_star + sN_end) * (law.tan_phi - law.tan_psi));
     }
   }
   s.opening = u_new;
@@ -277,7 +311,8 @@ double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const doub
   // elastic energy removed, (|sigma_T|^2 - R^2) / 2G, is exactly the work of that slip.
   // Excesses within roundoff of the strength (relative 1e-13) are left alone.
   double drift = 0.0;
-  const double R = std::fmax(law.c - s.sigma_N * law.tan_phi, 0.0);
+  const double R = std::fmax(lagged ? R_tr : law.c - s.sigma_N * law.tan_phi, 0.0);
+  if (lagged) s.sigma_friction = friction_end;
   double nn = 0.0;
   for (int i = 0; i < NT; ++i) nn += s.sigma_T[i] * s.sigma_T[i];
   if (nn > R * R * (1.0 + 2e-13)) {
@@ -301,8 +336,10 @@ double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const doub
 // the normal one; on saturated soil law is the law at the step's end pore pressure and dp
 // that pressure's rise over the step (contactUpdate). Returns the drift returned to the
 // yield surface in this step [stress] (spec 5.7: the caller reports the largest one of a run).
+// `lagged`: the friction sees sigma* (friction_lag.hpp); null: sigma_N + p at once.
 template <int Dim>
-double interfaceUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const double *dw_T, double dw_N, double dp = 0.0) {
+double interfaceUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const double *dw_T, double dw_N, double dp = 0.0,
+                       const FrictionLagStep *lagged = nullptr) {
   constexpr int NT = Dim - 1;
   if (s.status == InterfaceStatus::Open) {
     const double u_tr = s.opening + dw_N;
@@ -321,8 +358,12 @@ double interfaceUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const do
     }
     s.sigma_N = 0.0;
     s.opening = 0.0;
+    // A lagged friction starts from the touch's effective traction, 0 + p held at the
+    // tension cut-off (law.sigma_t is sigma_t - p): a fresh contact builds its strength over
+    // the lag.
+    if (lagged) s.sigma_friction = lagged->p + std::fmin(0.0, law.sigma_t);
     // From zero traction after the touch, the rest of the step runs with the end's law.
-    return detail::contactUpdate<Dim>(law, s, dw_rest, u_tr, 0.0);
+    return detail::contactUpdate<Dim>(law, s, dw_rest, u_tr, 0.0, lagged);
   }
   if (s.opening + dw_N > law.e_ini) {
     // Lost with the bond: the shear energy (the tangential reference is dropped) and the
@@ -339,7 +380,7 @@ double interfaceUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const do
     s.status = InterfaceStatus::Open;
     return 0.0;
   }
-  return detail::contactUpdate<Dim>(law, s, dw_T, dw_N, dp);
+  return detail::contactUpdate<Dim>(law, s, dw_T, dw_N, dp, lagged);
 }
 
 } // namespace slipwave::physics
