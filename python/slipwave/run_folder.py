@@ -38,7 +38,7 @@ FIELD_UNITS = {
     "displacement": "m", "displacement_relative": "m", "velocity": "m/s", "acceleration": "m/s^2", "stress": "Pa", "region": "-",
     "pore_pressure": "Pa", "excess_pore_pressure": "Pa", "max_shear_strain": "-", "secant_modulus_ratio": "-",
     "opening": "m", "slip": "m", "sigma_N": "Pa", "sigma_T": "Pa", "plastic_opening": "m", "accumulated_slip": "m",
-    "status": "-", "dissipation": "J/m^2", "sigma_N_effective": "Pa",
+    "status": "-", "dissipation": "J/m^2", "sigma_N_friction": "Pa", "sigma_N_effective": "Pa",
 }
 
 # Interface pair status codes (field "status"; physics/mohr_coulomb_interface.hpp).
@@ -115,7 +115,8 @@ class Frames:
     Interface fields (one row per pair):
     opening, slip (tangential jump, structure minus soil, vector), sigma_N (tension positive),
     sigma_T (vector), plastic_opening, accumulated_slip (slip path), status (INTERFACE_STATUS
-    codes), dissipation [J/m^2]; saturated: pore_pressure, sigma_N_effective.
+    codes), dissipation [J/m^2], sigma_N_friction (the friction lag's sigma*, where it is on:
+    the default); saturated: pore_pressure, sigma_N_effective.
     """
 
     def __init__(self, out_dir, grid="volume"):

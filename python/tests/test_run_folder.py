@@ -244,9 +244,10 @@ class Interface(unittest.TestCase):
         self.assertEqual(self.f.topology.shape, (len(want) - 1, 2))  # an open chain
 
     def test_fields(self):
-        # interface_output.cpp kWidths and InterfaceAssembler::pairFieldNames (dry soil), after
+        # interface_output.cpp kWidths and InterfaceAssembler::pairFieldNames (dry soil, the default friction lag), after
         # the soil side's displacement (total and relative to the base: io/base_displacement).
-        widths = {"displacement": 3, "displacement_relative": 3, "opening": 1, "slip": 3, "sigma_N": 1, "sigma_T": 3, "plastic_opening": 1, "accumulated_slip": 1, "status": 1, "dissipation": 1}
+        widths = {"displacement": 3, "displacement_relative": 3, "opening": 1, "slip": 3, "sigma_N": 1, "sigma_T": 3, "plastic_opening": 1, "accumulated_slip": 1, "status": 1, "dissipation": 1,
+                  "sigma_N_friction": 1}
         self.assertEqual(self.f.field_names(0), list(widths))
         stack = self.f.stacked()
         for name, w in widths.items():

@@ -495,7 +495,11 @@ PetscErrorCode PorePressureAddHydrostaticForce(PorePressure *pp, DM dm, Vec f) {
 
 PetscErrorCode PorePressureTotal(PorePressure *pp) {
   PetscFunctionBeginUser;
-  PetscCall(VecWAXPY(pp->p_total, 1.0, pp->p_hydrostatic, pp->p));
+  // A drained node's excess pressure is 0. p holds it at 0 on every drained node but one whose
+  // gap opened at the last commit: that node keeps p_n until the next step, whose energy
+  // sums release it (PorePressureEnergy), while its pressure is already the hydrostatic one.
+  PetscCall(VecPointwiseMult(pp->p_total, pp->free_mask, pp->p));
+  PetscCall(VecAXPY(pp->p_total, 1.0, pp->p_hydrostatic));
   PetscFunctionReturn(0);
 }
 

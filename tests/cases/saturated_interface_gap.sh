@@ -15,8 +15,12 @@
 #     balance closes to 1e-9 (the bound of the other saturated tests), on 1 and 2 ranks; the
 #     pairs open at the same output times on both, and their pore pressures agree to 1e-4 of
 #     p_h: the geostatic stage ends here by dynamic relaxation (a pair starts on its tension
-#     plateau), which stops where rounding lets it, within its tolerance 1e-5 of the forces
-#     (docs/features.md, "Geostatic stage"; measured 1.8e-5 before any pair opens).
+#     plateau), which stops where rounding lets it, within its tolerance of the forces
+#     (docs/features.md, "Geostatic stage"), here 1e-7: at the default 1e-5 the residual
+#     motion the relaxation leaves moves the pore pressures at the first openings by up to
+#     240 Pa against a run relaxed to 1e-6 (1e-6 against 1e-7: 3e-3 Pa), as a friction that
+#     lags its normal traction (physics/friction_lag.hpp) holds the lifting edge pairs a
+#     little longer before they open (measured at 1e-7: 1.9e-7 of p_h).
 set -eu
 . tests/tools/lib.sh
 printf 'time,factor\n0,0\n0.5,2\n1,2\n' > "$WORK/lift.csv"
@@ -26,7 +30,7 @@ O="-mesh_box_faces 8,4 -mesh_box_upper 2,1 -regions base,block -region_block_box
  -interfaces slide -interface_slide_regions base,block -interface_slide_phi 30 -interface_slide_psi 0 -interface_slide_c 0 -interface_slide_E 1e10 -interface_slide_G 1e10
  -interface_slide_fluid gap -gravity 9.81 -water_table 0.75 -geostatic_stage -bc_bottom_type fixed
  -structure_load_region block -structure_load_force 0,11772 -structure_load_stf record -structure_load_record $WORK/lift.csv
- -ts_max_time 0.8 -output_interval 0.01 -energy_interval 1 -progress_interval 100000"
+ -geostatic_tolerance 1e-7 -ts_max_time 0.8 -output_interval 0.01 -energy_interval 1 -progress_interval 100000"
 $SW $O -output_dir "$WORK/np1" > "$WORK/np1.log"
 $MPIEXEC -n 2 $SW $O -output_dir "$WORK/np2" > "$WORK/np2.log"
 $CHECK energy "$WORK/np1/energy.csv" --max-error 1e-9

@@ -130,24 +130,30 @@ int main() {
     unit::near(s.sigma_friction, -2e5 + 2e4, 1e-12, 0, "no time (static): sigma* = sigma_N + p");
   }
 
-  // Re-contact after an opening: sigma* starts at the touch's effective traction, held at the
-  // tension cut-off (sigma_t = 0: sigma* = 0 whatever p), so the fresh contact builds its
-  // strength over the lag.
+  // An opening: sigma* follows the open pair's effective traction (0 + p, held at the
+  // tension cut-off: sigma_t = 0, so 0 whatever p) while it is open, and on re-contact the
+  // contact's, each over its part of the step: a brief opening changes sigma* little.
   {
     InterfaceParams thick = params;
     thick.e_ini           = 1e-4;
     const InterfaceLaw law_thick(thick);
-    const double       p = 3e3;
-    FrictionLagStep    step{FrictionLag{L, 1.0}, p, 1e-4};
+    const double       p = 3e3, dt = 1e-4, V = 1.0;
+    FrictionLagStep    step{FrictionLag{L, V}, p, dt};
     const InterfaceLaw wet = interfaceLawWithPorePressure(law_thick, p);
-    InterfaceState<2>  s   = interfaceInitialState<2>(wet, -1e5 + 0.0);
+    InterfaceState<2>  s   = interfaceInitialState<2>(wet, -1e5);
     const double       none[1] = {0.0};
     interfaceUpdate<2>(wet, s, none, 3e-4, 0.0, &step); // opens (u = -1e-4 + 3e-4 > e_ini)
     unit::check(s.status == InterfaceStatus::Open, "opened");
-    interfaceUpdate<2>(wet, s, none, -s.opening - 1e-5, 0.0, &step); // closes, 1e-5 m into contact
+    const double open_1 = 0.0 + (-1e5 - 0.0) * std::exp(-V * dt / L);
+    unit::near(s.sigma_friction, open_1, 1e-12, 0, "open: sigma* relaxes toward 0 over the step");
+    const double opening = s.opening, dw_N = -opening - 1e-5; // closes, 1e-5 m into contact
+    interfaceUpdate<2>(wet, s, none, dw_N, 0.0, &step);
     unit::check(s.status != InterfaceStatus::Open, "closed again");
-    const double target = s.sigma_N + p, decay = std::exp(-1.0 * 1e-4 / L);
-    unit::near(s.sigma_friction, target + (0.0 - target) * decay, 1e-12, 1e-9, "re-contact: sigma* from the cut-off's effective traction (0) toward sigma_N + p");
+    const double beta = opening / (opening + 1e-5);
+    const double at_touch = open_1 * std::exp(-V * beta * dt / L);
+    const double target = s.sigma_N + p;
+    unit::near(s.sigma_friction, target + (at_touch - target) * std::exp(-V * (1 - beta) * dt / L), 1e-12, 1e-9,
+               "re-contact: sigma* toward 0 before the touch, toward sigma_N + p after it");
   }
 
   // 3D: sliding along a diagonal with V* = 0 follows the same closed form in the slip's norm.

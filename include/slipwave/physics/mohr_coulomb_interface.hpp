@@ -341,10 +341,23 @@ template <int Dim>
 double interfaceUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const double *dw_T, double dw_N, double dp = 0.0,
                        const FrictionLagStep *lagged = nullptr) {
   constexpr int NT = Dim - 1;
+  // A lagged friction keeps following the effective traction while the pair is open: 0 + p,
+  // held at the tension cut-off (law.sigma_t is sigma_t - p), over the part `fraction` of the
+  // step. A brief opening (a chattering pair) thus changes sigma* little.
+  const auto lag_while_open = [&](double fraction) {
+    if (!lagged) return;
+    const double target = lagged->p + std::fmin(0.0, law.sigma_t);
+    double       slip   = 0.0;
+    for (int i = 0; i < NT; ++i) slip += dw_T[i] * dw_T[i];
+    s.sigma_friction = std::isfinite(lagged->dt)
+                           ? laggedNormalTraction(lagged->lag, s.sigma_friction, target, fraction * std::sqrt(slip), fraction * lagged->dt)
+                           : target;
+  };
   if (s.status == InterfaceStatus::Open) {
     const double u_tr = s.opening + dw_N;
     if (u_tr > 0.0) {
       s.opening = u_tr;
+      lag_while_open(1.0);
       return 0.0;
     }
     // Re-contact: the step touches at the fraction beta; what follows starts from zero
@@ -358,12 +371,13 @@ double interfaceUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const do
     }
     s.sigma_N = 0.0;
     s.opening = 0.0;
-    // A lagged friction starts from the touch's effective traction, 0 + p held at the
-    // tension cut-off (law.sigma_t is sigma_t - p): a fresh contact builds its strength over
-    // the lag.
-    if (lagged) s.sigma_friction = lagged->p + std::fmin(0.0, law.sigma_t);
-    // From zero traction after the touch, the rest of the step runs with the end's law.
-    return detail::contactUpdate<Dim>(law, s, dw_rest, u_tr, 0.0, lagged);
+    // From zero traction after the touch, the rest of the step runs with the end's law (and
+    // a lagged friction over the rest of the step's time).
+    lag_while_open(beta);
+    if (!lagged) return detail::contactUpdate<Dim>(law, s, dw_rest, u_tr, 0.0);
+    FrictionLagStep after_touch = *lagged;
+    after_touch.dt *= rest;
+    return detail::contactUpdate<Dim>(law, s, dw_rest, u_tr, 0.0, &after_touch);
   }
   if (s.opening + dw_N > law.e_ini) {
     // Lost with the bond: the shear energy (the tangential reference is dropped) and the
@@ -378,6 +392,7 @@ double interfaceUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const do
     s.sigma_N = 0.0;
     s.opening += dw_N;
     s.status = InterfaceStatus::Open;
+    lag_while_open(1.0);
     return 0.0;
   }
   return detail::contactUpdate<Dim>(law, s, dw_T, dw_N, dp, lagged);

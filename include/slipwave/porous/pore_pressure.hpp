@@ -69,7 +69,7 @@ struct PorePressure {
   double vp_undrained_max = 0;                   // [m/s], for the report
   std::vector<std::string> drained, flux;        // boundary names, for the report
   Vec    p_hydrostatic = nullptr;                // p_h per node [Pa]; zero without a water table
-  Vec    p_total = nullptr;                      // p_h + p, refreshed by PorePressureTotal
+  Vec    p_total = nullptr;                      // p_h + p (p_h where drained), refreshed by PorePressureTotal
   Vec    p_total_trial = nullptr;                // p_h + p_trial, what interfaces on saturated soil read
   bool   water_table = false;
   Vec    at_water_table = nullptr;               // 1 at free nodes the water table drained because they lie on it
@@ -107,7 +107,7 @@ PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const st
                                   double gravity, const double *gravity_direction, PorePressure **pore);
 // f += alpha Q^T p_h (global, displacement layout): the hydrostatic pressure's load.
 PetscErrorCode PorePressureAddHydrostaticForce(PorePressure *pore, DM dm, Vec f);
-// p_h + p of the committed state, in pore->p_total.
+// p_h + p of the committed state (p_h on drained nodes), in pore->p_total.
 PetscErrorCode PorePressureTotal(PorePressure *pore);
 // An interface whose soil side is saturated: -interface_<name>_fluid noflow (default) or
 // drained, which holds the excess pore pressure at zero at its soil nodes (soil_dofs: global
