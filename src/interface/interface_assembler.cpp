@@ -187,8 +187,9 @@ PetscErrorCode InterfaceAssembler::AddForces(Vec u, Vec f, PetscReal t) {
   trial_states3_ = states3_;
   trial_jump_    = jump_prev_;
   trial_time_    = t;
-  // The first step after a static stage has no committed time: no time passed.
-  const double dt = !std::isfinite(t) ? NAN : (std::isfinite(committed_time_) ? t - committed_time_ : 0.0);
+  // No time (a static solve) or no committed time yet (the first step): the lag starts at
+  // rest, sigma* = sigma_N + p.
+  const double dt = std::isfinite(t) && std::isfinite(committed_time_) ? t - committed_time_ : NAN;
   const PetscScalar *pore = nullptr;
   if (pore_scatter_) {
     PetscCall(VecScatterBegin(pore_scatter_, pore_source_, pair_p_, INSERT_VALUES, SCATTER_FORWARD));

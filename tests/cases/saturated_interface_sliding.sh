@@ -21,7 +21,7 @@
 #     velocity is not an onset: the edges' partial slip creeps the block at 1 mm/s 20 ms
 #     earlier on 0.125 m cells than on 0.25 m.
 #  2. the same without the lag (-interface_base_friction_slip_length 0): u(1 s) more than 5 %
-#     apart (measured 46.6 against 61.4 mm): the lag is what converges, not the meshes.
+#     apart (measured 46.6 against 61.1 mm): the lag is what converges, not the meshes.
 #  3. noflow contact on a sand's permeability, k = 1e-4 m/s: the pore pressure the slide makes
 #     under the heel and toe enters the friction; onset and u(1 s) on the two meshes within
 #     5 % (measured 0.3 % and 1.1 %; 0.6955 s and 57.2 mm on 0.0625 m cells, not run here), and the slide
