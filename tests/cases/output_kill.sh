@@ -142,11 +142,13 @@ done
 #   to a dataset of its declared shape, no NaN), listing at least the first frame.
 K="-options_file config/scenes/default_linear.yaml -mesh_box_faces 61,30 -ts_max_time 15 -output_interval 0.005 -progress_interval 100"
 for k in 1 2 3 4 5; do
-  rm -f "$WORK/K/volume.xmf"
+  rm -f "$WORK/K/volume.xmf" "$WORK/K/interface_base.xmf"
   delay=$($PY -c "import random; print(round(random.uniform(0, 3), 2))")
   $SW $K -output_dir "$WORK/K" -output_overwrite > "$WORK/K.log" 2>&1 &
   pid=$!
-  for _ in $(seq 600); do [ -s "$WORK/K/volume.xmf" ] && break; sleep 0.05; done
+  # The first frame writes volume.xmf, then interface_base.xmf: wait for both (a kill between
+  # them left no interface index, which the checks below then missed: seen once).
+  for _ in $(seq 600); do [ -s "$WORK/K/volume.xmf" ] && [ -s "$WORK/K/interface_base.xmf" ] && break; sleep 0.05; done
   sleep "$delay"
   kill -s KILL "$pid"
   rc=0; wait "$pid" 2> /dev/null || rc=$?
