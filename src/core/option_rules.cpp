@@ -147,8 +147,8 @@ const Rule kRules[] = {
   {"-interface_*_penalty_length", Kind::Real, 1, 1, aboveZero(1e6), "0 < L <= 1e6 m"},
   {"-interface_*_penalty_factor", Kind::Real, 1, 1, aboveZero(1e6), "0 < factor <= 1e6"},
   {"-interface_*_contact_damping", Kind::Real, 1, 1, magnitude(1e3), "0 <= ratio <= 1 (fraction of critical)"},
-  {"-interface_*_friction_slip_length", Kind::Real, 1, 1, magnitude(1e3), "0 <= L <= 1 m"},
-  {"-interface_*_friction_reference_velocity", Kind::Real, 1, 1, magnitude(1e6), "0 <= V* <= 1e3 m/s"},
+  {"-interface_*_friction_slip_length", Kind::Real, 1, 1, closed(0, 1), "0 <= L <= 1 m (0: no lag)"},
+  {"-interface_*_friction_reference_velocity", Kind::Real, 1, 1, closed(0, 1e3), "0 <= V* <= 1e3 m/s"},
   // saturated regions (physics/biot checks the signs and the relations; these bound the magnitudes)
   {"-material_*_porosity",     Kind::Real, 1, 1, magnitude(10), "0 < n < 1"},
   {"-material_*_hydraulic_conductivity", Kind::Real, 1, 1, magnitude(10), "0 <= k <= 10 m/s"},
