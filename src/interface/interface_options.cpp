@@ -103,13 +103,7 @@ PetscErrorCode InterfaceOptionsRead(MPI_Comm comm, const char *prefix, Interface
              "-%spenalty_length = %s; allowed: > 0 m (the thickness of softer material the interface is as compliant as)", pre, length_text);
   // A penalty option the rule does not read stops earlier, before the mesh (core/option_rules).
   PetscCheck(o.penalty_factor > 0, comm, PETSC_ERR_USER_INPUT, "-%spenalty_factor = %g; allowed: > 0", pre, o.penalty_factor);
-  char lag_text[2][32]; // PETSc's %g would print "-1."
-  std::snprintf(lag_text[0], sizeof lag_text[0], "%g", o.friction_lag.slip_length);
-  std::snprintf(lag_text[1], sizeof lag_text[1], "%g", o.friction_lag.reference_velocity);
-  PetscCheck(std::isfinite(o.friction_lag.slip_length) && o.friction_lag.slip_length >= 0 && o.friction_lag.slip_length <= 1, comm, PETSC_ERR_USER_INPUT,
-             "-%sfriction_slip_length = %s; allowed: 0 <= L <= 1 m (0: no lag)", pre, lag_text[0]);
-  PetscCheck(std::isfinite(o.friction_lag.reference_velocity) && o.friction_lag.reference_velocity >= 0 && o.friction_lag.reference_velocity <= 1e3, comm,
-             PETSC_ERR_USER_INPUT, "-%sfriction_reference_velocity = %s; allowed: 0 <= V* <= 1e3 m/s", pre, lag_text[1]);
+  // The friction lag's ranges are the option rules' (core/option_rules.cpp), checked at start.
   PetscCheck(o.contact_damping >= 0 && o.contact_damping <= 1, comm, PETSC_ERR_USER_INPUT, "-%scontact_damping = %g; allowed: 0 <= ratio <= 1 (fraction of critical)", pre,
              o.contact_damping);
   *options = o;

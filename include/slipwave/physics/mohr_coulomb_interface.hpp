@@ -112,6 +112,16 @@ bool interfaceOnLinearStickBranch(const InterfaceLaw &law, const InterfaceState<
 
 namespace detail {
 
+// sigma* after the part `fraction` of a lagged step, following `target`: the slip is that part
+// of the tangential jump increment (NT components); no time (dt NaN) sets sigma* = target.
+template <int NT>
+double lagNormalTraction(const FrictionLagStep &step, double sigma_star, double target, const double *dw_T, double fraction) {
+  if (!std::isfinite(step.dt)) return target;
+  double slip = 0.0;
+  for (int i = 0; i < NT; ++i) slip += dw_T[i] * dw_T[i];
+  return laggedNormalTraction(step.lag, sigma_star, target, fraction * std::sqrt(slip), fraction * step.dt);
+}
+
 inline double yieldValue(const InterfaceLaw &law, double norm_T, double sigma_N) {
   return norm_T + sigma_N * law.tan_phi - law.c;
 }
@@ -229,11 +239,8 @@ double contactUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const doub
   // Lagged: the cohesion on effective stress (law.c is c - p tan(phi)) and sigma* at the end.
   double c_eff = 0.0, friction_end = 0.0;
   if (lagged) {
-    double slip = 0.0;
-    for (int i = 0; i < NT; ++i) slip += dw_T[i] * dw_T[i];
     c_eff        = law.c + lagged->p * law.tan_phi;
-    const double target = sN_tr + lagged->p;
-    friction_end = std::isfinite(lagged->dt) ? laggedNormalTraction(lagged->lag, s.sigma_friction, target, std::sqrt(slip), lagged->dt) : target;
+    friction_end = lagNormalTraction<NT>(*lagged, s.sigma_friction, sN_tr + lagged->p, dw_T, 1.0);
   }
   // f(trial) <= 0 compared in squares: no square root on the elastic path.
   const double R_tr = lagged ? c_eff - friction_end * law.tan_phi : law.c - sN_tr * law.tan_phi;
@@ -345,13 +352,7 @@ double interfaceUpdate(const InterfaceLaw &law, InterfaceState<Dim> &s, const do
   // held at the tension cut-off (law.sigma_t is sigma_t - p), over the part `fraction` of the
   // step. A brief opening (a chattering pair) thus changes sigma* little.
   const auto lag_while_open = [&](double fraction) {
-    if (!lagged) return;
-    const double target = lagged->p + std::fmin(0.0, law.sigma_t);
-    double       slip   = 0.0;
-    for (int i = 0; i < NT; ++i) slip += dw_T[i] * dw_T[i];
-    s.sigma_friction = std::isfinite(lagged->dt)
-                           ? laggedNormalTraction(lagged->lag, s.sigma_friction, target, fraction * std::sqrt(slip), fraction * lagged->dt)
-                           : target;
+    if (lagged) s.sigma_friction = detail::lagNormalTraction<NT>(*lagged, s.sigma_friction, lagged->p + std::fmin(0.0, law.sigma_t), dw_T, fraction);
   };
   if (s.status == InterfaceStatus::Open) {
     const double u_tr = s.opening + dw_N;
