@@ -217,6 +217,7 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
     if (!verbose && m.model == medium::MaterialModel::Hysteretic)
       PetscCall(PetscPrintf(comm, "; hysteretic (%s)", medium::kBackboneNames[(int)m.hysteretic.choice]));
     if (!verbose && m.damping_ratio > 0) PetscCall(PetscPrintf(comm, "; constant-Q %.3g %%", 100 * m.damping_ratio));
+    if (m.fe.dilatation == fem::Dilatation::Mean) PetscCall(PetscPrintf(comm, "; mean dilatation"));
     PetscCall(PetscPrintf(comm, "\n"));
   }
   for (size_t r = 0; r < model.materials.size(); ++r) {

@@ -211,8 +211,8 @@ PetscErrorCode BulkOperator::Setup(DM dm, const std::vector<RegionMaterial> &mat
     stiffness_.resize((size_t)(idx + 1) * ndof * ndof);
     stress_op_.resize((size_t)(idx + 1) * kStressComponents * ndof);
     lumped_.resize((size_t)(idx + 1) * nen_);
-    fem::elementStiffness(shape_, x, m.lame, &stiffness_[(size_t)idx * ndof * ndof]);
-    elementStressOperator(shape_, x, m.lame, &stress_op_[(size_t)idx * kStressComponents * ndof]);
+    fem::elementStiffness(shape_, x, m.lame, &stiffness_[(size_t)idx * ndof * ndof], m.dilatation);
+    elementStressOperator(shape_, x, m.lame, &stress_op_[(size_t)idx * kStressComponents * ndof], m.dilatation);
     elementLumpedMass(shape_, x, m.rho, &lumped_[(size_t)idx * nen_]);
   }
   matrix_count_ = seen.size();

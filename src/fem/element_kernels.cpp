@@ -28,15 +28,38 @@ double physicalGradients(const ReferenceRule &r, const double *coords, const dou
   return std::fabs(det);
 }
 
-} // namespace
-
-void elementStiffness(CellShape s, const double *coords, const LameParameters &m, double *K) {
-  const ReferenceRule &r = referenceRule(s);
-  const int n = r.nodes, dim = r.dim, nd = n * dim;
-  for (int k = 0; k < nd * nd; ++k) K[k] = 0;
-  double dNdx[kMaxCellNodes][kMaxCellDim];
+// The element's mean divergence weights: div_mean[a*dim + i] = (1/V) int dN_a/dx_i, so that
+// (1/V) int div u = div_mean . u_e.
+void meanDivergence(const ReferenceRule &r, const double *coords, double *div_mean) {
+  double dNdx[kMaxCellNodes][kMaxCellDim], volume = 0;
+  for (int k = 0; k < r.nodes * r.dim; ++k) div_mean[k] = 0;
   for (int q = 0; q < r.points; ++q) {
     const double dv = r.weight[q] * physicalGradients(r, coords, r.dN[q], dNdx);
+    volume += dv;
+    for (int a = 0; a < r.nodes; ++a)
+      for (int i = 0; i < r.dim; ++i) div_mean[a * r.dim + i] += dv * dNdx[a][i];
+  }
+  for (int k = 0; k < r.nodes * r.dim; ++k) div_mean[k] /= volume;
+}
+
+// kappa = lambda + 2 mu / 3, the bulk modulus: the energy density is kappa tr(eps)^2 / 2 +
+// mu dev(eps):dev(eps), in plane strain too (the 3D tensor with eps_zz = 0).
+double bulkModulus(const LameParameters &m) { return m.lambda + 2.0 / 3.0 * m.mu; }
+
+} // namespace
+
+void elementStiffness(CellShape s, const double *coords, const LameParameters &m, double *K, Dilatation dilatation) {
+  const ReferenceRule &r = referenceRule(s);
+  const int n = r.nodes, dim = r.dim, nd = n * dim;
+  const bool mean = dilatation == Dilatation::Mean;
+  // With the mean dilatation the Gauss points carry lambda - kappa = -2 mu / 3 on div u div u
+  // (the deviatoric part) and kappa V div_mean div_mean is added once.
+  const double lambda = mean ? m.lambda - bulkModulus(m) : m.lambda;
+  for (int k = 0; k < nd * nd; ++k) K[k] = 0;
+  double dNdx[kMaxCellNodes][kMaxCellDim], volume = 0;
+  for (int q = 0; q < r.points; ++q) {
+    const double dv = r.weight[q] * physicalGradients(r, coords, r.dN[q], dNdx);
+    volume += dv;
     // K[ai][bj] = int lambda dNa_i dNb_j + mu (dNa_j dNb_i + delta_ij grad Na . grad Nb),
     // the isotropic form of B^T D B without forming B.
     for (int a = 0; a < n; ++a)
@@ -45,12 +68,18 @@ void elementStiffness(CellShape s, const double *coords, const LameParameters &m
         for (int k = 0; k < dim; ++k) dot += dNdx[a][k] * dNdx[b][k];
         for (int i = 0; i < dim; ++i)
           for (int j = 0; j < dim; ++j) {
-            double v = m.lambda * dNdx[a][i] * dNdx[b][j] + m.mu * dNdx[a][j] * dNdx[b][i];
+            double v = lambda * dNdx[a][i] * dNdx[b][j] + m.mu * dNdx[a][j] * dNdx[b][i];
             if (i == j) v += m.mu * dot;
             K[(a * dim + i) * nd + b * dim + j] += dv * v;
           }
       }
   }
+  if (!mean) return;
+  double div_mean[kMaxCellDofs];
+  meanDivergence(r, coords, div_mean);
+  const double kv = bulkModulus(m) * volume;
+  for (int a = 0; a < nd; ++a)
+    for (int b = 0; b < nd; ++b) K[a * nd + b] += kv * div_mean[a] * div_mean[b];
 }
 
 void elementLumpedMass(CellShape s, const double *coords, double rho, double *mass) {
@@ -93,7 +122,7 @@ void elementDiffusion(CellShape s, const double *coords, double *H) {
   }
 }
 
-void elementStressOperator(CellShape s, const double *coords, const LameParameters &m, double *S) {
+void elementStressOperator(CellShape s, const double *coords, const LameParameters &m, double *S, Dilatation dilatation) {
   const ReferenceRule &r = referenceRule(s);
   const int n = r.nodes, dim = r.dim, nd = n * dim;
   double dNdx[kMaxCellNodes][kMaxCellDim] = {};
@@ -112,11 +141,19 @@ void elementStressOperator(CellShape s, const double *coords, const LameParamete
         S[row * nd + b * dim + k] = v;
       }
   }
+  if (dilatation == Dilatation::Gauss) return;
+  // sigma_ii = kappa div u + 2 mu dev(eps)_ii: the centroid's div u replaced by the mean.
+  double div_mean[kMaxCellDofs];
+  meanDivergence(r, coords, div_mean);
+  const double kappa = bulkModulus(m);
+  for (int row = 0; row < 3; ++row)
+    for (int b = 0; b < n; ++b)
+      for (int k = 0; k < dim; ++k) S[row * nd + b * dim + k] += kappa * (div_mean[b * dim + k] - dNdx[b][k]);
 }
 
-void elementStiffnessRowAbsSum(CellShape s, const double *coords, const LameParameters &m, double *rowabs) {
+void elementStiffnessRowAbsSum(CellShape s, const double *coords, const LameParameters &m, double *rowabs, Dilatation dilatation) {
   double K[kMaxCellDofs * kMaxCellDofs];
-  elementStiffness(s, coords, m, K);
+  elementStiffness(s, coords, m, K, dilatation);
   const int nd = cellNodeCount(s) * cellDimension(s);
   for (int row = 0; row < nd; ++row) {
     double v = 0;

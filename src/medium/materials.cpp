@@ -27,7 +27,7 @@ PetscErrorCode materialNamesGiven(std::vector<std::string> *names) {
                                     "_hydraulic_conductivity", "_fluid_bulk_modulus", "_grain_bulk_modulus", "_fluid_density", "_model",
                                     // A hysteretic region's backbone (hystereticRead below).
                                     "_backbone", "_backbone_file", "_reference_strain", "_curvature", "_beta", "_strength", "_gqh_theta", "_plasticity_index", "_ocr",
-                                    "_mean_effective_stress", "_surfaces", "_stress_points"};
+                                    "_mean_effective_stress", "_surfaces", "_stress_points", "_dilatation"};
   while (ss >> token) {
     if (token.rfind("-material_", 0) != 0) continue;
     std::string rest = token.substr(std::strlen("-material_"));
@@ -205,7 +205,8 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
     const std::string title  = "Material of region " + region;
     PetscReal         rho = 0, vp = 0, vs = 0, young = 0, nu = 0, damping_ratio = 0, reference_frequency = 0;
     PetscBool         has_rho, has_vp, has_vs, has_e, has_nu, has_reference;
-    PetscInt          model = (PetscInt)MaterialModel::Elastic;
+    PetscInt          model = (PetscInt)MaterialModel::Elastic, dilatation = (PetscInt)fem::Dilatation::Gauss;
+    PetscBool         has_dilatation;
     HystereticSpec    hysteretic;
     PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "slipwave");
     PetscCall(PetscOptionsReal("-rho", "mass density [kg/m^3], > 0", "MaterialsRead", rho, &rho, &has_rho));
@@ -223,6 +224,14 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
                                   "how the region deforms: elastic, rigid (one rigid body: no internal waves, no step limit of its own; for a structure "
                                   "far stiffer than the soil) or hysteretic (Masing soil, -backbone; its -vs is the small-strain one)",
                                   kMaterialModelNames, 3, &model, nullptr));
+    // A yielding soil flows at constant volume, which fully integrated quadrilaterals cannot
+    // follow (they lock: a footing's collapse load is not reached, tests/cases/
+    // hysteretic_footing_collapse.sh), so a hysteretic region takes the mean by default.
+    if (model == (PetscInt)MaterialModel::Hysteretic) dilatation = (PetscInt)fem::Dilatation::Mean;
+    PetscCall(core::OptionsChoice(PetscOptionsObject, "-dilatation",
+                                  "where the elements of degree 1 take the volumetric strain: gauss (at each Gauss point, full integration) or mean (each "
+                                  "element's mean, the B-bar element: no locking under isochoric flow; the default of a hysteretic region)",
+                                  kDilatationNames, 2, &dilatation, &has_dilatation));
     // Read here so that -help lists them with the region's other options; checked below, once
     // the elastic material (Gmax) is known.
     physics::ElasticMaterial given_elastic{rho, vp, vs};
@@ -267,10 +276,13 @@ PetscErrorCode MaterialsRead(MPI_Comm comm, const std::vector<std::string> &regi
     // A rigid region has no strain: nothing for a damping law to act on.
     PetscCheck(model != (PetscInt)MaterialModel::Rigid || damping_ratio == 0, comm, PETSC_ERR_USER_INPUT,
                "-material_%s_damping_ratio = %g with -material_%s_model rigid; allowed: 0 (a rigid region does not deform)", r, (double)damping_ratio, r);
+    PetscCheck(!has_dilatation || model != (PetscInt)MaterialModel::Rigid, comm, PETSC_ERR_USER_INPUT,
+               "-material_%s_dilatation %s with -material_%s_model rigid; allowed: only on a region that deforms", r, kDilatationNames[dilatation], r);
     RegionMaterialInfo info;
     info.region  = region;
     info.elastic = m;
-    info.fe      = fem::RegionMaterial{m.rho, physics::lame(m), model != (PetscInt)MaterialModel::Rigid};
+    info.fe      = fem::RegionMaterial{m.rho, physics::lame(m), model != (PetscInt)MaterialModel::Rigid, (fem::Dilatation)dilatation};
+    info.dilatation_given = has_dilatation;
     info.damping_ratio = damping_ratio;
     info.reference_frequency = reference_frequency;
     info.model               = (MaterialModel)model;

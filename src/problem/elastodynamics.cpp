@@ -193,6 +193,19 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
                    "-material_%s_model hysteretic with -material_%s_saturated: not supported yet; allowed: a dry hysteretic region", hysteretic.c_str(), hysteretic.c_str());
       }
   }
+  for (size_t r = 0; r < m->materials.size(); ++r) {
+    medium::RegionMaterialInfo &info = m->materials[r];
+    const bool mean = info.fe.dilatation == fem::Dilatation::Mean, given = info.dilatation_given;
+    // A spectral element's GLL quadrature is its own; the mean dilatation is a degree-1 device.
+    PetscCheck(!(given && mean) || m->mesh.degree == 1, comm, PETSC_ERR_USER_INPUT,
+               "-material_%s_dilatation mean with -element_degree = %" PetscInt_FMT ": not supported; allowed: -material_%s_dilatation gauss (the GLL nodes)",
+               info.region.c_str(), m->mesh.degree, info.region.c_str());
+    // The u-p coupling takes div u at the Gauss points: the skeleton must take it there too.
+    PetscCheck(!mean || r >= saturated.size() || !saturated[r].saturated, comm, PETSC_ERR_USER_INPUT,
+               "-material_%s_dilatation mean with -material_%s_saturated: not supported; allowed: -material_%s_dilatation gauss", info.region.c_str(),
+               info.region.c_str(), info.region.c_str());
+    if (m->mesh.degree > 1) info.fe.dilatation = fem::Dilatation::Gauss;
+  }
   PetscCall(readDamping(m));
   PetscCall(medium::AttenuationCreate(comm, &m->materials, &m->attenuation));
   auto setupBulk = [m]() -> PetscErrorCode {

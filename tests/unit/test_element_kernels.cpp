@@ -36,9 +36,9 @@ std::vector<Cell> distortedCells() {
 
 int dofs(CellShape s) { return cellNodeCount(s) * cellDimension(s); }
 
-std::vector<double> stiffness(CellShape s, const std::vector<double> &x) {
+std::vector<double> stiffness(CellShape s, const std::vector<double> &x, const LameParameters &m = kLame, Dilatation d = Dilatation::Gauss) {
   std::vector<double> K(dofs(s) * dofs(s));
-  elementStiffness(s, x.data(), kLame, K.data());
+  elementStiffness(s, x.data(), m, K.data(), d);
   return K;
 }
 
@@ -193,6 +193,94 @@ void testConstantStrain(const Cell &c) {
   const double V = cellVolume(c.shape, c.coords.data());
   unit::near(energy, 0.5 * (kLame.lambda * tr * tr + 2 * kLame.mu * eps_eps) * V, 1e-12, 0,
              std::string(c.name) + ": 1/2 u^T K u = 1/2 eps:C:eps V for constant strain");
+}
+
+double quadratic(const std::vector<double> &K, const std::vector<double> &u) {
+  const std::vector<double> f = multiply(K, u);
+  double e = 0;
+  for (size_t k = 0; k < u.size(); ++k) e += u[k] * f[k];
+  return e;
+}
+
+// The mean-dilatation (B-bar) element, Dilatation::Mean (Hughes 1980): the volumetric energy
+// kappa V (mean div u)^2 in place of kappa int (div u)^2, the deviatoric part as before.
+void testMeanDilatation(const Cell &c) {
+  const int dim = cellDimension(c.shape), nd = dofs(c.shape);
+  const std::string name = std::string(c.name) + " mean dilatation: ";
+  const std::vector<double> Kg = stiffness(c.shape, c.coords), Km = stiffness(c.shape, c.coords, kLame, Dilatation::Mean);
+  const double kmax = maxAbs(Kg);
+  // A uniform strain has the same div u at every point: the same forces and stress.
+  const double A3[9] = {1.0e-3, 4.0e-4, -2.0e-4, -1.0e-4, -7.0e-4, 3.0e-4, 5.0e-4, 2.0e-4, 6.0e-4}, b[3] = {0.3, -0.1, 0.2};
+  double A[9] = {};
+  for (int i = 0; i < dim; ++i)
+    for (int j = 0; j < dim; ++j) A[i * dim + j] = A3[i * 3 + j];
+  const std::vector<double> u = linearField(c.coords, dim, A, b), fg = multiply(Kg, u), fm = multiply(Km, u);
+  double diff = 0;
+  for (int k = 0; k < nd; ++k) diff = std::max(diff, std::fabs(fg[k] - fm[k]));
+  unit::near(diff / maxAbs(fg), 0, 0, 1e-12, name + "uniform strain: the Gauss element's forces");
+  std::vector<double> Sg(kStressComponents * nd), Sm(kStressComponents * nd);
+  elementStressOperator(c.shape, c.coords.data(), kLame, Sg.data());
+  elementStressOperator(c.shape, c.coords.data(), kLame, Sm.data(), Dilatation::Mean);
+  for (int row = 0; row < kStressComponents; ++row) {
+    double sg = 0, sm = 0;
+    for (int k = 0; k < nd; ++k) sg += Sg[row * nd + k] * u[k], sm += Sm[row * nd + k] * u[k];
+    unit::near(sm, sg, 0, 1e-12 * 2 * kLame.mu * 1e-3, name + "uniform strain: stress row " + std::to_string(row) + " as the Gauss element's");
+  }
+  // Symmetric, positive semi-definite, and below the Gauss element: Kg - Km = kappa (int div div -
+  // V mean div mean div) >= 0 by Jensen's inequality; the rigid modes stay its only kernel
+  // (the deviatoric part alone holds every non-rigid mode of these cells).
+  double asym = 0;
+  for (int r = 0; r < nd; ++r)
+    for (int q = 0; q < nd; ++q) asym = std::max(asym, std::fabs(Km[r * nd + q] - Km[q * nd + r]));
+  unit::near(asym / kmax, 0, 0, 1e-15, name + "symmetric");
+  std::vector<double> gap(nd * nd);
+  for (int k = 0; k < nd * nd; ++k) gap[k] = Kg[k] - Km[k];
+  const std::vector<double> ev_gap = symmetricEigenvalues(gap, nd), ev = symmetricEigenvalues(Km, nd);
+  unit::near(std::min(0.0, *std::min_element(ev_gap.begin(), ev_gap.end())) / kmax, 0, 0, 1e-12, name + "K_gauss - K_mean positive semi-definite");
+  const double evmax = *std::max_element(ev.begin(), ev.end());
+  int zeros = 0;
+  for (double e : ev) zeros += std::fabs(e) < 1e-10 * evmax;
+  unit::check(zeros == (dim == 2 ? 3 : 6), name + "zero eigenvalues = rigid modes (got " + std::to_string(zeros) + ")");
+  // lambda enters only through kappa V (mean div u)^2: raising lambda by d raises u^T K u by
+  // d V (mean div u)^2 (d int div^2 with Gauss points). In 2D the mean comes independently from
+  // the boundary, V mean div u = sum over edges of the edge's mean u . (dy, -dx) (u is linear
+  // along a straight edge; nodes counterclockwise).
+  std::vector<double> w(nd);
+  unsigned seed = 12345;
+  for (double &x : w) x = ((seed = seed * 1103515245u + 12345u) >> 8) / double(1u << 24) - 0.5;
+  const double d = 1e3 * kLame.lambda;
+  const LameParameters stiffer{kLame.lambda + d, kLame.mu};
+  const double rise_m = quadratic(stiffness(c.shape, c.coords, stiffer, Dilatation::Mean), w) - quadratic(Km, w);
+  if (dim == 2) {
+    const int n = cellNodeCount(c.shape);
+    double flux = 0;
+    for (int a = 0; a < n; ++a) {
+      const int e = (a + 1) % n;
+      const double dx = c.coords[2 * e] - c.coords[2 * a], dy = c.coords[2 * e + 1] - c.coords[2 * a + 1];
+      flux += 0.5 * ((w[2 * a] + w[2 * e]) * dy - (w[2 * a + 1] + w[2 * e + 1]) * dx);
+    }
+    const double V = cellVolume(c.shape, c.coords.data());
+    unit::near(rise_m, d * flux * flux / V, 1e-9, 0, name + "d(u^T K u)/d lambda = V (mean div u)^2, the mean from the boundary flux");
+  }
+  if (c.shape == CellShape::Tri3 || c.shape == CellShape::Tet4) {
+    unit::near(maxAbs(gap) / kmax, 0, 0, 1e-14, name + "one Gauss point: the same element");
+    return;
+  }
+  // The locking the mean removes: the random mode less its mean dilatation (G = dK_mean/dlambda =
+  // V dbar dbar^T, so w - (w.Gw / |Gw|^2) Gw has dbar.w = 0) still has div u varying inside
+  // the cell; its lambda energy is d int (div u)^2 > 0 with Gauss points (a nearly
+  // incompressible solid cannot take it: the element locks) and zero with the mean.
+  std::vector<double> G(nd * nd);
+  const std::vector<double> Km_stiffer = stiffness(c.shape, c.coords, stiffer, Dilatation::Mean);
+  for (int k = 0; k < nd * nd; ++k) G[k] = (Km_stiffer[k] - Km[k]) / d;
+  const std::vector<double> Gw = multiply(G, w);
+  double wGw = 0, GwGw = 0;
+  for (int k = 0; k < nd; ++k) wGw += w[k] * Gw[k], GwGw += Gw[k] * Gw[k];
+  std::vector<double> v(nd);
+  for (int k = 0; k < nd; ++k) v[k] = w[k] - wGw / GwGw * Gw[k];
+  const double vm = quadratic(Km_stiffer, v) - quadratic(Km, v), vg = quadratic(stiffness(c.shape, c.coords, stiffer), v) - quadratic(Kg, v);
+  unit::near(vm / vg, 0, 0, 1e-9, name + "no lambda energy in a mode of zero mean dilatation (Gauss points: " + std::to_string(vg / quadratic(Kg, v)) + " x its energy at lambda)");
+  unit::check(vg > 0.1 * quadratic(Kg, v), name + "the Gauss element's lambda energy in that mode is not small (it locks)");
 }
 
 void testMassSumsToRhoVolume(const Cell &c) {
@@ -433,6 +521,7 @@ int main() {
     unit::check(static_cast<int>(c.coords.size()) == dofs(c.shape), std::string(c.name) + ": test cell size");
     testRigidModesAndRank(c);
     testConstantStrain(c);
+    testMeanDilatation(c);
     testMassSumsToRhoVolume(c);
     testReferenceCoordinates(c);
   }

@@ -28,16 +28,27 @@ using numerics::kMaxCellNodes;
 constexpr int kMaxCellDofs = 24;
 constexpr int kStressComponents = 6;  // xx, yy, zz, xy, yz, xz
 
-// K: (n*dim)^2 row-major. Full Gauss quadrature (2x2, 2x2x2; one point for simplices,
-// which is exact for their constant strains).
-void elementStiffness(CellShape s, const double *coords, const LameParameters &m, double *K);
+// Where the volumetric strain tr(eps) is taken. Gauss: at each Gauss point, as the rest of the
+// strain (full integration). Mean: the element's mean, (1/V) int div u (the mean-dilatation or
+// B-bar element of Nagtegaal, Parks & Rice 1974 and Hughes 1980), the deviatoric strain still
+// at the Gauss points: a quadrilateral or hexahedron does not lock when the deformation is
+// nearly isochoric (the plastic flow of a yielding soil, a nearly incompressible solid), and
+// it is the same element under a uniform strain. Simplices have one point: the two agree.
+enum class Dilatation { Gauss, Mean };
+
+// K: (n*dim)^2 row-major. Gauss quadrature (2x2, 2x2x2; one point for simplices, which is
+// exact for their constant strains), the volumetric part as `dilatation` says. With Mean,
+// K_mean <= K_gauss as quadratic forms (Jensen: (mean div)^2 <= mean of div^2), so a bound on
+// K_gauss bounds it too.
+void elementStiffness(CellShape s, const double *coords, const LameParameters &m, double *K, Dilatation dilatation = Dilatation::Gauss);
 
 // mass[a] = rho * integral of N_a over the cell (row-sum lumping; exact quadrature).
 void elementLumpedMass(CellShape s, const double *coords, double rho, double *mass);
 
 // sigma = S u_e at the cell centroid. S: 6 x (n*dim) row-major, rows xx, yy, zz, xy, yz, xz.
-// Plane strain: zz = lambda*(exx + eyy), yz = xz = 0.
-void elementStressOperator(CellShape s, const double *coords, const LameParameters &m, double *S);
+// Plane strain: zz = lambda*(exx + eyy), yz = xz = 0. With Dilatation::Mean the volumetric
+// part is the element's mean: kappa (mean div u) on the three normal stresses.
+void elementStressOperator(CellShape s, const double *coords, const LameParameters &m, double *S, Dilatation dilatation = Dilatation::Gauss);
 
 // Biot u-p coupling (docs/saturated-soil.md): Q[a][b*dim+j] = integral of N_a dN_b/dx_j, so
 // (Q u_e)_a is the nodal weight of div u and Q^T p_e the nodal force of a pore pressure p
@@ -49,6 +60,6 @@ void elementCoupling(CellShape s, const double *coords, double *Q);
 void elementDiffusion(CellShape s, const double *coords, double *H);
 
 // rowabs[r] = sum_c |K[r][c]|: Gershgorin bound on the element's largest eigenvalue.
-void elementStiffnessRowAbsSum(CellShape s, const double *coords, const LameParameters &m, double *rowabs);
+void elementStiffnessRowAbsSum(CellShape s, const double *coords, const LameParameters &m, double *rowabs, Dilatation dilatation = Dilatation::Gauss);
 
 } // namespace slipwave::fem

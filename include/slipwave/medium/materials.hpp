@@ -33,6 +33,10 @@ inline constexpr const char *kBackboneNames[] = {"mkz", "darendeli", "gqh", "tab
 enum class StressPoints { Gauss, Mean };
 inline constexpr const char *kStressPointNames[] = {"gauss", "mean"};
 
+// Where a region's elements take the volumetric strain (-material_<region>_dilatation;
+// fem/element_kernels.hpp), in the order of fem::Dilatation.
+inline constexpr const char *kDilatationNames[] = {"gauss", "mean"};
+
 // What a hysteretic region was given, for the report, and the model built from it (once, when
 // the options are read, so that a backbone the model cannot hold stops the run before the mesh
 // work; shared because every copy of the material list describes the same region).
@@ -62,6 +66,7 @@ struct RegionMaterialInfo {
   double                    vp_undrained = 0; // saturated region: P speed with the pore fluid locked in (porous/pore_pressure.hpp); 0: dry
   MaterialModel             model = MaterialModel::Elastic;
   HystereticSpec            hysteretic; // model Hysteretic only
+  bool                      dilatation_given = false; // -material_<region>_dilatation (fe.dilatation) given, not the model's default
 };
 
 // What a boundary of the region sees (absorbing dashpots, free-field columns): a saturated
