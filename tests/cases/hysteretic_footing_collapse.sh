@@ -49,11 +49,10 @@ $PY - "$WORK" <<'PY'
 import sys
 import numpy as np
 work = sys.argv[1]
-ok = True
-def check(what, good, detail):
-    global ok
-    ok &= good
-    print(f"  {'ok' if good else 'FAILED'}: {what}: {detail}")
+sys.path.insert(0, "tests/tools")
+from verdict import Verdict
+verdict = Verdict()
+check = verdict.check
 def footing(name):
     a = np.genfromtxt(f"{work}/{name}/rigid_footing.csv", delimiter=",", names=True)
     t, settled = a["t"], -a["u_y"]
@@ -69,5 +68,5 @@ one, _, _ = footing("mean_h_095")
 two, _, _ = footing("mean_h_095_np2")
 d = np.max(np.abs(one - two)) / np.max(np.abs(one))
 check("2 ranks as 1", d < 1e-9, f"{d:.1e} of the settlement (bound 1e-9)")
-sys.exit(0 if ok else 1)
+verdict.exit()
 PY

@@ -62,11 +62,10 @@ import sys
 import numpy as np
 work = sys.argv[1]
 m, g, rate, tan_phi = 2400.0, 9.81, 20000.0, math.tan(math.radians(30))
-ok = True
-def check(what, good, detail):
-    global ok
-    ok &= good
-    print(f"  {'ok' if good else 'FAILED'}: {what}: {detail}")
+sys.path.insert(0, "tests/tools")
+from verdict import Verdict
+verdict = Verdict()
+check = verdict.check
 def block(name):
     b = np.genfromtxt(f"{work}/{name}/stations/block.csv", delimiter=",", names=True)
     t, u, v = b["t"], b["u_x"], b["v_x"]
@@ -96,5 +95,5 @@ _, _, series_1 = block("drained_h")
 _, _, series_2 = block("drained_h_np2")
 diff = np.max(np.abs(series_2 - series_1)) / np.max(np.abs(series_1))
 check("drained: 2 ranks as 1", diff <= 1e-9, f"largest difference of u_x {diff:.1e} of its peak (bound 1e-9)")
-sys.exit(0 if ok else 1)
+verdict.exit()
 PY
