@@ -89,12 +89,20 @@ void sumEveryDof(const LedgerArrays &x, PetscInt n, double h, double alpha, doub
 // The same work sums where a scene has no force spread over the mesh (no Rayleigh damping,
 // constant Q or interfaces; loads listed by problem/nodal_acceleration): loads act on their
 // listed dofs only and a support's reaction on its held dofs only, so only those are visited.
+// A hysteretic soil's relaxation forces are spread over the mesh: their power is summed apart
+// (sumHystereticPower), their share of a reaction here.
 void sumListedWork(const LedgerArrays &x, const NodalAcceleration &na, double s[12]) {
   for (PetscInt k : na.external_dofs) {
     s[3] += x.v[k] * x.fin[k];
     s[4] += x.v[k] * (x.fx[k] - x.fin[k]);
   }
-  for (PetscInt k : na.held_dofs) s[5] += x.v[k] * (x.mass[k] * x.a[k] + x.fi[k] - x.fx[k] - x.fif[k] - x.fan[k] - x.fcd[k]);
+  for (PetscInt k : na.held_dofs) s[5] += x.v[k] * (x.mass[k] * x.a[k] + x.fi[k] - x.fx[k] - x.fif[k] - x.fan[k] - x.fcd[k] - (x.fhy ? x.fhy[k] : 0.0));
+}
+
+// The power of the hysteretic relaxation forces (11), on every dof: two arrays read where
+// sumEveryDof reads ten.
+void sumHystereticPower(const LedgerArrays &x, PetscInt n, double s[12]) {
+  for (PetscInt k = 0; k < n; ++k) s[11] += x.v[k] * x.fhy[k];
 }
 
 // The stored energies alone.
@@ -143,9 +151,10 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool ev
   PetscCall(VecGetArrayRead(m->bc.absorbing_blocks, &C));
   double       s[13] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
   const double alpha = m->rayleigh.alpha;
-  const bool   listed = m->nodal.listed && alpha == 0 && m->rayleigh.beta == 0 && !m->attenuation && m->interfaces.empty() && !m->hysteresis;
+  const bool   listed = m->nodal.listed && alpha == 0 && m->rayleigh.beta == 0 && !m->attenuation && m->interfaces.empty();
   if (listed) {
     sumListedWork(x, m->nodal, s);
+    if (m->hysteresis) sumHystereticPower(x, n, s);
     if (evaluate) sumStored(x, n, h, s);
   } else if (m->hysteresis) {
     if (evaluate) sumEveryDof<true, true>(x, n, h, alpha, s);
