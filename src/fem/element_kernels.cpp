@@ -29,8 +29,8 @@ double physicalGradients(const ReferenceRule &r, const double *coords, const dou
 }
 
 // The element's mean divergence weights: div_mean[a*dim + i] = (1/V) int dN_a/dx_i, so that
-// (1/V) int div u = div_mean . u_e.
-void meanDivergence(const ReferenceRule &r, const double *coords, double *div_mean) {
+// (1/V) int div u = div_mean . u_e; returns V.
+double meanDivergence(const ReferenceRule &r, const double *coords, double *div_mean) {
   double dNdx[kMaxCellNodes][kMaxCellDim], volume = 0;
   for (int k = 0; k < r.nodes * r.dim; ++k) div_mean[k] = 0;
   for (int q = 0; q < r.points; ++q) {
@@ -40,6 +40,7 @@ void meanDivergence(const ReferenceRule &r, const double *coords, double *div_me
       for (int i = 0; i < r.dim; ++i) div_mean[a * r.dim + i] += dv * dNdx[a][i];
   }
   for (int k = 0; k < r.nodes * r.dim; ++k) div_mean[k] /= volume;
+  return volume;
 }
 
 // kappa = lambda + 2 mu / 3, the bulk modulus: the energy density is kappa tr(eps)^2 / 2 +
@@ -56,10 +57,9 @@ void elementStiffness(CellShape s, const double *coords, const LameParameters &m
   // (the deviatoric part) and kappa V div_mean div_mean is added once.
   const double lambda = mean ? m.lambda - bulkModulus(m) : m.lambda;
   for (int k = 0; k < nd * nd; ++k) K[k] = 0;
-  double dNdx[kMaxCellNodes][kMaxCellDim], volume = 0;
+  double dNdx[kMaxCellNodes][kMaxCellDim];
   for (int q = 0; q < r.points; ++q) {
     const double dv = r.weight[q] * physicalGradients(r, coords, r.dN[q], dNdx);
-    volume += dv;
     // K[ai][bj] = int lambda dNa_i dNb_j + mu (dNa_j dNb_i + delta_ij grad Na . grad Nb),
     // the isotropic form of B^T D B without forming B.
     for (int a = 0; a < n; ++a)
@@ -75,9 +75,8 @@ void elementStiffness(CellShape s, const double *coords, const LameParameters &m
       }
   }
   if (!mean) return;
-  double div_mean[kMaxCellDofs];
-  meanDivergence(r, coords, div_mean);
-  const double kv = bulkModulus(m) * volume;
+  double       div_mean[kMaxCellDofs];
+  const double kv = bulkModulus(m) * meanDivergence(r, coords, div_mean);
   for (int a = 0; a < nd; ++a)
     for (int b = 0; b < nd; ++b) K[a * nd + b] += kv * div_mean[a] * div_mean[b];
 }
@@ -151,9 +150,9 @@ void elementStressOperator(CellShape s, const double *coords, const LameParamete
       for (int k = 0; k < dim; ++k) S[row * nd + b * dim + k] += kappa * (div_mean[b * dim + k] - dNdx[b][k]);
 }
 
-void elementStiffnessRowAbsSum(CellShape s, const double *coords, const LameParameters &m, double *rowabs, Dilatation dilatation) {
+void elementStiffnessRowAbsSum(CellShape s, const double *coords, const LameParameters &m, double *rowabs) {
   double K[kMaxCellDofs * kMaxCellDofs];
-  elementStiffness(s, coords, m, K, dilatation);
+  elementStiffness(s, coords, m, K);
   const int nd = cellNodeCount(s) * cellDimension(s);
   for (int row = 0; row < nd; ++row) {
     double v = 0;

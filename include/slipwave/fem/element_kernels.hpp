@@ -60,6 +60,6 @@ void elementCoupling(CellShape s, const double *coords, double *Q);
 void elementDiffusion(CellShape s, const double *coords, double *H);
 
 // rowabs[r] = sum_c |K[r][c]|: Gershgorin bound on the element's largest eigenvalue.
-void elementStiffnessRowAbsSum(CellShape s, const double *coords, const LameParameters &m, double *rowabs, Dilatation dilatation = Dilatation::Gauss);
+void elementStiffnessRowAbsSum(CellShape s, const double *coords, const LameParameters &m, double *rowabs);
 
 } // namespace slipwave::fem
