@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs every unit-test binary (each prints "ok - ..." / "not ok - ..." lines) and every
 # scenario script tests/cases/*.sh (one test each: exit 0 = pass), then prints the
-# closing line "N passed, N failed". Logs of the scripts go to build/tests/logs/.
+# closing line "N passed, N failed". Logs of the scripts go to build/tests/logs/; their work
+# folders (build/tests/work/) are removed once they pass unless KEEP_WORK=1.
 set -u
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
@@ -14,14 +15,34 @@ logs="$BUILD/tests/logs"; mkdir -p "$logs"
 # shared-memory path (pml ob1, btl vader) carries the messages. What is computed and sent is
 # the same. A script run alone gets them only if you set them.
 export OMPI_MCA_ess_singleton_isolated=${OMPI_MCA_ess_singleton_isolated:-1} OMPI_MCA_pml=${OMPI_MCA_pml:-ob1}
-pass=0; fail=0; failed_names=()
+pass=0; fail=0; failed_names=(); reran=()
+
+# run_case SCRIPT LOG: the script in its own session, stdin closed (a launcher that reads a
+# terminal would stop the suite), and a watchdog: past CASE_LIMIT seconds (about 9 times the
+# slowest case) the stacks of every process of the session go to the log (gdb, where the
+# machine lets it attach), then every process of the session is killed (an MPI launcher puts
+# its ranks in process groups of their own); the status is then $timed_out.
+CASE_LIMIT=${CASE_LIMIT:-900}; timed_out=200
+run_case() {
+  setsid bash "$1" >"$2" 2>&1 </dev/null & local pid=$!
+  ( sleep "$CASE_LIMIT" & trap 'kill $! 2>/dev/null; exit 0' TERM; wait $!
+    { echo "=== no end after $CASE_LIMIT s; the processes of the session:"; ps -o pid,etime,time,stat,args -s "$pid"
+      for p in $(ps -o pid= -s "$pid"); do
+        echo "=== stacks of $p"; timeout 60 gdb -p "$p" -batch -ex 'thread apply all bt' 2>&1 | grep -E '^(#|Thread)' | head -80
+      done; } >>"$2.stacks" 2>&1
+    kill -KILL $(ps -o pid= -s "$pid") 2>/dev/null ) & local watchdog=$!
+  { wait "$pid"; } 2>/dev/null; local rc=$?
+  kill "$watchdog" 2>/dev/null; wait "$watchdog" 2>/dev/null
+  if [ -f "$2.stacks" ]; then cat "$2.stacks" >>"$2"; rm -f "$2.stacks"; return $timed_out; fi
+  return $rc
+}
 start_all=$(date +%s)
 
 for t in "$BUILD"/tests/unit/test_*; do
   [ -x "$t" ] || continue
   case "$t" in *.o|*.d) continue ;; esac
   name=$(basename "$t")
-  out=$("$t" 2>&1); rc=$?
+  out=$("$t" 2>&1 </dev/null); rc=$?
   p=$(grep -c '^ok - ' <<<"$out"); f=$(grep -c '^not ok - ' <<<"$out")
   grep '^not ok - ' <<<"$out" | sed "s/^/  $name: /"
   if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
@@ -35,11 +56,20 @@ done
 for s in tests/cases/*.sh; do
   [ -f "$s" ] || continue
   name=$(basename "$s" .sh)
-  t0=$(date +%s%N)
-  bash "$s" >"$logs/$name.log" 2>&1; rc=$?
+  t0=$(date +%s%N); touch "$logs/.case_start"
+  run_case "$s" "$logs/$name.log"; rc=$?
+  if [ "$rc" -eq "$timed_out" ]; then
+    # A hang is not an answer: say it, keep the stacks, run the script once more (its
+    # verdict then counts, and the rerun is named in the summary).
+    echo "cases/$name: no end after $CASE_LIMIT s; stacks in $logs/$name.hung.log; run again"
+    mv "$logs/$name.log" "$logs/$name.hung.log"; reran+=("$name")
+    run_case "$s" "$logs/$name.log"; rc=$?
+  fi
   ms=$(( ($(date +%s%N) - t0) / 1000000 )); dt="$((ms / 1000)).$(( (ms % 1000) / 100 ))"
   if [ "$rc" -eq 0 ]; then
     pass=$((pass + 1)); printf '%-40s ok      (%ss)\n' "cases/$name" "$dt"
+    # A passed case's work folders go (the suite writes some 2 GB); a failed one's stay.
+    [ -n "${KEEP_WORK:-}" ] || find "$BUILD/tests/work" -mindepth 1 -maxdepth 1 -newer "$logs/.case_start" -exec rm -rf {} + 2>/dev/null
   else
     fail=$((fail + 1)); failed_names+=("$name")
     printf '%-40s FAILED  (%ss, exit %d); last lines of %s:\n' "cases/$name" "$dt" "$rc" "$logs/$name.log"
@@ -48,6 +78,7 @@ for s in tests/cases/*.sh; do
 done
 
 echo "total time $(( $(date +%s) - start_all )) s"
+[ ${#reran[@]} -gt 0 ] && echo "run again after no end in $CASE_LIMIT s: ${reran[*]}"
 [ ${#failed_names[@]} -gt 0 ] && echo "failed: ${failed_names[*]}"
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
