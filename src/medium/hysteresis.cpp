@@ -588,6 +588,10 @@ void HysteresisCommit(Hysteresis *h) {
   h->has_trial = false;
 }
 
+void HysteresisDiscardTrial(Hysteresis *h) {
+  if (h) h->has_trial = false;
+}
+
 // Checkpoints hold each point's state as one array (header, then plastic strains), with the
 // tail's age (updates since it was set) in kSince's slot: the count of updates starts again
 // with the restarted run (HysteresisSetState), and the file is the same as when the state kept

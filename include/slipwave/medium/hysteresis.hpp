@@ -118,6 +118,9 @@ PetscErrorCode HysteresisSetGeostaticStress(Hysteresis *h, MPI_Comm comm, const 
                                             std::vector<std::string> *report);
 // The strains of the last HysteresisForce become the committed state (no-op without one).
 void HysteresisCommit(Hysteresis *h);
+// The strains of the last HysteresisForce are dropped: a later commit keeps the state (a
+// force evaluated only to time it, app/run_report.cpp).
+void HysteresisDiscardTrial(Hysteresis *h);
 // Committed state for checkpoints: this rank's points' states, region by region. The size is fixed by the mesh and the models (a checkpoint of another
 // scene is refused before, by the displacement's size).
 std::vector<double> HysteresisState(const Hysteresis *h);
