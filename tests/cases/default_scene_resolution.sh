@@ -1,6 +1,6 @@
 # What of the default scene's answer does not depend on the numerics (issue 21, parts 1 and 3):
 # the yielding scene (config/scenes/default.yaml) over its first 2.8 s (the record's peak at
-# 2.1 s and the block's first large rocking cycle, 4.0 mrad at 2.6 s), on 2 ranks; the full
+# 2.1 s and the block's first large rocking cycle, 3.4 mrad at 2.7 s), on 2 ranks; the full
 # 15 s study is in docs/convergence-study.md ("The yielding scene").
 #  1. The contact model: the interface twice as stiff (-interface_base_penalty_length 0.015,
 #     half the default width/200) moves every answer of scripts/scene_metrics.py by less
