@@ -26,8 +26,12 @@ Rocking and uplift:
   peak_uplift         the largest opening of any pair at any output step [m]
   peak_rocking_angle  max |u_v(block_base_right) - u_v(block_base_left)| / their distance
                       over time [rad] (stations at the base corners, inside the block)
-  tilt_after_shaking  (u_v(block_base_right) - u_v(block_base_left)) / their distance at the
-                      end, signed (counter-clockwise positive): the permanent tilt [rad]
+  tilt_after_shaking  (u_v(block_base_right) - u_v(block_base_left)) / their distance, signed
+                      (counter-clockwise positive), its time mean over the last 2 s
+                      (tail_window): the permanent tilt once the rocking settles [rad]
+  rocking_at_end      the same angle's half range (max - min) / 2 over the last 2 s: the
+                      swing left about that tilt; larger than |tilt_after_shaking|: the run
+                      ended while the block still rocked [rad]
   (u_v: the vertical displacement, u_y in 2D, u_z in 3D)
 Accelerations (horizontal, a_x):
   peak_structure_acceleration  max |a_x| at the station block_top, unfiltered [m/s^2]: not a
@@ -81,6 +85,28 @@ def station(run, name):
     if name not in run.station_names():
         raise SystemExit(f"scene_metrics: error: station '{name}' is missing ({os.path.join(run.path, 'stations', name + '.csv')})")
     return run.station(name)
+
+
+# The final window of tilt_after_shaking and rocking_at_end [s] (app/run_answers.cpp's).
+SETTLE_WINDOW = 2.0
+
+
+def tail_window(t, v, window=SETTLE_WINDOW):
+    """(mean, half range) of v over [t_end - window, t_end]: the trapezoidal time mean and
+    (max - min) / 2, the window's start interpolated on its segment; the whole history when
+    it is shorter; a single sample is its own mean (numerics/tail_window.hpp)."""
+    t, v = np.asarray(t, float), np.asarray(v, float)
+    if len(t) == 0:
+        return 0.0, 0.0
+    start = t[-1] - window
+    first = int(np.searchsorted(t, start, side="right"))
+    tw, vw = t[first:], v[first:]
+    if first > 0 and (len(tw) == 0 or tw[0] > start):
+        v0 = v[first - 1] + (start - t[first - 1]) / (t[first] - t[first - 1]) * (v[first] - v[first - 1])
+        tw, vw = np.concatenate(([start], tw)), np.concatenate(([v0], vw))
+    span = tw[-1] - tw[0]
+    mean = float(np.sum(0.5 * (vw[1:] + vw[:-1]) * np.diff(tw)) / span) if span > 0 else float(v[-1])
+    return mean, float(0.5 * (vw.max() - vw.min()))
 
 
 def high_frequency_share(t, a, f_cut, *more):
@@ -178,7 +204,7 @@ def station_measures(records, f_resolved, f_lowpass=None, rocking_span=5.5):
         span = rocking_span
         up = "u_z" if "u_z" in left else "u_y"  # the vertical: z in 3D
         m["peak_rocking_angle"] = float(np.max(np.abs(right[up] - left[up])) / span)
-        m["tilt_after_shaking"] = float((right[up][-1] - left[up][-1]) / span)
+        m["tilt_after_shaking"], m["rocking_at_end"] = tail_window(left["t"], (right[up] - left[up]) / span)
     if "block_top" in records:
         m["peak_structure_acceleration"] = float(np.max(np.abs(records["block_top"]["a_x"])))
     if "free_field" in records:
@@ -245,7 +271,7 @@ def unit(key):
         return "-"
     if key.endswith("_hz"):
         return "Hz"
-    if key in ("peak_rocking_angle", "tilt_after_shaking"):
+    if key in ("peak_rocking_angle", "tilt_after_shaking", "rocking_at_end"):
         return "rad"
     if key in ("net_slip", "accumulated_slip", "largest_slip_excursion", "mean_slip_range", "peak_uplift"):
         return "m"

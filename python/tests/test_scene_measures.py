@@ -147,8 +147,16 @@ class StationMeasures(unittest.TestCase):
             self.assertIn(key, m)
         # rocking: (u_y right - u_y left) / 5.5 m = theta, peak 0.01 rad (theta's crest at t = 0.25 s is a sample)
         self.assertAlmostEqual(m["peak_rocking_angle"], 0.01, delta=1e-15)
-        # the tilt at the end: theta at the last sample, signed
-        self.assertAlmostEqual(m["tilt_after_shaking"], 0.01 * np.sin(2 * np.pi * self.records()["block_top"]["t"][-1]), delta=1e-15)
+        # the tilt after shaking: theta's mean over the last 2 s, two whole periods of the 1 Hz
+        # sine (trapezoids over whole periods of a sampled sine sum to zero), not its last
+        # sample; the rocking left: its half range there, the crests at 2.25 and 3.25 s (samples)
+        self.assertAlmostEqual(m["tilt_after_shaking"], 0.0, delta=1e-15)
+        self.assertAlmostEqual(m["rocking_at_end"], 0.01, delta=1e-15)
+        # a ramp: its mean over the window is its value at the window's middle
+        t = np.arange(0, 4001) * 1e-3
+        mean, half = sm.tail_window(t, 2 + 3 * t)
+        self.assertAlmostEqual(mean, 2 + 3 * 3.0, delta=1e-12)
+        self.assertAlmostEqual(half, 3.0, delta=1e-12)
         self.assertAlmostEqual(m["free_field_pga"], 2.0, delta=1e-12)  # crest of 2 sin(2 pi 5 t) at t = 0.05 s, a sample
         for name in ("block_top", "free_field"):
             for T in sm.SPECTRUM_PERIODS:

@@ -6,6 +6,7 @@
 
 #include "slipwave/app/run_report.hpp"
 #include "slipwave/numerics/low_pass.hpp"
+#include "slipwave/numerics/tail_window.hpp"
 #include "slipwave/problem/rigid_bodies.hpp"
 
 namespace slipwave::app {
@@ -14,6 +15,9 @@ namespace {
 constexpr double kGravity    = 9.80665; // standard gravity, for the table's g [m/s^2]
 constexpr double kSlideGate  = 0.05;    // back-and-forth below this share of the range is not a reversal (as scene_metrics.py)
 constexpr PetscInt kMaxPeriods = 32;
+// The final window over which the tilt after shaking is the mean angle and the rocking left its
+// half range: several periods of a rocking structure (0.2-1 s), as scene_metrics.py's.
+constexpr double kSettleWindow = 2.0;
 
 // The index of station `name`, or -1.
 int stationIndex(const io::Stations &stations, const std::string &name) {
@@ -180,6 +184,7 @@ PetscErrorCode RunAnswers::Update(const problem::Elastodynamics &model, io::Stat
     tilt_               = model.dim == 2 ? theta[2] : std::sqrt(theta[0] * theta[0] + theta[1] * theta[1] + theta[2] * theta[2]);
   } else if (rock_span_ > 0) tilt_ = (v[1] - v[0]) / rock_span_;
   rocking_ = std::max(rocking_, std::fabs(tilt_));
+  if (body_ >= 0 || rock_span_ > 0) tilt_times_.push_back(t), tilts_.push_back(tilt_);
   PetscFunctionReturn(0);
 }
 
@@ -220,7 +225,17 @@ PetscErrorCode RunAnswers::Finish(const problem::Elastodynamics &model, bool res
   if (body_ >= 0 || rock_span_ > 0) {
     const std::string by = body_ >= 0 ? "rigid body " + body_name_ : "base stations";
     answers.push_back({"peak_rocking_angle", "rad", "peak rocking angle (" + by + ")", rocking_});
-    answers.push_back({"tilt_after_shaking", "rad", "tilt after shaking (" + by + ", at the end)", tilt_});
+    // The last angle is a point of the swing while the structure still rocks: the tilt is the
+    // mean over the final window, and the swing left about it is stated beside it.
+    const numerics::TailWindow end = numerics::tailWindow(tilt_times_, tilts_, kSettleWindow);
+    answers.push_back({"tilt_after_shaking", "rad", "tilt after shaking (" + by + ", 2 s mean)", end.mean});
+    answers.push_back({"rocking_at_end", "rad", "still rocking at the end (half range, last 2 s)", end.half_range});
+    if (end.half_range > std::fabs(end.mean)) {
+      char line[256];
+      std::snprintf(line, sizeof line, "the structure still rocks by +-%.3g rad at the end, more than its mean tilt %.3g rad: the tilt is not settled (a longer -ts_max_time lets it settle)",
+                    end.half_range, end.mean);
+      notes_.push_back(line);
+    }
   }
   if (structure_ >= 0) {
     if (geostatic_) answers.push_back({"settlement_gravity", "m", "settlement under gravity (" + structure_name_ + ")", -geostatic_vertical_});

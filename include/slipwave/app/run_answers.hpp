@@ -10,9 +10,11 @@
 //   the first rigid region; 2D theta_z, 3D the rotation vector's length), else max
 //   |u_v(right) - u_v(left)| / their x distance of the two stations -answer_rocking_stations
 //   (default block_base_left,block_base_right). tilt_after_shaking = the same angle, signed
-//   (2D: counter-clockwise positive; 3D: the length), at the end: the permanent tilt, which
-//   a yielding soil accumulates cycle by cycle (docs/convergence-study.md: it converges
-//   far more slowly than the peak of the first large cycle, so it is stated apart).
+//   (2D: counter-clockwise positive; 3D: the length), its mean over the last 2 s
+//   (numerics/tail_window.hpp): the permanent tilt, which a yielding soil accumulates cycle
+//   by cycle, once the rocking has settled; rocking_at_end = the angle's half range over the
+//   same 2 s, the swing left about it (a note says when it exceeds the tilt: the run ended
+//   while the structure still rocked, and its last angle would be a point of the swing).
 // - The structure station (-answer_structure_station, default block_top): its 5 %-damped
 //   floor spectrum <name>_psa_<T>s at -answer_periods (numerics/response_spectrum.hpp) and
 //   peak_structure_acceleration; settlement_gravity = -u_v at the end of the geostatic stage,
@@ -76,6 +78,7 @@ private:
   std::vector<io::Stations::Probe> probes_;
   std::vector<InterfaceCounts>     counts_;
   std::vector<double> times_, structure_ax_, free_field_ax_; // every step, for the low-passed peaks
+  std::vector<double> tilt_times_, tilts_;                   // every step, for the tilt's final window
   double              corner_hz_ = 0;
   double net_slip_ = 0, local_uplift_ = 0, rocking_ = 0, tilt_ = 0, structure_peak_ = 0, free_field_peak_ = 0, structure_vertical_ = 0, geostatic_vertical_ = 0;
   bool   geostatic_ = false;
