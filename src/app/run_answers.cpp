@@ -232,7 +232,7 @@ PetscErrorCode RunAnswers::Finish(const problem::Elastodynamics &model, bool res
     answers.push_back({"rocking_at_end", "rad", "still rocking at the end (half range, last 2 s)", end.half_range});
     if (end.half_range > std::fabs(end.mean)) {
       char line[256];
-      std::snprintf(line, sizeof line, "the structure still rocks by +-%.3g rad at the end, more than its mean tilt %.3g rad: the tilt is not settled (a longer -ts_max_time lets it settle)",
+      std::snprintf(line, sizeof line, "the structure still rocks by +-%.3g rad at the end, more than its mean tilt %.3g rad: the tilt is not settled (run past the end of the shaking, -ts_max_time, for a settled tilt)",
                     end.half_range, end.mean);
       notes_.push_back(line);
     }
