@@ -42,7 +42,8 @@ for t in "$BUILD"/tests/unit/test_*; do
   [ -x "$t" ] || continue
   case "$t" in *.o|*.d) continue ;; esac
   name=$(basename "$t")
-  out=$("$t" 2>&1 </dev/null); rc=$?
+  # A unit binary takes seconds; one that hangs is stopped (exit 124) and fails.
+  out=$(timeout -k 10 "$CASE_LIMIT" "$t" 2>&1 </dev/null); rc=$?
   p=$(grep -c '^ok - ' <<<"$out"); f=$(grep -c '^not ok - ' <<<"$out")
   grep '^not ok - ' <<<"$out" | sed "s/^/  $name: /"
   if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
