@@ -51,7 +51,8 @@ r21 = h2/h1, r32 = h3/h2:
 Output: DIR/main/convergence.json (every level's options and answers, and for each banded
 answer the main value, band, relative band, order used and whether observed, safety factor,
 Richardson estimate and note), the same as the key "convergence" of DIR/main/run_info.json,
-and a table on stdout.
+and a table on stdout, then the answers sorted by their band: within 5 % of the value (issue
+21's bound), and wider (each with its band), and those that are zero on the main level.
 """
 import argparse
 import json
@@ -355,6 +356,23 @@ def table(bands, units):
     return "\n".join(lines)
 
 
+# The bound an answer's band must keep to be read as converged (issue 21's 5 %).
+CONVERGED_BAND = 0.05
+
+
+def summary(bands):
+    """Two lines that sort the answers by their band: within CONVERGED_BAND of the value, and
+    wider (each with its band), so the reader sees which numbers the mesh has settled."""
+    tight = [k for k, b in bands.items() if b["relative_band"] is not None and b["relative_band"] <= CONVERGED_BAND]
+    wide = [f"{k} (+-{100 * b['relative_band']:.0f} %)" for k, b in bands.items() if b["relative_band"] is not None and b["relative_band"] > CONVERGED_BAND]
+    zero = [k for k, b in bands.items() if b["relative_band"] is None]
+    lines = [f"answers with a band within {100 * CONVERGED_BAND:g} %: {', '.join(tight) or 'none'}",
+             f"answers with a wider band (read them with it): {', '.join(wide) or 'none'}"]
+    if zero:
+        lines.append(f"zero on the main level (no relative band): {', '.join(zero)}")
+    return "\n".join(lines)
+
+
 def main():
     parser = argparse.ArgumentParser(description="Runs a scene at its resolution and a companion, and reports each main answer with a grid-convergence band.",
                                      usage="%(prog)s SCENE --out DIR [options] [-- SLIPWAVE OPTIONS...]")
@@ -422,6 +440,7 @@ def main():
     print(f"\nAnswers of the main run ({main_folder}) with their grid-convergence band "
           f"(low-passed peaks at {f_cut:.3g} Hz, the coarsest level's resolved frequency):")
     print(table(bands, scene_metrics.unit))
+    print(summary(bands))
     print(f"\nwritten: {os.path.join(main_folder, 'convergence.json')}, and the key \"convergence\" of {info_path}")
     return 0
 

@@ -11,7 +11,7 @@ import sys
 import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
-from convergence_check import grid_band  # noqa: E402
+from convergence_check import grid_band, summary  # noqa: E402
 
 F0, C = 2.0, 0.3
 
@@ -86,6 +86,21 @@ class GridBand(unittest.TestCase):
         """The same value on every level: band 0."""
         b = grid_band([1.5, 1.5, 1.5], [2, 2], 1)
         self.assertEqual(b["band"], 0.0)
+
+
+class Summary(unittest.TestCase):
+    def test_sorted_by_band(self):
+        """Answers with relative bands 0.01 and exactly 0.05 are within 5 %, 0.3 is wider (said
+        with its band), a zero value (no relative band) is listed apart."""
+        bands = {"a": {"relative_band": 0.01}, "b": {"relative_band": 0.3}, "c": {"relative_band": 0.05}, "z": {"relative_band": None}}
+        lines = summary(bands).splitlines()
+        self.assertEqual(lines[0], "answers with a band within 5 %: a, c")
+        self.assertEqual(lines[1], "answers with a wider band (read them with it): b (+-30 %)")
+        self.assertEqual(lines[2], "zero on the main level (no relative band): z")
+
+    def test_none_wider(self):
+        lines = summary({"a": {"relative_band": 0.02}}).splitlines()
+        self.assertEqual(lines, ["answers with a band within 5 %: a", "answers with a wider band (read them with it): none"])
 
 
 if __name__ == "__main__":

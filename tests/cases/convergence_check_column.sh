@@ -16,7 +16,8 @@
 # Measured: PGA errors 0.0200, 0.00345 (rate 2.53), bands 0.0395, 0.0069 (rate 2.52); PSA(0.5 s)
 # errors 1.62e-3, 2.63e-4 (2.62), bands 2.85e-3, 5.66e-4 (2.33). (From 400 to 800 cells the PGA
 # band's rate is 2.60 and the error's 2.25: the GCI follows the differences, not the error.)
-# Also: convergence.json in the main run's folder equals run_info.json's "convergence", every
+# The answers sorted by band after the table: python/tests/test_convergence_band.py. Also:
+# convergence.json in the main run's folder equals run_info.json's "convergence", every
 # run in a subfolder of --out, and a scene whose region box would cut the coarse level's cells
 # stops with one line naming the option.
 set -eu
