@@ -7,8 +7,9 @@ left, right (the rest is free).
 
 usage: /usr/bin/python3 bench/study/graded_mesh.py [FINE] > graded.geo
        gmsh -2 graded.geo -format msh41 -o graded.msh
-then run config/scenes/default.yaml less its mesh_box_*, region_*, regions, void_regions and
-mesh_dim lines, with -mesh_file graded.msh -regions rock,soil_low,soil_mid,soil,block.
+then run config/scenes/default.yaml less its mesh_box_*, region_*, regions, void_regions,
+material_soil_far_* and mesh_dim lines, with -mesh_file graded.msh
+-regions rock,soil_low,soil_mid,soil,block (its whole top sublayer is region soil).
 """
 import sys
 fine = float(sys.argv[1]) if len(sys.argv) > 1 else 0.25
