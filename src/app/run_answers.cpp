@@ -163,7 +163,7 @@ PetscErrorCode RunAnswers::Update(const problem::Elastodynamics &model, io::Stat
   for (size_t k = 0; k < nif; ++k) counts_[k] = {sums[5 * k + 2], sums[5 * k + 3], sums[5 * k + 4]};
   const double *s = &sums[5 * interface_];
   net_slip_       = s[1] > 0 ? s[0] / s[1] : 0.0;
-  if (structure_ >= 0 || free_field_ >= 0) times_.push_back(t);
+  times_.push_back(t);
   turning_.add(net_slip_);
   const double *v = &sums[5 * nif];
   if (structure_ >= 0) {
@@ -184,7 +184,7 @@ PetscErrorCode RunAnswers::Update(const problem::Elastodynamics &model, io::Stat
     tilt_               = model.dim == 2 ? theta[2] : std::sqrt(theta[0] * theta[0] + theta[1] * theta[1] + theta[2] * theta[2]);
   } else if (rock_span_ > 0) tilt_ = (v[1] - v[0]) / rock_span_;
   rocking_ = std::max(rocking_, std::fabs(tilt_));
-  if (body_ >= 0 || rock_span_ > 0) tilt_times_.push_back(t), tilts_.push_back(tilt_);
+  if (body_ >= 0 || rock_span_ > 0) tilts_.push_back(tilt_);
   PetscFunctionReturn(0);
 }
 
@@ -227,7 +227,7 @@ PetscErrorCode RunAnswers::Finish(const problem::Elastodynamics &model, bool res
     answers.push_back({"peak_rocking_angle", "rad", "peak rocking angle (" + by + ")", rocking_});
     // The last angle is a point of the swing while the structure still rocks: the tilt is the
     // mean over the final window, and the swing left about it is stated beside it.
-    const numerics::TailWindow end = numerics::tailWindow(tilt_times_, tilts_, kSettleWindow);
+    const numerics::TailWindow end = numerics::tailWindow(times_, tilts_, kSettleWindow);
     answers.push_back({"tilt_after_shaking", "rad", "tilt after shaking (" + by + ", 2 s mean)", end.mean});
     answers.push_back({"rocking_at_end", "rad", "still rocking at the end (half range, last 2 s)", end.half_range});
     if (end.half_range > std::fabs(end.mean)) {

@@ -77,8 +77,9 @@ private:
   numerics::TurningPoints  turning_;
   std::vector<io::Stations::Probe> probes_;
   std::vector<InterfaceCounts>     counts_;
-  std::vector<double> times_, structure_ax_, free_field_ax_; // every step, for the low-passed peaks
-  std::vector<double> tilt_times_, tilts_;                   // every step, for the tilt's final window
+  // Every step: the times, and beside them the records of the low-passed peaks and the tilt's
+  // final window.
+  std::vector<double> times_, structure_ax_, free_field_ax_, tilts_;
   double              corner_hz_ = 0;
   double net_slip_ = 0, local_uplift_ = 0, rocking_ = 0, tilt_ = 0, structure_peak_ = 0, free_field_peak_ = 0, structure_vertical_ = 0, geostatic_vertical_ = 0;
   bool   geostatic_ = false;
