@@ -14,9 +14,13 @@
 // width and their horizontal derivatives cancel, so every row of the main mesh's S, alpha Q u
 // and H p at a node is its width share times the column's row (a side node's share is half an
 // interior one's, and the noflow side loses nothing: the free field has no horizontal flow).
-// The update is then the main mesh's, operation for operation on the same numbers:
+// The update is then the main mesh's on the same numbers (to round-off: some sums run in
+// another order), with the same sub-step count:
 //   p*      = p_n after m sub-steps S (p^{k+1} - p^k) = -(h/m) H p^k,
-//             m = diffusionSubsteps(h, the main mesh's diffusion limit, its sub-cycling),
+//             m = diffusionSubsteps(h, the main mesh's diffusion limit, its sub-cycling)
+//             (the main mesh's limit, not the column's own: its Gershgorin rows also hold
+//             the horizontal entries of H, so it is smaller, and another count would split
+//             the step otherwise, an O(h) difference rather than round-off),
 //   p_{n+1} = p* - S^{-1} alpha Q (u_{n+1} - u_n) + h q/S      on free nodes (0 elsewhere),
 //   then the cavitation floor (physics/cavitation.hpp) where the main mesh has one: the total
 //   pressure p_h + p held at or above the limit, the pore volume the water does not follow a
