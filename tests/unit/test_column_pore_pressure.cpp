@@ -60,6 +60,17 @@ void sums() {
   uniform.setState(state.data());
   for (int k = 0; k < 10; ++k) uniform.step(1e3, rest.data(), 1);
   unit::check(uniform.pressure(0) == 5e4 && uniform.pressure(1) == 5e4 && uniform.pressure(2) == 5e4, "uniform p, noflow ends, skeleton at rest: unchanged (H rows sum to zero)");
+  // A prescribed inflow raises its free node's pressure by h q/S per step (k = 0, skeleton at
+  // rest); a drained node ignores it.
+  std::vector<ColumnFluidNode> inflow(4);
+  inflow[0].inflow_rate = 2e3;
+  inflow[2]             = {true, 0, 2e3};
+  ColumnPorePressure fed;
+  fed.setup(z, {{true, 0.8, 1e9, 0}, {true, 0.6, 2e9, 0}, {false, 0, 0, 0}}, inflow, ColumnFluidRules());
+  fed.start(rest.data(), 1);
+  for (int k = 0; k < 5; ++k) fed.step(0.01, rest.data(), 1);
+  unit::near(fed.pressure(0), 5 * 0.01 * 2e3, 1e-14, 0, "inflow: p rises by h q/S per step");
+  unit::check(fed.pressure(1) == 0 && fed.pressure(2) == 0, "inflow: nothing elsewhere (k = 0), and a drained node ignores its own");
 }
 
 // Two saturated segments, heights 0, 1, 3; alpha 0.8, M 1e9, kappa 1e-9; top drained. Start at
