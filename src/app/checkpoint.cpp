@@ -19,7 +19,7 @@ namespace slipwave::app {
 namespace {
 
 constexpr PetscInt kMagic   = 0x53574350; // "SWCP"
-constexpr PetscInt kVersion = 13; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
+constexpr PetscInt kVersion = 14; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
                                  // 4: state only (no RHS force parts, no attenuation trial);
                                  // 5: the scene options after the header, a seal at the end;
                                  // 6: the pore pressure state and the ledger's fluid terms;
@@ -35,6 +35,8 @@ constexpr PetscInt kVersion = 13; // 2: ledger with `anelastic`, attenuation mem
                                  // 12: the ledger's integrator_correction; at order 4 the two
                                  //    accelerations before the current one (the reported velocity)
                                  // 13: each interface pair's sigma* (the friction lag's normal traction)
+                                 // 14: a free-field column beside saturated soil appends its pore
+                                 //    pressure state (p, alpha Q u, cavities)
 constexpr PetscInt kHeader  = 10;
 
 // The ledger as a flat array, in a fixed order.

@@ -29,8 +29,59 @@ bool sameMaterial(const medium::RegionMaterialInfo &a, const medium::RegionMater
          a.hysteretic.model == b.hysteretic.model;
 }
 
+bool sameFluid(const physics::ColumnFluidSegment &a, const physics::ColumnFluidSegment &b) {
+  return a.saturated == b.saturated && (!a.saturated || (a.alpha == b.alpha && a.M == b.M && a.kappa == b.kappa));
+}
+
+// The column's pore pressure: its saturated segments' Biot numbers, and at each node the main
+// mesh's fluid condition at the side's nodes there (drained, p_h, the inflow's pressure rate),
+// so the column's top and base drain or seal as the main mesh's do.
+PetscErrorCode setColumnFluid(DM dm, const FreeFieldFluid &fluid, const std::vector<PetscInt> &segment_region, FreeFieldSide *side) {
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  PetscInt dim;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(dm, &dim));
+  for (const auto &[name, condition] : fluid.fluid_boundaries)
+    PetscCheck(name != side->name, comm, PETSC_ERR_USER_INPUT,
+               "-bc_%s_fluid %s on a free-field side (-bc_%s_type freefield): not supported (the free field has no horizontal flow); allowed: -bc_%s_fluid noflow",
+               side->name.c_str(), condition.c_str(), side->name.c_str(), side->name.c_str());
+  std::vector<physics::ColumnFluidSegment> segments;
+  for (PetscInt r : segment_region) segments.push_back(fluid.region[r]);
+  // Per column node, from any rank with a side vertex there (all hold the same values): drained,
+  // p_h, q / S; -1e300 where this rank has none (the MAX reduction takes the others').
+  const int           n = side->column.nodeCount();
+  std::vector<double> values(3 * n, -1e300);
+  Vec                 global[4] = {fluid.storage, fluid.free_mask, fluid.p_hydrostatic, fluid.inflow}, local[4];
+  const PetscScalar  *a[4];
+  for (int k = 0; k < 4; ++k) {
+    PetscCall(DMGetLocalVector(fluid.pdm, &local[k]));
+    PetscCall(DMGlobalToLocal(fluid.pdm, global[k], INSERT_VALUES, local[k]));
+    PetscCall(VecGetArrayRead(local[k], &a[k]));
+  }
+  for (const FreeFieldTerm &term : side->terms) {
+    // Node i of the pressure layout is node i of the displacement's (fem/node_fields.hpp), so
+    // a vertex's local offset there is its displacement offset over dim.
+    const PetscInt i = term.offset / dim;
+    const double   S = PetscRealPart(a[0][i]);
+    values[3 * term.node]     = S > 0 && PetscRealPart(a[1][i]) == 0 ? 1.0 : 0.0;
+    values[3 * term.node + 1] = PetscRealPart(a[2][i]);
+    values[3 * term.node + 2] = S > 0 ? PetscRealPart(a[3][i]) / S : 0.0;
+  }
+  for (int k = 0; k < 4; ++k) {
+    PetscCall(VecRestoreArrayRead(local[k], &a[k]));
+    PetscCall(DMRestoreLocalVector(fluid.pdm, &local[k]));
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, values.data(), 3 * n, MPI_DOUBLE, MPI_MAX, comm));
+  std::vector<physics::ColumnFluidNode> nodes(n);
+  for (int i = 0; i < n; ++i) nodes[i] = {values[3 * i] > 0, values[3 * i + 1], values[3 * i + 2]};
+  const std::string problem = side->column.setPorePressure(segments, nodes, fluid.rules);
+  PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "-bc_%s_type freefield beside a saturated region: %s; allowed: -element_degree 1, or absorbing or tied sides",
+             side->name.c_str(), problem.c_str());
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryConditions &bc, const std::vector<medium::RegionMaterialInfo> &materials,
-                         const physics::RayleighCoefficients &rayleigh, const medium::Attenuation *att, double tol, FreeFieldSide *side) {
+                         const physics::RayleighCoefficients &rayleigh, const medium::Attenuation *att, const FreeFieldFluid *fluid, double tol, FreeFieldSide *side) {
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   PetscInt dim;
   PetscFunctionBeginUser;
@@ -82,10 +133,11 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
   for (const BoundaryFace &f : faces) {
     int    lo = INT32_MAX, hi = -1;
     int    nodes[4];
+    double x[numerics::kMaxFaceNodes * 3];
     for (PetscInt k = 0; k < f.nvert; ++k) {
-      double z = 0;
-      PetscCall(vertexHeight(vc, f.vertices[k], &z));
-      nodes[k] = probe.findNode(z, tol);
+      PetscCall(vc.Get(f.vertices[k], &x[k * dim]));
+      const double z = x[k * dim + dim - 1];
+      nodes[k]       = probe.findNode(z, tol);
       PetscCheck(nodes[k] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "free-field side '%s': vertex at height %g has no column node", name.c_str(), z);
       lo = std::min(lo, nodes[k]);
       hi = std::max(hi, nodes[k]);
@@ -96,8 +148,20 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
                name.c_str(), name.c_str(), heights[lo], heights[hi], std::max(hi - lo - 1, 0));
     seg_min[lo] = std::min(seg_min[lo], f.region);
     seg_max[lo] = std::max(seg_max[lo], f.region);
+    // The face integral of the pore pressure against each vertex's shape function
+    // (FreeFieldColumn::poreStress): the share of the vertices at the other height in the
+    // vertex's row of the face's consistent mass.
+    const numerics::FaceShape shape = dim == 2 ? numerics::FaceShape::Seg2 : (f.nvert == 3 ? numerics::FaceShape::Tri3 : numerics::FaceShape::Quad4);
+    double                    Mf[numerics::kMaxFaceNodes * numerics::kMaxFaceNodes];
+    numerics::faceConsistentMass(shape, (int)dim, x, Mf);
     for (PetscInt k = 0; k < f.nvert; ++k) {
       FreeFieldTerm term;
+      double        row = 0, other = 0;
+      for (PetscInt c = 0; c < f.nvert; ++c) {
+        row += Mf[k * f.nvert + c];
+        if (nodes[c] != nodes[k]) other += Mf[k * f.nvert + c];
+      }
+      term.theta = other / row;
       PetscCall(PetscSectionGetOffset(s, f.vertices[k], &term.offset));
       term.node    = nodes[k];
       term.segment = lo;
@@ -118,10 +182,12 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
     PetscCheck(sameMaterial(a, b), comm, PETSC_ERR_USER_INPUT,
                "-bc_%s_type freefield: along '%s' between heights %g and %g the regions %s and %s differ; allowed: horizontally layered materials along a free-field side",
                name.c_str(), name.c_str(), heights[e], heights[e + 1], a.region.c_str(), b.region.c_str());
-    // A saturated segment's vertical chain carries the undrained P modulus: exact for the
-    // vertically incident SV wave (no volume change, no pore pressure), which is why only it
-    // drives free-field sides of saturated sites (problem/elastodynamics.cpp).
-    seg_mat[e] = medium::boundaryElastic(a);
+    PetscCheck(!fluid || sameFluid(fluid->region[seg_min[e]], fluid->region[seg_max[e]]), comm, PETSC_ERR_USER_INPUT,
+               "-bc_%s_type freefield: along '%s' between heights %g and %g the pore fluids of regions %s and %s differ; allowed: horizontally layered materials along a free-field side",
+               name.c_str(), name.c_str(), heights[e], heights[e + 1], a.region.c_str(), b.region.c_str());
+    // The skeleton's material: a saturated segment's undrained stiffening comes from the
+    // column's pore pressure (setColumnFluid), as in the main mesh's cells.
+    seg_mat[e] = a.elastic;
   }
   // Spectral elements: the column is the 1D element of the mesh's degree on the side's GLL
   // nodes (physics/free_field_column.hpp), so a height-only motion is an exact discrete
@@ -166,20 +232,21 @@ PetscErrorCode buildSide(DM dm, const std::string &name, const BoundaryCondition
   for (int e = 0; e < nseg; ++e) seg_geostatic[e] = seg_soil[e] && materials[seg_min[e]].hysteretic.mean_stress_geostatic;
   side->column.setGeostaticScales(bc.gravity, seg_geostatic, medium::kDarendeliReferenceStress, medium::kGeostaticStressFloor);
   if (bc.input_wave != InputWave::None) side->column.setInput((int)bc.input_component, bc.input_wave == InputWave::P);
+  if (fluid) PetscCall(setColumnFluid(dm, *fluid, seg_min, side));
   PetscFunctionReturn(0);
 }
 
 } // namespace
 
 PetscErrorCode FreeFieldCreate(DM dm, const BoundaryConditions &bc, const std::vector<medium::RegionMaterialInfo> &materials, const physics::RayleighCoefficients &rayleigh,
-                               const medium::Attenuation *att, double h_min, FreeField **out) {
+                               const medium::Attenuation *att, const FreeFieldFluid *fluid, double h_min, FreeField **out) {
   PetscFunctionBeginUser;
   auto *ff = new FreeField();
   PetscCall(DMGetDimension(dm, &ff->dim));
   for (size_t i = 0; i < bc.names.size(); ++i)
     if (bc.types[i] == BoundaryType::FreeField) {
       ff->sides.emplace_back();
-      PetscCall(buildSide(dm, bc.names[i], bc, materials, rayleigh, att, 1e-9 * h_min, &ff->sides.back()));
+      PetscCall(buildSide(dm, bc.names[i], bc, materials, rayleigh, att, fluid, 1e-9 * h_min, &ff->sides.back()));
     }
   PetscCall(DMCreateGlobalVector(dm, &ff->force));
   PetscCall(DMCreateLocalVector(dm, &ff->force_local));
@@ -221,6 +288,8 @@ PetscErrorCode FreeFieldUpdate(FreeField *ff, DM dm, TS ts, PetscReal t, double 
       // The face's element's stress at the term's node (GLL face rule; degree 1: the segment's).
       double sig[9];
       col.stress(term.segment, term.node, sig);
+      const double pore = col.poreStress(term.segment, term.node, term.theta); // total stress: less alpha p I
+      for (PetscInt i = 0; i < dim; ++i) sig[i * dim + i] -= pore;
       for (PetscInt i = 0; i < dim; ++i) {
         double fi = 0;
         for (PetscInt j = 0; j < dim; ++j) fi += term.C[i * dim + j] * col.velocity(term.node, (int)j) + term.weight * sig[i * dim + j] * term.normal[j];

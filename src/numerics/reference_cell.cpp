@@ -199,6 +199,37 @@ void faceLumpedWeights(FaceShape f, int dim, const double *coords, double *w) {
   }
 }
 
+void faceConsistentMass(FaceShape f, int dim, const double *coords, double *M) {
+  const int n = faceNodeCount(f);
+  if (f != FaceShape::Quad4) {
+    // Linear simplices: integral of N_a N_b = measure (1 + delta_ab) / ((n + 1) n).
+    double w[kMaxFaceNodes];
+    faceLumpedWeights(f, dim, coords, w);
+    const double measure = n * w[0];
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) M[a * n + b] = measure * (a == b ? 2.0 : 1.0) / ((n + 1) * n);
+    return;
+  }
+  // N_a N_b |x_xi x x_eta| is at most cubic per direction on a bilinear face: 2 x 2 Gauss is exact.
+  const double g = 1.0 / std::sqrt(3.0);
+  for (int k = 0; k < 16; ++k) M[k] = 0;
+  for (int q = 0; q < 4; ++q) {
+    const double s = g * kQuadCorner[q][0], t = g * kQuadCorner[q][1];
+    double       ts[3] = {0, 0, 0}, tt[3] = {0, 0, 0}, c[3], N[4];
+    for (int a = 0; a < 4; ++a) {
+      const double xa = kQuadCorner[a][0], ya = kQuadCorner[a][1];
+      N[a]            = 0.25 * (1 + xa * s) * (1 + ya * t);
+      for (int i = 0; i < 3; ++i) {
+        ts[i] += 0.25 * xa * (1 + ya * t) * coords[a * 3 + i];
+        tt[i] += 0.25 * ya * (1 + xa * s) * coords[a * 3 + i];
+      }
+    }
+    const double da = cross3Norm(ts, tt, c);
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) M[a * 4 + b] += N[a] * N[b] * da;
+  }
+}
+
 void faceNormal(FaceShape f, int dim, const double *coords, double *n) {
   double c[3] = {0, 0, 0};
   double len = 0;

@@ -1,5 +1,6 @@
 #include "slipwave/physics/biot.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -32,6 +33,8 @@ double consolidationCoefficient(double K_drained, double G, double alpha, double
 double explicitDiffusionStepOfRow(double storage, double diffusion_row_abs_sum) {
   return diffusion_row_abs_sum > 0 ? 2.0 * storage / diffusion_row_abs_sum : 1e300;
 }
+
+int diffusionSubsteps(double h, double dt_diffusion, bool subcycle) { return subcycle && h > 0 ? std::max(1, (int)std::ceil(h / (0.9 * dt_diffusion))) : 1; }
 
 std::string biotMaterialProblem(const BiotMaterial &b, double K_drained) {
   char buf[200];

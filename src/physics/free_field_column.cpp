@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "slipwave/physics/biot.hpp"
 #include "slipwave/physics/stable_time_step.hpp"
 
 namespace slipwave::physics {
@@ -142,8 +143,9 @@ std::string FreeFieldColumn::setup(int dim, const std::vector<double> &heights, 
   soil_.clear();
   soil_offset_.clear();
   for (std::vector<double> *x : {&soil_state_, &soil_stress_, &lateral_zeta_, &lateral_old_}) x->clear();
+  pore_ = ColumnPorePressure();
   base_dashpot_.assign(dim_, 0.0);
-  for (int c = 0; c < dim_; ++c) base_dashpot_[c] = mat_[0].rho * (c == dim_ - 1 ? mat_[0].vp : mat_[0].vs);
+  for (int c = 0; c < dim_; ++c) base_dashpot_[c] = baseImpedance(c);
   for (std::vector<double> *x : {&u_, &v_, &a_, &v_half_, &a_star_, &work_}) x->assign(n * dim_, 0.0);
   started_ = false;
   return "";
@@ -228,9 +230,34 @@ void FreeFieldColumn::setGeostaticScales(double gravity, const std::vector<bool>
   }
 }
 
+std::string FreeFieldColumn::setPorePressure(const std::vector<ColumnFluidSegment> &segments, const std::vector<ColumnFluidNode> &nodes, const ColumnFluidRules &rules) {
+  bool any = false;
+  for (const ColumnFluidSegment &f : segments) any = any || f.saturated;
+  if (any && p_ > 1) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "the pore pressure of a free-field column is of degree 1 only; the column has degree %d", p_);
+    return buf;
+  }
+  const std::string problem = pore_.setup(z_, segments, nodes, rules);
+  if (!problem.empty()) return problem;
+  base_dashpot_[dim_ - 1] = baseImpedance(dim_ - 1);
+  if (input_component_ >= 0) setInput(input_component_, input_p_wave_);
+  return "";
+}
+
+double FreeFieldColumn::baseImpedance(int c) const {
+  const ElasticMaterial &m = mat_[0];
+  if (c < dim_ - 1) return m.rho * m.vs;
+  if (!pore_.active() || !pore_.segment(0).saturated) return m.rho * m.vp;
+  const ColumnFluidSegment &f  = pore_.segment(0);
+  const LameParameters      lm = lame(m);
+  return m.rho * undrainedPWaveSpeed(lm.lambda + 2.0 * lm.mu / 3.0, lm.mu, f.alpha, f.M, m.rho);
+}
+
 void FreeFieldColumn::setInput(int component, bool p_wave) {
   input_component_ = component;
-  input_impedance_ = mat_.empty() ? 0.0 : mat_[0].rho * (p_wave ? mat_[0].vp : mat_[0].vs);
+  input_p_wave_    = p_wave;
+  input_impedance_ = mat_.empty() ? 0.0 : baseImpedance(p_wave ? dim_ - 1 : 0);
 }
 
 double FreeFieldColumn::scaledGradient(const std::vector<double> &x, int e, int c, int q) const {
@@ -344,6 +371,7 @@ void FreeFieldColumn::start(double t0, double v_in0) {
   for (std::vector<double> *x : {&soil_state_, &soil_stress_, &lateral_zeta_, &lateral_old_}) std::fill(x->begin(), x->end(), 0.0);
   soil_updates_ = 0;
   t_            = t0;
+  pore_.start(&u_[dim_ - 1], dim_);
   // a* = M^{-1} f_in (u = v = 0).
   std::fill(a_star_.begin(), a_star_.end(), 0.0);
   if (input_component_ >= 0) a_star_[input_component_] = 2 * input_impedance_ * v_in0 / mass_[0];
@@ -357,14 +385,16 @@ void FreeFieldColumn::step(double h, double v_in_new) {
     v_half_[k] = v_[k] + 0.5 * h * a_[k];
     u_[k] += h * v_half_[k];
   }
+  pore_.step(h, &u_[dim_ - 1], dim_);
   internalForce(u_, a_star_, true);
   if (hysteretic()) soilForce(a_star_);
   memoryForce(h, a_star_);
+  pore_.addForce(-1.0, &a_star_[dim_ - 1], dim_);
   if (beta_ > 0) {
     internalForce(v_half_, work_);
     for (int k = 0; k < n; ++k) a_star_[k] += beta_ * work_[k];
   }
-  // a_star_ holds K u - memory (+ beta K v_half); form M^{-1}(f_in - that).
+  // a_star_ holds K u - memory - alpha Q^T p (+ beta K v_half); form M^{-1}(f_in - that).
   for (int k = 0; k < n; ++k) {
     const double f_in = (k == input_component_) ? 2 * input_impedance_ * v_in_new : 0.0;
     a_star_[k] = (1.0 / mass_[k / dim_]) * (f_in - a_star_[k]);
@@ -417,6 +447,12 @@ void FreeFieldColumn::stress(int segment, int node, double *sigma) const {
   for (int c = 0; c < z; ++c) sigma[c * dim_ + c] = lm.lambda * ezz - lm.lambda / (lm.lambda + 2 * lm.mu) * memory(z);
 }
 
+double FreeFieldColumn::poreStress(int segment, int node, double theta) const {
+  if (!pore_.active()) return 0.0;
+  const int other = node == segment ? segment + 1 : segment;
+  return pore_.alpha(segment) * ((1 - theta) * pore_.pressure(node) + theta * pore_.pressure(other));
+}
+
 int FreeFieldColumn::findNode(double zq, double tol) const {
   auto it = std::lower_bound(z_.begin(), z_.end(), zq - tol);
   if (it != z_.end() && std::fabs(*it - zq) <= tol) return (int)(it - z_.begin());
@@ -431,10 +467,12 @@ double FreeFieldColumn::omegaMax() const {
       for (int c = 0; c < dim_; ++c) w2 = std::max(w2, 2 * k_[e * dim_ + c] / (mat_[e * p_].rho * elementLength(e)) * ref_lambda_);
     return std::sqrt(w2);
   }
-  // Gershgorin on M^{-1} K per chain: row i sums to 2 (k_left + k_right) / m_i.
+  // Gershgorin on M^{-1} K per chain: row i sums to 2 (k_left + k_right) / m_i; the vertical
+  // rows of saturated segments add the undrained stiffening alpha^2 Q^T S^{-1} Q as the main
+  // mesh bounds it.
   for (int i = 0; i < n; ++i)
     for (int c = 0; c < dim_; ++c) {
-      double row = 0;
+      double row = c == dim_ - 1 ? pore_.undrainedRow(i) : 0.0;
       if (i > 0) row += 2 * k_[(i - 1) * dim_ + c];
       if (i < n - 1) row += 2 * k_[i * dim_ + c];
       w2 = std::max(w2, row / mass_[i]);
@@ -462,11 +500,14 @@ std::vector<double> FreeFieldColumn::state() const {
   swapTailAges(ages, soil_updates_);
   for (const std::vector<double> *x : {&u_, &v_, &a_, &v_half_, &zeta_, &spring_old_, &soil, &soil_stress_, &lateral_zeta_, &lateral_old_})
     s.insert(s.end(), x->begin(), x->end());
+  const std::vector<double> pore = pore_.state();
+  s.insert(s.end(), pore.begin(), pore.end());
   return s;
 }
 
 bool FreeFieldColumn::setState(const std::vector<double> &s) {
-  if (s.size() != 2 + 4 * u_.size() + zeta_.size() + spring_old_.size() + soil_state_.size() + soil_stress_.size() + lateral_zeta_.size() + lateral_old_.size())
+  if (s.size() != 2 + 4 * u_.size() + zeta_.size() + spring_old_.size() + soil_state_.size() + soil_stress_.size() + lateral_zeta_.size() + lateral_old_.size() +
+                      pore_.stateSize())
     return false;
   t_       = s[0];
   started_ = s[1] != 0.0;
@@ -475,6 +516,7 @@ bool FreeFieldColumn::setState(const std::vector<double> &s) {
     std::copy(s.begin() + o, s.begin() + o + x->size(), x->begin());
     o += x->size();
   }
+  pore_.setState(s.data() + o);
   soil_updates_ = 0;
   swapTailAges(soil_state_, soil_updates_);
   return true;

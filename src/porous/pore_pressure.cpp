@@ -600,10 +600,7 @@ PetscErrorCode PorePressureTrial(PorePressure *pp, DM dm, const PetscScalar *u, 
   PetscFunctionReturn(0);
 }
 
-PetscInt PorePressureSubsteps(const PorePressure *pp, double h) {
-  // The sub-steps take the bulk's default fraction (0.9) of the diffusion limit.
-  return pp->subcycle && h > 0 ? std::max<PetscInt>(1, (PetscInt)std::ceil(h / (0.9 * pp->dt_diffusion))) : 1;
-}
+PetscInt PorePressureSubsteps(const PorePressure *pp, double h) { return physics::diffusionSubsteps(h, pp->dt_diffusion, pp->subcycle); }
 
 PetscErrorCode PorePressureDiffuseStep(PorePressure *pp, PetscReal h) { return diffuse(pp, h); }
 

@@ -30,6 +30,21 @@ input::DrmSetting drmSetting(const Elastodynamics &m) {
   return {m.comm, m.dm, m.dim, m.mesh.regions, m.materials, m.bulk, m.rayleigh, m.attenuation, m.bc.input_wave};
 }
 
+// What the free-field columns take from the pore pressure (input/free_field.hpp).
+input::FreeFieldFluid freeFieldFluid(const porous::PorePressure &pore) {
+  input::FreeFieldFluid f;
+  for (const porous::SaturatedRegion &r : pore.regions) f.region.push_back({r.saturated, r.alpha, r.M, r.kappa});
+  f.pdm           = pore.pdm;
+  f.storage       = pore.storage;
+  f.free_mask     = pore.free_mask;
+  f.p_hydrostatic = pore.p_hydrostatic;
+  f.inflow        = pore.inflow;
+  for (const std::string &b : pore.drained) f.fluid_boundaries.push_back({b, "drained"});
+  for (const std::string &b : pore.flux) f.fluid_boundaries.push_back({b, "flux"});
+  f.rules = {pore.dt_diffusion, pore.subcycle, pore.cavitation, pore.cavitation_pressure};
+  return f;
+}
+
 PetscErrorCode readDamping(Elastodynamics *m) {
   PetscReal freqs[2] = {0.5, 10.0};
   PetscInt  n        = 2;
@@ -238,7 +253,6 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(assembleDampingBlocks(m));
   PetscCall(RigidBodiesCreate(m->dm, m->bulk, m->materials, m->bc, m->mass, &m->rigid));
   PetscCall(input::LateralTieCreate(m->dm, m->bc, m->mass, &m->tie));
-  if (m->bc.has_free_field) PetscCall(input::FreeFieldCreate(m->dm, m->bc, m->materials, m->rayleigh, m->attenuation, m->bulk.minCellSize(), &m->free_field));
   PetscCall(input::DrmCreate(drmSetting(*m), &m->drm));
   PetscCall(VecDuplicate(m->mass, &m->f_internal));
   PetscCall(VecDuplicate(m->mass, &m->f_external));
@@ -260,10 +274,6 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   }
   PetscCall(createInterfaces(m));
   if (any_saturated) {
-    // The free-field columns have no pore pressure: exact for a vertically incident SV wave
-    // (pure shear, no volume change), not for a P wave, whose pore pressure drains.
-    PetscCheck(!m->free_field || m->bc.input_wave != input::InputWave::P, comm, PETSC_ERR_USER_INPUT,
-               "-bc_<side>_type freefield with a saturated region (-material_<r>_saturated) and -input_wave p: not supported (the free-field column has no pore pressure); allowed: -input_wave sv, or absorbing or tied sides");
     // Not yet: the DRM free field and its layer forces are those of a dry (one-phase) site.
     PetscCheck(!m->drm, comm, PETSC_ERR_USER_INPUT, "-input_method drm with a saturated region (-material_<r>_saturated): not supported yet; allowed: -input_method base");
     PetscCall(porous::PorePressureCreate(m->dm, m->bulk, m->mesh.boundaries, std::move(saturated), m->bc.gravity, m->bc.gravity_direction, &m->pore));
@@ -277,6 +287,12 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
         }
     PetscCall(VecDuplicate(m->mass, &m->f_pore));
     PetscCall(VecZeroEntries(m->f_pore));
+  }
+  // After the pore pressure and its interfaces: the columns take the fluid conditions at the
+  // sides' nodes.
+  if (m->bc.has_free_field) {
+    const input::FreeFieldFluid fluid = m->pore ? freeFieldFluid(*m->pore) : input::FreeFieldFluid();
+    PetscCall(input::FreeFieldCreate(m->dm, m->bc, m->materials, m->rayleigh, m->attenuation, m->pore ? &fluid : nullptr, m->bulk.minCellSize(), &m->free_field));
   }
   PetscFunctionReturn(0);
 }

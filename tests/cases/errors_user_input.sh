@@ -6,7 +6,7 @@
 # Expected messages come from the checks at their sources (src/medium/materials.cpp,
 # src/meshing/mesh_builder.cpp, src/input/boundary_conditions.cpp, src/input/time_function.cpp,
 # src/app/simulation.cpp, src/app/initial_conditions.cpp, src/core/options_check.cpp,
-# src/problem/elastodynamics.cpp); the stable limit 0.00204124 s is the Gershgorin bound the dry
+# src/problem/elastodynamics.cpp, src/input/free_field.cpp); the stable limit 0.00204124 s is the Gershgorin bound the dry
 # run of the control reports.
 # Each case runs in its own empty working directory with -output_dir inside it: afterwards
 # nothing may exist there but the output folder, the input directory must be unchanged, the

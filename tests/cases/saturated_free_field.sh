@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Free-field lateral sides on a saturated site (SV only). The free-field column has no pore
-# pressure: a vertically incident SV wave is pure shear (u = u_x(z)), with no volume change
-# and so no excess pore pressure, and its column motion is the dry one; the column's P chain
-# and the side dashpots take the undrained P speed (input/free_field.cpp).
+# Free-field lateral sides on a saturated site under SV. A vertically incident SV wave is pure
+# shear (u = u_x(z)), with no volume change and so no excess pore pressure: the column's
+# vertical chain and its pore pressure (physics/column_pore_pressure.hpp) stay exactly at
+# rest, its shear chains are the dry ones, and the side dashpots take the undrained P speed
+# (input/free_field.cpp).
 #  1. The saturated site of config/scenes/saturated_site.yaml without gravity (so no geostatic
 #     relaxation residual separates the runs), 20 m wide, under the 2 Hz SV Ricker: with
 #     free-field sides it must move as with sides tied to each other (the exact 1D column):
@@ -13,7 +14,7 @@
 #     solve with free-field sides): the geostatic state is an exact equilibrium and the
 #     problem is linear, so the motion is that of the run without gravity (v_x to 1e-10 of
 #     its peak, v_y to 1e-12 m/s, excess p to 1e-6 Pa), and the energy balance closes (1e-12).
-# (-input_wave p with free-field sides on a saturated site: tests/errors/cases.txt.)
+# (-input_wave p with free-field sides on a saturated site: saturated_free_field_p.sh.)
 set -eu
 . tests/tools/lib.sh
 grep -v -E "^(gravity|water_table|geostatic_stage):" config/scenes/saturated_site.yaml > "$WORK/site_nogravity.yaml"

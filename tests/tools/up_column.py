@@ -10,7 +10,10 @@ In the Laplace domain every solution is a sum of exp(+-lambda_i z), where mu = l
 (derived in docs/saturated-soil.md style from the two equations with u, p ~ exp(m z):
 p = alpha s m u / (kappa m^2 - s/M)). Boundary conditions: top z = 0 drained (p = 0) with a
 total traction T(s) (sigma_zz = T); base z = H impervious (p' = 0) with a prescribed
-displacement U_b(s). The four coefficients come from a 4x4 solve per s, written with
+displacement U_b(s), or (--base absorbing) slipwave's absorbing base with an incident wave:
+the Lysmer dashpot of impedance Z = rho c_u (c_u the undrained P speed, as a saturated
+region's absorbing boundary has it) and the incident wave's force 2 Z v_in, so
+sigma(H) + Z s u(H) = -2 Z V(s) (V the incident particle velocity, up positive). The four coefficients come from a 4x4 solve per s, written with
 exp(-lambda z) and exp(-lambda (H - z)), Re lambda > 0, so nothing overflows.
 Time domain: the Fourier-series (Durbin 1974) inversion
     f(t) = e^{ct}/Tp [ F(c)/2 + sum_k Re(F(c + i k pi/Tp) e^{i k pi t/Tp}) ],
@@ -31,8 +34,9 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from slipwave import RunFolder  # noqa: E402
 
 
-def laplace_column(s, z, H, E, alpha, M, kappa, rho, T, Ub):
-    """u(z, s), p(z, s) for the arrays z, at one complex s."""
+def laplace_column(s, z, H, E, alpha, M, kappa, rho, T, Ub, Z=0.0):
+    """u(z, s), p(z, s) for the arrays z, at one complex s. Z = 0: the base displacement is Ub;
+    Z > 0: the base is absorbing, sigma(H) + Z s u(H) = Ub."""
     a = E * kappa
     b = -(rho * s * s * kappa + s * (E / M + alpha * alpha))
     c = rho * s ** 3 / M
@@ -52,9 +56,14 @@ def laplace_column(s, z, H, E, alpha, M, kappa, rho, T, Ub):
         # top drained: p(0) = 0
         A[1, i] = -g[i]
         A[1, 2 + i] = g[i] * eH[i]
-        # base displacement u(H)
-        A[2, i] = eH[i]
-        A[2, 2 + i] = 1
+        if Z > 0:
+            # absorbing base: sigma(H) + Z s u(H)
+            A[2, i] = (E * (-lam[i]) - alpha * (-g[i]) + Z * s) * eH[i]
+            A[2, 2 + i] = E * lam[i] - alpha * g[i] + Z * s
+        else:
+            # base displacement u(H)
+            A[2, i] = eH[i]
+            A[2, 2 + i] = 1
         # base impervious: p'(H) = 0
         A[3, i] = g[i] * lam[i] * eH[i]
         A[3, 2 + i] = g[i] * lam[i]
@@ -69,14 +78,14 @@ def laplace_column(s, z, H, E, alpha, M, kappa, rho, T, Ub):
     return u, p
 
 
-def invert(times, z, H, E, alpha, M, kappa, rho, T_of_s, Ub_of_s, Tp, c, kmax):
+def invert(times, z, H, E, alpha, M, kappa, rho, T_of_s, Ub_of_s, Tp, c, kmax, Z=0.0):
     """u(z, t), p(z, t): arrays len(times) x len(z)."""
     times = np.asarray(times)
     u = np.zeros((len(times), len(z)))
     p = np.zeros((len(times), len(z)))
     for k in range(kmax + 1):
         s = c + 1j * k * math.pi / Tp
-        uk, pk = laplace_column(s, np.asarray(z, dtype=float), H, E, alpha, M, kappa, rho, T_of_s(s), Ub_of_s(s))
+        uk, pk = laplace_column(s, np.asarray(z, dtype=float), H, E, alpha, M, kappa, rho, T_of_s(s), Ub_of_s(s), Z)
         w = 0.5 if k == 0 else 1.0
         phase = np.exp(1j * k * math.pi * times / Tp)[:, None]
         u += w * np.real(uk[None, :] * phase)
@@ -116,8 +125,9 @@ def selfcheck(a):
 
 
 def compare(a):
-    """slipwave's column shaken at its base (velocity a Ricker, y up) against the solution:
-    relative L2 over [0, t_end] of the top displacement and of p at each station."""
+    """slipwave's column shaken at its base (velocity a Ricker, y up; --base absorbing: the
+    incident wave's velocity) against the solution: relative L2 over [0, t_end] of the top
+    displacement and of p at each station."""
     E = a.rho * a.vp ** 2
     M = a.fluid_bulk_modulus / a.porosity
     kappa = a.hydraulic_conductivity / (1000 * 9.80665)
@@ -130,8 +140,13 @@ def compare(a):
     t = data[0]["t"]
     keep = t <= a.t_end
     t = t[keep]
-    # Base displacement along +z (down) is minus the upward one: U_b = -V/s.
-    u, p = invert(t, depths, a.height, E, 1.0, M, kappa, a.rho, lambda s: 0.0, lambda s: -V(s) / s, Tp, 5 / Tp, int(2 * math.pi * 8 * a.f0 * Tp / math.pi))
+    kmax = int(2 * math.pi * 8 * a.f0 * Tp / math.pi)
+    if a.base == "absorbing":
+        Z = a.rho * math.sqrt((E + M) / a.rho)  # rho c_u, alpha = 1
+        u, p = invert(t, depths, a.height, E, 1.0, M, kappa, a.rho, lambda s: 0.0, lambda s: -2 * Z * V(s), Tp, 5 / Tp, kmax, Z)
+    else:
+        # Base displacement along +z (down) is minus the upward one: U_b = -V/s.
+        u, p = invert(t, depths, a.height, E, 1.0, M, kappa, a.rho, lambda s: 0.0, lambda s: -V(s) / s, Tp, 5 / Tp, kmax)
     for j, (name, d) in enumerate(zip(names, depths)):
         if d > 0:  # the drained top has p = 0
             got_p = data[j]["p"][keep]
@@ -166,6 +181,7 @@ def main():
     c.add_argument("--t0", type=float, required=True)
     c.add_argument("--amplitude", type=float, required=True)
     c.add_argument("--t-end", type=float, required=True)
+    c.add_argument("--base", choices=("velocity", "absorbing"), default="velocity", help="prescribed base velocity, or an absorbing base with the incident wave")
     c.add_argument("--tol", type=float, default=0.03)
     a = p.parse_args()
     return {"selfcheck": selfcheck, "compare": compare}[a.cmd](a)

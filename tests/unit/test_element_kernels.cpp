@@ -511,6 +511,22 @@ void testFaces() {
   unit::near(nrm[0], 0, 0, 1e-15, "Quad4 face normal x");
   unit::near(nrm[1], 1, 1e-15, 0, "Quad4 face normal y (right-hand rule)");
   unit::near(nrm[2], 0, 0, 1e-15, "Quad4 face normal z");
+  // Consistent face mass: rows sum to the lumped weights; Seg2 L/6 [[2, 1], [1, 2]], Tri3
+  // A/12 (1 + delta_ab); a rectangle a x b: ab/36 times 4 (self), 2 (along an edge), 1 (across).
+  double M[16];
+  faceConsistentMass(FaceShape::Quad4, 3, quad, M);
+  for (int a = 0; a < 4; ++a)
+    unit::near(M[4 * a] + M[4 * a + 1] + M[4 * a + 2] + M[4 * a + 3], want[a], 1e-14, 0, "Quad4 trapezoid consistent mass row " + std::to_string(a) + " sums to its weight");
+  faceConsistentMass(FaceShape::Seg2, 2, seg, M);
+  unit::near(M[0], 5.0 / 3, 1e-15, 0, "Seg2 consistent mass diagonal L/3");
+  unit::near(M[1], 5.0 / 6, 1e-15, 0, "Seg2 consistent mass off-diagonal L/6");
+  faceConsistentMass(FaceShape::Tri3, 3, tri, M);
+  unit::near(M[0], std::sqrt(3.0) / 2 / 6, 1e-15, 0, "Tri3 consistent mass diagonal A/6");
+  unit::near(M[1], std::sqrt(3.0) / 2 / 12, 1e-15, 0, "Tri3 consistent mass off-diagonal A/12");
+  const double rect[] = {0, 0, 0, 0, 2, 0, 0, 2, 3, 0, 0, 3};
+  faceConsistentMass(FaceShape::Quad4, 3, rect, M);
+  const double rect_want[4] = {4.0 / 6, 2.0 / 6, 1.0 / 6, 2.0 / 6};
+  for (int b = 0; b < 4; ++b) unit::near(M[b], rect_want[b], 1e-14, 0, "2 x 3 rectangle consistent mass entry 0," + std::to_string(b));
 }
 
 } // namespace

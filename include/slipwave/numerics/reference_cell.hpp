@@ -48,6 +48,9 @@ bool referenceCoordinates(CellShape s, const double *coords, const double *x, do
 // coords: faceNodeCount(f) x dim; dim must be 2 for Seg2 and 3 for Tri3 / Quad4.
 // w[a] = integral of N_a over the face (their sum is the face length / area).
 void faceLumpedWeights(FaceShape f, int dim, const double *coords, double *w);
+// M[a * n + b] = integral of N_a N_b over the face (n = faceNodeCount(f); exact, the Quad4 by
+// 2 x 2 Gauss points): the face integral of a nodal field interpolated on the face.
+void faceConsistentMass(FaceShape f, int dim, const double *coords, double *M);
 
 // Unit normal. Seg2 from p0 to p1: (dy, -dx)/L, the right-hand side of the direction of
 // travel. Tri3 / Quad4: right-hand rule of the node order (Quad4: the normal of the area

@@ -42,6 +42,11 @@ double consolidationCoefficient(double K_drained, double G, double alpha, double
 // eigenvalues are real and >= 0) for h <= 2 s / sum_j |H_ij|. Returns that bound, 1e300
 // when the row has no diffusion.
 double explicitDiffusionStepOfRow(double storage, double diffusion_row_abs_sum);
+// Forward-Euler diffusion sub-steps in a step of size h: enough that each takes at most the
+// bulk's default fraction (0.9) of the limit dt_diffusion; 1 without sub-cycling (the step is
+// then within the limit) or for h = 0. The main mesh and the free-field columns share it, so
+// they split a step alike.
+int diffusionSubsteps(double h, double dt_diffusion, bool subcycle);
 
 // "" when valid, else one sentence naming the quantity, its value and what is allowed.
 std::string biotMaterialProblem(const BiotMaterial &b, double K_drained);

@@ -55,11 +55,22 @@
 // the Iwan tangent modulus is at most Gmax. With constant-Q the memory is driven by the Iwan
 // stress at each point (as the main mesh drives its memory by the force of the soil's stress),
 // one more set of memory variables for the lateral stress.
+//
+// Saturated segments (setPorePressure, degree 1): the segments' materials are the drained
+// skeleton's, and the vertical chain carries the excess pore pressure of the main mesh's u-p
+// split restricted to the column (physics/column_pore_pressure.hpp): each step computes
+// p_{n+1} from u_{n+1} and adds the force alpha Q^T p_{n+1} to the vertical chain, so the
+// column's P wave is the main mesh's, draining or undrained, to round-off. The base's vertical
+// dashpot and P input take the undrained impedance of a saturated base segment, as the main
+// mesh's absorbing base does. stress() stays the effective (skeleton's) stress; the total
+// horizontal stress on a side is it less alpha p (poreStress), which varies along a segment.
+// An SV wave leaves the vertical chain, and so p, exactly at rest.
 #pragma once
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "slipwave/physics/column_pore_pressure.hpp"
 #include "slipwave/physics/constant_q.hpp"
 #include "slipwave/physics/elastic_material.hpp"
 #include "slipwave/physics/hysteretic_soil.hpp"
@@ -105,6 +116,12 @@ public:
   // at least floor. Its points run the model at the strain divided by the scale and return
   // the stress times it, as the main mesh's (medium/hysteresis.hpp). Call after setHysteresis.
   void setGeostaticScales(double gravity, const std::vector<bool> &geostatic, double reference_stress, double floor);
+  // The pore pressure of saturated segments (physics/column_pore_pressure.hpp): per segment
+  // its Biot numbers (the segment's material must be the drained skeleton), per node the main
+  // mesh's fluid conditions at the side. Degree 1 only. Call after setup and before start.
+  std::string setPorePressure(const std::vector<ColumnFluidSegment> &segments, const std::vector<ColumnFluidNode> &nodes, const ColumnFluidRules &rules);
+  bool        saturated() const { return pore_.active(); }
+  const ColumnPorePressure &pore() const { return pore_; }
 
   // State at rest at time t0; a_0 from the input velocity v_in(t0).
   void start(double t0, double v_in0);
@@ -125,6 +142,14 @@ public:
   // element (degree 1: constant over the segment): elastic at u_{n+1}, plus beta times the
   // viscous stress of v_{n+1/2}, less the memory.
   void stress(int segment, int node, double *sigma) const;
+  // alpha p of segment e on the face shape function of its node `node` (0 in dry segments):
+  // alpha [(1 - theta) p_node + theta p_other], theta = integral of N_a zeta / integral of N_a over
+  // the face (zeta: 0 at the node's height, 1 at the segment's other one), i.e. the face
+  // integral of alpha p N_a over the lumped weight. The main mesh's cells integrate their
+  // alpha p div(dv) exactly, which on a side's node is this face integral of the pressure
+  // (linear along the face), not its nodal value: so the total stress a side receives is
+  // stress() less this on the diagonal.
+  double poreStress(int segment, int node, double theta) const;
   // Node whose height is within tol of z, or -1.
   int findNode(double z, double tol) const;
   // A bound on the column's highest angular frequency and its stable step (with the
@@ -135,7 +160,8 @@ public:
   double stableStep() const;
 
   // Full state for checkpoints: t, u, v, a, v_half, memory variables and last spring forces,
-  // then (hysteretic columns only) the Iwan states, their last stresses and the lateral memory.
+  // then (hysteretic columns only) the Iwan states, their last stresses and the lateral memory,
+  // then (saturated columns only) the pore pressure's state.
   std::vector<double> state() const;
   bool                setState(const std::vector<double> &s);
 
@@ -147,6 +173,9 @@ private:
   void soilForce(std::vector<double> &f);
   void swapTailAges(std::vector<double> &states, double now) const;
   void nodalDamping(double s, double v_in);                                        // from a_star_ and v_
+  // rho c of the base segment for component c: vs horizontal, vp vertical (the undrained vp
+  // of a saturated segment).
+  double baseImpedance(int c) const;
 
   int                          dim_ = 2;
   std::vector<double>          z_, mass_;
@@ -158,6 +187,7 @@ private:
   std::vector<double>          k_; // per element and component: modulus / L
   double                       alpha_ = 0, beta_ = 0;
   int                          input_component_ = -1;
+  bool                         input_p_wave_    = false;
   double                       input_impedance_ = 0; // rho c of the base segment for the input
   std::vector<double>          base_dashpot_;        // per component
   std::vector<double>          u_, v_, a_, v_half_, a_star_, work_;
@@ -182,6 +212,7 @@ private:
   // 2 sum_b D_qb x_b at point q of element e, component c: the derivative times the length.
   double scaledGradient(const std::vector<double> &x, int e, int c, int q) const;
   void                         memoryForce(double h, std::vector<double> &f); // updates zeta_, adds its force
+  ColumnPorePressure           pore_; // inactive on a dry column
   double                       t_ = 0;
   bool                         started_ = false;
 };
