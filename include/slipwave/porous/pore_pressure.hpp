@@ -4,7 +4,10 @@
 // porous/pore_pressure_bc.cpp: the fluid boundary conditions. The pressure is a nodal scalar on its own node layout (a clone
 // of the mesh DM with one dof per vertex, node i of it is node i of the displacement), so the
 // displacement layout, the "cd" TS and every dry-scene pass stay as they are; a dry scene
-// never creates this object.
+// never creates this object. At element degree p > 1 the nodes are the elements' GLL nodes
+// (the mesh's vertices there), the element operators those of fem/spectral_biot.hpp applied
+// from each geometry's GLL factors, and the sub-steps and the wave step's coupling factor
+// those of physics/split_diffusion_step.hpp (docs/saturated-soil.md, "At element degree p > 1").
 //
 // One step, with S the lumped storage (integral of N_a / M), Q the coupling
 // (integral of N_a div), H the Darcy matrix (integral of kappa grad N_a . grad N_b), split:
