@@ -272,7 +272,7 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
     for (const std::string &line : medium::HysteresisReport(model.materials)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   PetscCall(reportInterfaces(model, verbose));
   if (model.pore)
-    for (const std::string &line : porous::PorePressureReport(model.pore, model.materials, limit.dt_drained, limit.dt_bulk, limit.dt_limit, dt))
+    for (const std::string &line : porous::PorePressureReport(model.pore, model.materials, limit.dt_drained, limit.dt_bulk, limit.coupling_factor, limit.dt_limit, dt))
       if (verbose || isHeadline(line)) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   if (verbose)
     for (const std::string &line : stations.ambiguities()) PetscCall(PetscPrintf(comm, "  %s\n", line.c_str()));

@@ -255,8 +255,9 @@ PetscErrorCode BulkOperator::setupSpectral(DM dm, const mesh::SpectralLayout &la
   }
   PetscCall(vc.Close());
   PetscCall(spectral_.Setup(dim_, degree_, layout.nelem, coords.data(), offsets.data(), layout.element_region.data(), materials));
-  cell_element_  = layout.cell_element;
-  cell_position_ = layout.cell_position;
+  cell_element_     = layout.cell_element;
+  cell_position_    = layout.cell_position;
+  element_vertices_ = layout.element_nodes;
   // The certified bound costs a dense Cholesky per distinct geometry: cheap on box meshes
   // (one per region) and in 2D; unstructured 3D meshes take the Collatz-Wielandt bound
   // (also rigorous, ~1.2-1.3x looser, ~7x cheaper: docs/spectral-kernels.md).
@@ -265,8 +266,8 @@ PetscErrorCode BulkOperator::setupSpectral(DM dm, const mesh::SpectralLayout &la
   MPI_Comm comm       = PetscObjectComm((PetscObject)dm);
   PetscInt geometries = spectral_.distinctGeometries();
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &geometries, 1, MPIU_INT, MPI_SUM, comm));
-  const bool certified = dim_ == 2 || geometries <= 256;
-  omega2_bound_        = spectral_.maxElementEigenBound(certified ? EigenBoundKind::Certified : EigenBoundKind::CollatzWielandt);
+  bound_kind_   = dim_ == 2 || geometries <= 256 ? EigenBoundKind::Certified : EigenBoundKind::CollatzWielandt;
+  omega2_bound_ = spectral_.maxElementEigenBound(bound_kind_);
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &omega2_bound_, 1, MPI_DOUBLE, MPI_MAX, comm));
   // Another rank sees a cell in another orientation, which moves its bound by round-off:
   // rounded up to 24 bits (6e-8, still an upper bound), every partition steps with the same dt.

@@ -62,7 +62,7 @@ PetscErrorCode PorePressureReadMaterials(MPI_Comm comm, std::vector<medium::Regi
 }
 
 std::vector<std::string> PorePressureReport(const PorePressure *pp, const std::vector<medium::RegionMaterialInfo> &materials, double dt_drained, double dt_undrained,
-                                            double dt_limit, double dt) {
+                                            double coupling_factor, double dt_limit, double dt) {
   std::vector<std::string> lines;
   char                     buf[512];
   for (size_t i = 0; i < materials.size(); ++i) {
@@ -84,11 +84,21 @@ std::vector<std::string> PorePressureReport(const PorePressure *pp, const std::v
   };
   std::snprintf(buf, sizeof buf, "  pore fluid boundaries: drained %s; prescribed inflow %s; all others no flow", names(pp->drained).c_str(), names(pp->flux).c_str());
   lines.push_back(buf);
-  const bool governs = !pp->subcycle && pp->dt_diffusion < dt_undrained;
+  // Without sub-cycling at degree p > 1 the diffusion also governs where it pulls the wave's
+  // bound down (a coupling factor above 2: the diffusion step overshoots, g < 0).
+  const bool governs = !pp->subcycle && (pp->dt_diffusion < dt_undrained || coupling_factor > 2);
   std::snprintf(buf, sizeof buf,
                 "  pore pressure step cost: drained wave %.4e s, undrained wave %.4e s (%.2fx the drained), diffusion %.4e s; the %s governs (limit %.4e s, %.2fx the drained)",
                 dt_drained, dt_undrained, dt_drained / dt_undrained, pp->dt_diffusion, governs ? "diffusion" : "undrained wave", dt_limit, dt_drained / dt_limit);
   lines.push_back(buf);
+  if (pp->degree > 1) {
+    const double c = PorePressureCouplingFactor(pp, dt);
+    std::snprintf(buf, sizeof buf,
+                  "  pore pressure at degree %" PetscInt_FMT ": the split step counts the undrained stiffening %.3gx in the wave step at its step %.4e s (K + c alpha^2 Q^T S^-1 Q, "
+                  "c = 2/(1 + g), g = %.3g the diffusion's smallest amplification per step; docs/saturated-soil.md)",
+                  pp->degree, c, dt, 2 / c - 1);
+    lines.push_back(buf);
+  }
   const PetscInt substeps = PorePressureSubsteps(pp, dt);
   if (substeps > 1) {
     std::snprintf(buf, sizeof buf, "  pore-pressure diffusion sub-cycled: %" PetscInt_FMT " sub-steps per step (-pore_pressure_subcycle)", substeps);

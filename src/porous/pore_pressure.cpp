@@ -9,7 +9,11 @@
 #include <utility>
 
 #include "slipwave/fem/node_fields.hpp"
+#include "slipwave/fem/spectral_biot.hpp"
+#include "slipwave/fem/spectral_kernels.hpp"
+#include "slipwave/numerics/gll_basis.hpp"
 #include "slipwave/physics/cavitation.hpp"
+#include "slipwave/physics/split_diffusion_step.hpp"
 
 namespace slipwave::porous {
 namespace {
@@ -151,7 +155,49 @@ void addDiffusion(size_t ncell, const PetscInt *matrix, const PetscInt *cell_p, 
   }
 }
 
+// Degree p > 1: the same products element by element through the sum-factorised kernels of
+// fem/spectral_biot.hpp, from each element's GLL factors (pp.degree > 1).
+struct SpectralFactors {
+  const double *D, *coupling, *diffusion, *jinv;
+  size_t        stride_w, stride_j; // per distinct matrix: weights, J^{-1} entries
+  SpectralFactors(const PorePressure &pp)
+      : D(pp.gll_derivative.data()), coupling(pp.coupling_weight.data()), diffusion(pp.diffusion_weight.data()), jinv(pp.inverse_jacobian.data()),
+        stride_w((size_t)pp.nen), stride_j((size_t)pp.nen * pp.dim * pp.dim) {}
+};
+
+void spectralCouplingTimesU(const PorePressure &pp, const PetscScalar *u, PetscScalar *q) {
+  const SpectralFactors f(pp);
+  const PetscInt        nq = pp.nen, dim = pp.dim;
+  double                ue[fem::kMaxSpectralDofs], out[fem::kMaxSpectralNodes];
+  for (size_t i = 0; i < pp.cells.size(); ++i) {
+    const size_t m = (size_t)pp.cell_matrix[i];
+    for (PetscInt a = 0; a < nq; ++a)
+      for (PetscInt j = 0; j < dim; ++j) ue[a * dim + j] = PetscRealPart(u[pp.cell_u[i * nq + a] + j]);
+    fem::spectralDivergence((int)dim, (int)pp.degree, f.D, f.coupling + m * f.stride_w, f.jinv + m * f.stride_j, ue, out);
+    for (PetscInt a = 0; a < nq; ++a) q[pp.cell_p[i * nq + a]] += out[a];
+  }
+}
+
+// f += alpha Q^T p and (with h) h += kappa H p.
+void spectralCouplingTransposeAndDiffusion(const PorePressure &pp, const PetscScalar *p, PetscScalar *f, PetscScalar *h) {
+  const SpectralFactors s(pp);
+  const PetscInt        nq = pp.nen, dim = pp.dim;
+  double                pe[fem::kMaxSpectralNodes], fe[fem::kMaxSpectralDofs], he[fem::kMaxSpectralNodes];
+  for (size_t i = 0; i < pp.cells.size(); ++i) {
+    const size_t m = (size_t)pp.cell_matrix[i];
+    for (PetscInt a = 0; a < nq; ++a) pe[a] = PetscRealPart(p[pp.cell_p[i * nq + a]]);
+    if (f) {
+      fem::spectralDivergenceTranspose((int)dim, (int)pp.degree, s.D, s.coupling + m * s.stride_w, s.jinv + m * s.stride_j, pe, fe);
+      for (PetscInt b = 0; b < nq; ++b)
+        for (PetscInt j = 0; j < dim; ++j) f[pp.cell_u[i * nq + b] + j] += fe[b * dim + j];
+    }
+    fem::spectralDiffusion((int)dim, (int)pp.degree, s.D, s.diffusion + m * s.stride_w, s.jinv + m * s.stride_j, pe, he);
+    for (PetscInt a = 0; a < nq; ++a) h[pp.cell_p[i * nq + a]] += he[a];
+  }
+}
+
 void couplingTimesU(const PorePressure &pp, const PetscScalar *u, PetscScalar *q) {
+  if (pp.degree > 1) return spectralCouplingTimesU(pp, u, q);
   const size_t n = pp.cells.size();
   const PetscInt *m = pp.cell_matrix.data(), *cu = pp.cell_u.data(), *cp = pp.cell_p.data();
   switch (pp.nen * pp.dim) {
@@ -164,6 +210,7 @@ void couplingTimesU(const PorePressure &pp, const PetscScalar *u, PetscScalar *q
 }
 
 void couplingTransposeAndDiffusion(const PorePressure &pp, const PetscScalar *p, PetscScalar *f, PetscScalar *h) {
+  if (pp.degree > 1) return spectralCouplingTransposeAndDiffusion(pp, p, f, h);
   const size_t n = pp.cells.size();
   const PetscInt *m = pp.cell_matrix.data(), *cu = pp.cell_u.data(), *cp = pp.cell_p.data();
   const double   *Q = pp.coupling.data(), *H = pp.diffusion.data();
@@ -177,6 +224,7 @@ void couplingTransposeAndDiffusion(const PorePressure &pp, const PetscScalar *p,
 }
 
 void diffusionTimes(const PorePressure &pp, const PetscScalar *p, PetscScalar *h) {
+  if (pp.degree > 1) return spectralCouplingTransposeAndDiffusion(pp, p, nullptr, h);
   const size_t n = pp.cells.size();
   const PetscInt *m = pp.cell_matrix.data(), *cp = pp.cell_p.data();
   switch (pp.nen) {
@@ -233,42 +281,82 @@ PetscErrorCode diffuse(PorePressure *pp, double h) {
   PetscFunctionReturn(0);
 }
 
-// Element matrices per distinct bulk matrix, the cell lists and their node offsets.
+// Element matrices (or, at degree p > 1, their GLL factors) per distinct bulk element matrix,
+// the element lists and their node offsets.
 PetscErrorCode buildCells(DM pdm, const fem::BulkOperator &bulk, PorePressure *pp) {
   PetscSection section;
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(pdm, &section));
-  pp->nen = bulk.nodesPerCell();
-  pp->dim = bulk.dimension();
-  const PetscInt          nen = pp->nen, nd = nen * pp->dim;
+  pp->degree     = bulk.degree();
+  pp->bound_kind = bulk.eigenBoundKind();
+  pp->nen        = bulk.nodesPerElement();
+  pp->dim        = bulk.dimension();
+  const PetscInt nen = pp->nen, dim = pp->dim, nd = nen * dim, p = pp->degree;
+  if (p > 1) {
+    double x[numerics::kMaxSpectralDegree + 1], w[numerics::kMaxSpectralDegree + 1];
+    pp->gll_derivative.resize((size_t)(p + 1) * (p + 1));
+    numerics::gllPointsWeights((int)p, x, w);
+    numerics::lagrangeDerivativeMatrix((int)p, x, pp->gll_derivative.data());
+  }
   std::map<PetscInt, PetscInt> index; // bulk matrix -> ours
-  for (PetscInt c = 0; c < bulk.cellCount(); ++c) {
-    const SaturatedRegion &r = pp->regions[bulk.cellRegion(c)];
+  for (PetscInt e = 0; e < bulk.elementCount(); ++e) {
+    const SaturatedRegion &r = pp->regions[bulk.elementRegion(e)];
     if (!r.saturated) continue;
-    auto found = index.find(bulk.cellMatrix(c));
+    auto found = index.find(bulk.elementMatrix(e));
     if (found == index.end()) {
       const PetscInt k = (PetscInt)index.size();
-      found            = index.emplace(bulk.cellMatrix(c), k).first;
-      pp->coupling.resize((size_t)(k + 1) * nen * nd);
-      pp->diffusion.resize((size_t)(k + 1) * nen * nen);
+      found            = index.emplace(bulk.elementMatrix(e), k).first;
       pp->storage_element.resize((size_t)(k + 1) * nen);
-      double *Q = &pp->coupling[(size_t)k * nen * nd], *H = &pp->diffusion[(size_t)k * nen * nen];
-      fem::elementCoupling(bulk.shape(), bulk.cellCoordinates(c), Q);
-      fem::elementDiffusion(bulk.shape(), bulk.cellCoordinates(c), H);
-      fem::elementLumpedMass(bulk.shape(), bulk.cellCoordinates(c), 1.0 / r.M, &pp->storage_element[(size_t)k * nen]);
-      for (PetscInt i = 0; i < nen * nd; ++i) Q[i] *= r.alpha;
-      for (PetscInt i = 0; i < nen * nen; ++i) H[i] *= r.kappa;
+      pp->matrix_region.push_back(bulk.elementRegion(e));
+      double *S = &pp->storage_element[(size_t)k * nen];
+      if (p == 1) {
+        pp->coupling.resize((size_t)(k + 1) * nen * nd);
+        pp->diffusion.resize((size_t)(k + 1) * nen * nen);
+        double *Q = &pp->coupling[(size_t)k * nen * nd], *H = &pp->diffusion[(size_t)k * nen * nen];
+        fem::elementCoupling(bulk.shape(), bulk.elementCoordinates(e), Q);
+        fem::elementDiffusion(bulk.shape(), bulk.elementCoordinates(e), H);
+        fem::elementLumpedMass(bulk.shape(), bulk.elementCoordinates(e), 1.0 / r.M, S);
+        for (PetscInt i = 0; i < nen * nd; ++i) Q[i] *= r.alpha;
+        for (PetscInt i = 0; i < nen * nen; ++i) H[i] *= r.kappa;
+      } else {
+        // GLL collocation: the storage is w|J| / M, diagonal without lumping.
+        std::vector<double> wdet(nen);
+        pp->inverse_jacobian.resize((size_t)(k + 1) * nen * dim * dim);
+        // The bulk operator accepted every element (SpectralOperator::Setup), so this succeeds.
+        PetscCheck(fem::spectralGeometry((int)dim, (int)p, bulk.elementCoordinates(e), wdet.data(), &pp->inverse_jacobian[(size_t)k * nen * dim * dim]), PETSC_COMM_SELF,
+                   PETSC_ERR_PLIB, "element %" PetscInt_FMT ": singular map", e);
+        for (PetscInt a = 0; a < nen; ++a) {
+          pp->coupling_weight.push_back(r.alpha * wdet[a]);
+          pp->diffusion_weight.push_back(r.kappa * wdet[a]);
+          S[a] = wdet[a] / r.M;
+        }
+      }
     }
-    pp->cells.push_back(c);
+    pp->cells.push_back(e);
     pp->cell_matrix.push_back(found->second);
     for (PetscInt a = 0; a < nen; ++a) {
       PetscInt off;
-      PetscCall(PetscSectionGetOffset(section, bulk.cellVertex(c, a), &off));
+      PetscCall(PetscSectionGetOffset(section, bulk.elementVertex(e, a), &off));
       pp->cell_p.push_back(off);
-      pp->cell_u.push_back(bulk.cellNodeOffset(c, a));
+      pp->cell_u.push_back(bulk.elementNodeOffset(e, a));
     }
   }
   PetscFunctionReturn(0);
+}
+
+// The Darcy matrix kappa H of distinct matrix m, dense: degree 1 the stored one; degree p > 1
+// built into *buffer from the GLL factors (kept while m repeats, as along a region's elements;
+// *buffered: the matrix in the buffer, -1 for none).
+const double *denseDiffusion(const PorePressure &pp, PetscInt m, std::vector<double> *buffer, PetscInt *buffered) {
+  const size_t nen = (size_t)pp.nen;
+  if (pp.degree == 1) return &pp.diffusion[(size_t)m * nen * nen];
+  if (*buffered != m) {
+    buffer->resize(nen * nen);
+    fem::spectralDiffusionMatrix((int)pp.dim, (int)pp.degree, &pp.diffusion_weight[(size_t)m * nen], &pp.inverse_jacobian[(size_t)m * nen * pp.dim * pp.dim],
+                                 buffer->data());
+    *buffered = m;
+  }
+  return buffer->data();
 }
 
 // Lumped storage, the free mask, the inflow, and the explicit diffusion limit over free nodes.
@@ -292,11 +380,13 @@ PetscErrorCode assembleNodal(DM dm, const std::vector<std::string> &boundaries, 
   PetscCall(VecZeroEntries(pp->q_local));
   PetscCall(VecZeroEntries(pp->p_local));
   {
-    PetscScalar *h;
+    PetscScalar        *h;
+    std::vector<double> buffer;
+    PetscInt            buffered = -1;
     PetscCall(VecGetArray(pp->q_local, &a));
     PetscCall(VecGetArray(pp->p_local, &h));
     for (size_t i = 0; i < pp->cells.size(); ++i) {
-      const double *S = &pp->storage_element[(size_t)pp->cell_matrix[i] * nen], *H = &pp->diffusion[(size_t)pp->cell_matrix[i] * nen * nen];
+      const double *S = &pp->storage_element[(size_t)pp->cell_matrix[i] * nen], *H = denseDiffusion(*pp, pp->cell_matrix[i], &buffer, &buffered);
       for (PetscInt r = 0; r < nen; ++r) {
         a[pp->cell_p[i * nen + r]] += S[r];
         for (PetscInt c = 0; c < nen; ++c) h[pp->cell_p[i * nen + r]] += std::fabs(H[r * nen + c]);
@@ -395,7 +485,7 @@ PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const st
     PetscCall(VecGetArray(pp->p_local, &vl));
     for (size_t i = 0; i < pp->cells.size(); ++i)
       for (PetscInt a = 0; a < pp->nen; ++a)
-        vl[pp->cell_p[i * pp->nen + a]] += pp->storage_element[(size_t)pp->cell_matrix[i] * pp->nen + a] * pp->regions[bulk.cellRegion(pp->cells[i])].M;
+        vl[pp->cell_p[i * pp->nen + a]] += pp->storage_element[(size_t)pp->cell_matrix[i] * pp->nen + a] * pp->regions[bulk.elementRegion(pp->cells[i])].M;
     PetscCall(VecRestoreArray(pp->p_local, &vl));
     PetscCall(VecDuplicate(pp->p, &pp->node_volume));
     PetscCall(VecDuplicate(pp->p, &pp->cavity_fraction));
@@ -406,7 +496,7 @@ PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const st
       PetscCall(VecZeroEntries(pp->p_local));
       PetscCall(VecGetArray(pp->p_local, &xl));
       for (size_t i = 0; i < pp->cells.size(); ++i) {
-        const double *x = bulk.cellCoordinates(pp->cells[i]);
+        const double *x = bulk.elementCoordinates(pp->cells[i]);
         for (PetscInt a = 0; a < pp->nen; ++a) xl[pp->cell_p[i * pp->nen + a]] = x[a * pp->dim + d];
       }
       PetscCall(VecRestoreArray(pp->p_local, &xl));
@@ -428,7 +518,7 @@ PetscErrorCode PorePressureCreate(DM dm, const fem::BulkOperator &bulk, const st
     PetscCall(VecGetArray(pp->p_local, &ph));
     PetscCall(VecGetArray(pp->q_local, &above));
     for (size_t i = 0; i < pp->cells.size(); ++i) {
-      const double *x = bulk.cellCoordinates(pp->cells[i]);
+      const double *x = bulk.elementCoordinates(pp->cells[i]);
       for (PetscInt a = 0; a < pp->nen; ++a) {
         double z = 0;
         for (PetscInt d = 0; d < pp->dim; ++d) z -= x[a * pp->dim + d] * gravity_direction[d];
@@ -600,7 +690,16 @@ PetscErrorCode PorePressureTrial(PorePressure *pp, DM dm, const PetscScalar *u, 
   PetscFunctionReturn(0);
 }
 
-PetscInt PorePressureSubsteps(const PorePressure *pp, double h) { return physics::diffusionSubsteps(h, pp->dt_diffusion, pp->subcycle); }
+PetscInt PorePressureSubsteps(const PorePressure *pp, double h) {
+  // Degree p > 1: sub-steps that keep the diffusion's amplification non-negative, which the
+  // stable step's coupling factor assumes (PorePressureCouplingFactor).
+  if (pp->degree > 1) return h > 0 ? physics::splitDiffusionSubsteps(h, pp->dt_diffusion, pp->subcycle) : 1;
+  return physics::diffusionSubsteps(h, pp->dt_diffusion, pp->subcycle);
+}
+
+double PorePressureCouplingFactor(const PorePressure *pp, double h) {
+  return pp->degree > 1 ? physics::splitCouplingFactor(h, pp->dt_diffusion, pp->subcycle) : 1.0;
+}
 
 PetscErrorCode PorePressureDiffuseStep(PorePressure *pp, PetscReal h) { return diffuse(pp, h); }
 
@@ -649,12 +748,60 @@ PetscErrorCode PorePressureCommit(PorePressure *pp) {
   PetscFunctionReturn(0);
 }
 
+namespace {
+// rows += the local per-dof rows in f_local (displacement layout), summed over the ranks.
+PetscErrorCode addLocalRows(DM dm, Vec f_local, Vec rows) {
+  Vec extra;
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(rows, &extra));
+  PetscCall(VecZeroEntries(extra));
+  PetscCall(DMLocalToGlobal(dm, f_local, ADD_VALUES, extra));
+  PetscCall(VecAXPY(rows, 1.0, extra));
+  PetscCall(VecDestroy(&extra));
+  PetscFunctionReturn(0);
+}
+
+// Degree p > 1 (PorePressureAddUndrainedRows): lambda_m alpha w|J| on each dof of each node of
+// each element, lambda_m the bound of distinct matrix m's stiffening over diag(alpha w|J|):
+// that of the elastic element with lambda = alpha M on the weights alpha w|J| (lambda alpha w|J|
+// = alpha^2 M w|J|), mu = 0 and unit density.
+PetscErrorCode addSpectralUndrainedRows(PorePressure *pp, DM dm, Vec rows) {
+  const PetscInt      nen = pp->nen, dim = pp->dim;
+  std::vector<double> bound(pp->matrix_region.size(), -1.0);
+  Vec                 f_local;
+  PetscScalar        *f;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(dm, &f_local));
+  PetscCall(VecZeroEntries(f_local));
+  PetscCall(VecGetArray(f_local, &f));
+  for (size_t i = 0; i < pp->cells.size(); ++i) {
+    const PetscInt m = pp->cell_matrix[i];
+    const double  *w = &pp->coupling_weight[(size_t)m * nen];
+    if (bound[m] < 0) {
+      const SaturatedRegion &r = pp->regions[pp->matrix_region[m]];
+      bound[m] = fem::spectralElementEigenBound((int)dim, (int)pp->degree, w, &pp->inverse_jacobian[(size_t)m * nen * dim * dim], fem::LameParameters{r.alpha * r.M, 0.0},
+                                                1.0, pp->bound_kind);
+    }
+    for (PetscInt a = 0; a < nen; ++a)
+      for (PetscInt j = 0; j < dim; ++j) f[pp->cell_u[i * nen + a] + j] += bound[m] * w[a];
+  }
+  PetscCall(VecRestoreArray(f_local, &f));
+  PetscCall(addLocalRows(dm, f_local, rows));
+  PetscCall(DMRestoreLocalVector(dm, &f_local));
+  PetscFunctionReturn(0);
+}
+} // namespace
+
 PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pp, DM dm, Vec rows) {
   const PetscInt nen = pp->nen, dim = pp->dim, nd = nen * dim;
-  Vec            w, f_local, extra;
+  Vec            w, f_local;
   PetscScalar   *q, *f;
   const PetscScalar *wl;
   PetscFunctionBeginUser;
+  if (pp->degree > 1) {
+    PetscCall(addSpectralUndrainedRows(pp, dm, rows));
+    PetscFunctionReturn(0);
+  }
   // w_a = sum_k |alpha Q_ak| / S_a on free pressure nodes.
   PetscCall(VecDuplicate(pp->storage, &w));
   PetscCall(VecZeroEntries(pp->q_local));
@@ -681,12 +828,8 @@ PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pp, DM dm, Vec rows) {
   }
   PetscCall(VecRestoreArrayRead(pp->q_local, &wl));
   PetscCall(VecRestoreArray(f_local, &f));
-  PetscCall(VecDuplicate(rows, &extra));
-  PetscCall(VecZeroEntries(extra));
-  PetscCall(DMLocalToGlobal(dm, f_local, ADD_VALUES, extra));
+  PetscCall(addLocalRows(dm, f_local, rows));
   PetscCall(DMRestoreLocalVector(dm, &f_local));
-  PetscCall(VecAXPY(rows, 1.0, extra));
-  PetscCall(VecDestroy(&extra));
   PetscCall(VecDestroy(&w));
   PetscFunctionReturn(0);
 }

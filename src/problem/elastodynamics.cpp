@@ -176,10 +176,6 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   std::vector<porous::SaturatedRegion> saturated;
   bool                         any_saturated = false;
   PetscCall(porous::PorePressureReadMaterials(comm, &m->materials, &saturated, &any_saturated));
-  // The pore pressure couples through each cell's Q1 matrices (porous/pore_pressure.cpp), which
-  // spectral elements do not have.
-  PetscCheck(!any_saturated || m->mesh.degree == 1, comm, PETSC_ERR_USER_INPUT,
-             "-material_<r>_saturated with -element_degree = %" PetscInt_FMT "; allowed: -element_degree 1 for saturated regions", m->mesh.degree);
   {
     // The pore pressure's coupling and diffusion step by central differences, outside the
     // fourth-order correction (time/central_difference.hpp).

@@ -71,6 +71,36 @@ PetscErrorCode dashpotRowsStep(Elastodynamics *m, Vec stiffness_rows, double ome
   PetscFunctionReturn(0);
 }
 
+// The factor c with which saturated regions' undrained rows enter (porous::
+// PorePressureCouplingFactor): c(h) grows with h and the limit of the bulk rows plus c
+// undrained falls with c, so the steps h within limit(c(h)) form an interval. Bisection keeps
+// hi at or past its end (hi >= limit(c(hi)); limit(1) is) and returns c(hi): the limit with it
+// is at most hi, and every step up to it has c(h) <= c(hi).
+PetscErrorCode couplingFactor(Elastodynamics *m, Vec bulk_rows, Vec undrained, double *c) {
+  Vec rows;
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(bulk_rows, &rows));
+  auto limit = [&](double factor, double *dt) -> PetscErrorCode {
+    PetscReal omega;
+    PetscFunctionBeginUser;
+    PetscCall(VecWAXPY(rows, std::isfinite(factor) ? factor : 0.0, undrained, bulk_rows));
+    PetscCall(omegaMax(m, rows, &omega));
+    *dt = !std::isfinite(factor) ? 0.0 : omega > 0 ? physics::centralDifferenceStableStep(omega, m->rayleigh.beta) : 1e300;
+    PetscFunctionReturn(0);
+  };
+  double lo = 0, hi = 0;
+  PetscCall(limit(1.0, &hi));
+  for (int k = 0; k < 60 && porous::PorePressureCouplingFactor(m->pore, hi) > 1; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    double       dt = 0;
+    PetscCall(limit(porous::PorePressureCouplingFactor(m->pore, mid), &dt));
+    (mid <= dt ? lo : hi) = mid;
+  }
+  *c = porous::PorePressureCouplingFactor(m->pore, hi);
+  PetscCall(VecDestroy(&rows));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
@@ -78,12 +108,19 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(m->mass, &rowabs));
   PetscCall(fem::BulkStiffnessRowBounds(m->dm, m->bulk, rowabs));
-  // Saturated regions: the rows of the undrained stiffness K + alpha^2 Q^T S^-1 Q.
+  // Saturated regions: the rows of the undrained stiffness K + c alpha^2 Q^T S^-1 Q (c = 1 at
+  // degree 1; at p > 1 the split step's factor).
   if (m->pore) {
     PetscReal omega_drained;
+    Vec       undrained;
     PetscCall(omegaMax(m, rowabs, &omega_drained));
     step->dt_drained = omega_drained > 0 ? physics::centralDifferenceStableStep(omega_drained, m->rayleigh.beta) : 1e300;
-    PetscCall(porous::PorePressureAddUndrainedRows(m->pore, m->dm, rowabs));
+    PetscCall(VecDuplicate(rowabs, &undrained));
+    PetscCall(VecZeroEntries(undrained));
+    PetscCall(porous::PorePressureAddUndrainedRows(m->pore, m->dm, undrained));
+    PetscCall(couplingFactor(m, rowabs, undrained, &step->coupling_factor));
+    PetscCall(VecAXPY(rowabs, step->coupling_factor, undrained));
+    PetscCall(VecDestroy(&undrained));
   }
   // K is the bulk and the interface springs together (adding the rows, not taking the larger
   // of two frequencies).
@@ -139,7 +176,9 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   // Saturated regions: the pore-pressure diffusion limits the step unless it is sub-stepped.
   if (m->pore) {
     step->dt_diffusion    = m->pore->dt_diffusion;
-    const bool diffusion  = !m->pore->subcycle && step->dt_diffusion < step->dt_limit;
+    // Without sub-cycling at p > 1 the diffusion also governs where it pulls the wave's bound
+    // down (coupling factor above 2: its step overshoots, porous::PorePressureCouplingFactor).
+    const bool diffusion  = !m->pore->subcycle && (step->dt_diffusion < step->dt_limit || step->coupling_factor > 2);
     step->governing       = diffusion ? std::string("pore-pressure diffusion (explicit, Gershgorin bound on S^-1 H)") : "undrained " + step->governing;
     if (!m->pore->subcycle) step->dt_limit = std::min(step->dt_limit, step->dt_diffusion);
     // Saturated regions step by central differences only (-ts_cd_order 4 is refused with

@@ -20,7 +20,9 @@ set -eu
 grep -v -E "^(gravity|water_table|geostatic_stage):" config/scenes/saturated_site.yaml > "$WORK/site_nogravity.yaml"
 grep -v -E "tie_with|_type: tied" "$WORK/site_nogravity.yaml" > "$WORK/site_nogravity_ff.yaml"
 grep -v -E "tie_with|_type: tied" config/scenes/saturated_site.yaml > "$WORK/site_ff.yaml"
-O="-ts_max_time 2 -output_fields 0 -progress_interval 100000"
+# SEM_DEGREE=p (tests/cases/sem_saturated.sh): elements of degree p, 5 m tall so that the soil's
+# base (y = 0, 50 m above the model's) stays on element faces.
+O="-element_degree $DEGREE -mesh_box_faces $(elements 10),$([ "$DEGREE" = 1 ] && echo 40 || echo 16) -ts_max_time 2 -output_fields 0 -progress_interval 100000"
 $SW -options_file "$WORK/site_nogravity.yaml" $O -output_dir "$WORK/tied" > "$WORK/tied.log"
 $SW -options_file "$WORK/site_nogravity_ff.yaml" $O -bc_left_type freefield -bc_right_type freefield -output_dir "$WORK/ff" > "$WORK/ff.log"
 $SW -options_file "$WORK/site_ff.yaml" $O -bc_left_type freefield -bc_right_type freefield -output_dir "$WORK/ffg" > "$WORK/ffg.log"

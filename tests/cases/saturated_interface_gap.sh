@@ -24,7 +24,7 @@
 set -eu
 . tests/tools/lib.sh
 printf 'time,factor\n0,0\n0.5,2\n1,2\n' > "$WORK/lift.csv"
-O="-mesh_box_faces 8,4 -mesh_box_upper 2,1 -regions base,block -region_block_box 0,2,0.5,1
+O="-element_degree $DEGREE -mesh_box_faces $(elements 8),$(elements 4) -mesh_box_upper 2,1 -regions base,block -region_block_box 0,2,0.5,1
  -material_base_rho 2000 -material_base_vp 3000 -material_base_vs 1800 -material_base_saturated -material_base_porosity 0.3 -material_base_hydraulic_conductivity 0
  -material_block_rho 2400 -material_block_vp 3000 -material_block_vs 1800
  -interfaces slide -interface_slide_regions base,block -interface_slide_phi 30 -interface_slide_psi 0 -interface_slide_c 0 -interface_slide_E 1e10 -interface_slide_G 1e10

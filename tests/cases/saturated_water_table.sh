@@ -9,7 +9,7 @@
 set -eu
 . tests/tools/lib.sh
 SAT="-material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -material_soil_saturated -material_soil_porosity 0.4 -material_soil_hydraulic_conductivity 1e-5"
-COMMON="-mesh_box_faces 1,20 -mesh_box_upper 1,20 -constrain_components x -bc_bottom_type fixed -gravity 9.81 -geostatic_stage -ts_max_time 0.2
+COMMON="-element_degree $DEGREE -mesh_box_faces 1,$(elements 20) -mesh_box_upper 1,20 -constrain_components x -bc_bottom_type fixed -gravity 9.81 -geostatic_stage -ts_max_time 0.2
  -output_interval 0.1 -station_coordinates 0.5,15,0.5,5 -station_names y15,y5 -progress_interval 100"
 $SW -regions dry,soil -region_dry_box 0,1,12,20 -material_dry_rho 1800 -material_dry_vp 400 -material_dry_vs 200 $SAT -water_table 12 $COMMON \
   -output_dir "$WORK/inside" | grep -E "geostatic|pore fluid|done"

@@ -44,29 +44,69 @@ def terzaghi_mean(Tv, terms=400):
     return np.sum(8 / (m * math.pi) ** 2 * np.exp(-(m * math.pi) ** 2 * Tv / 4))
 
 
+TERZAGHI_TIMES = (0.1, 0.3, 0.6)  # the T_v at which the Terzaghi checks sample a run
+
+
+def terzaghi_samples(a, folder):
+    """A Terzaghi run's p at each station and its settlement at each T_v of TERZAGHI_TIMES:
+    [(T_v, t, [(depth, p), ...], settlement)]."""
+    mat = material(a)
+    stations = [(name, float(depth)) for name, depth in (s.split(":") for s in a.stations.split(","))]
+    run = RunFolder(folder)
+    top = run.station(a.top)
+    out = []
+    for Tv in TERZAGHI_TIMES:
+        t = Tv * a.height ** 2 / mat["cv"]
+        ps = [(depth, np.interp(t, run.station(name)["t"], run.station(name)["p"])) for name, depth in stations]
+        out.append((Tv, t, ps, -np.interp(t, top["t"], top["u_y"])))
+    return out
+
+
 def terzaghi(a):
     mat = material(a)
     H, load = a.height, a.load
     p0 = mat["gamma"] * load
     ok = True
     print(f"terzaghi: c_v {mat['cv']:.5g} m^2/s, loading efficiency {mat['gamma']:.5f}, p0 {p0:.6g} Pa, H {H} m")
-    stations = [(name, float(depth)) for name, depth in (s.split(":") for s in a.stations.split(","))]
-    top = RunFolder(a.dir).station(a.top)
-    for Tv in (0.1, 0.3, 0.6):
-        t = Tv * H ** 2 / mat["cv"]
-        for name, depth in stations:
-            d = RunFolder(a.dir).station(name)
-            got = np.interp(t, d["t"], d["p"])
+    for Tv, t, ps, got_s in terzaghi_samples(a, a.dir):
+        for depth, got in ps:
             want = terzaghi_pressure(depth, H, Tv, p0)
             err = abs(got - want) / load
             ok = ok and err <= a.p_tol
             print(f"terzaghi: T_v {Tv}: t {t:.5g} s, depth {depth} m: p {got:.6g} Pa, Terzaghi {want:.6g} Pa, error {err:.2e} of the load (bound {a.p_tol:.0e})")
         # Settlement = integral of the strain, eps = (-load + alpha p)/E (uniaxial strain).
         want_s = (load * H - mat["alpha"] * p0 * H * terzaghi_mean(Tv)) / mat["E"]
-        got_s = -np.interp(t, top["t"], top["u_y"])
         err = abs(got_s - want_s) / want_s
         ok = ok and err <= a.s_tol
         print(f"terzaghi: T_v {Tv}: settlement {got_s:.6g} m, Terzaghi {want_s:.6g} m, relative error {err:.2e} (bound {a.s_tol:.0e})")
+    return 0 if ok else 1
+
+
+def terzaghi_discretisation(a):
+    """The discretisation error of a Terzaghi run: its distance from a finer run of the same
+    scene (a.reference), at the samples of `terzaghi`: the largest p difference over the load
+    and the largest relative settlement difference. Below ~1e-3 the closed form cannot measure
+    it: the mass-proportional damping that stills the undrained ringing drags the consolidation
+    by that much on every mesh (halving the damping halves it). Each run's two numbers must be
+    within the bounds; with --coarser, every run listed there (fewer or more unknowns, another
+    degree) must be farther from the reference on both."""
+    ref = terzaghi_samples(a, a.reference)
+
+    def distance(folder):
+        dp = ds = 0.0
+        for (_, _, ps, s), (_, _, qs, r) in zip(terzaghi_samples(a, folder), ref):
+            dp = max([dp] + [abs(p - q) / a.load for (_, p), (_, q) in zip(ps, qs)])
+            ds = max(ds, abs(s - r) / abs(r))
+        return dp, ds
+
+    dp, ds = distance(a.dir)
+    ok = dp <= a.p_tol and ds <= a.s_tol
+    print(f"terzaghi discretisation: {a.dir}: p {dp:.2e} of the load (bound {a.p_tol:.0e}), settlement {ds:.2e} (bound {a.s_tol:.0e}) from {a.reference}")
+    for other in a.coarser or []:
+        op, os_ = distance(other)
+        farther = op > dp and os_ > ds
+        ok = ok and farther
+        print(f"terzaghi discretisation: {other}: p {op:.2e}, settlement {os_:.2e}: {'farther, as it must be' if farther else 'NOT farther'}")
     return 0 if ok else 1
 
 
@@ -124,19 +164,20 @@ def energy(a):
 
 
 def checkerboard(a):
-    """The node-alternating part of the pore pressure on a uniform grid of spacing h: per cell
+    """The node-alternating part of the pore pressure on the grid of node lines (uniform at
+    degree 1; at degree p > 1 the lines through the GLL nodes, unevenly spaced): per sub-cell
     c = (p00 - p10 - p01 + p11)/4, which is +-A for a checkerboard of amplitude A and
-    h^2 p_xy / 4 for a smooth field (below 1 % of max |p| for the wavelengths a mesh of 10
+    dx dy p_xy / 4 for a smooth field (below 1 % of max |p| for the wavelengths a mesh of 10
     points per wavelength carries: (h k)^2 / 4 <= (2 pi / 10)^2 / 4 = 0.1, times the share of
-    the mixed derivative). Cells within `margin` cells of the grid edges are left out (corners
-    of absorbing boundaries); every field frame after the first is checked."""
+    the mixed derivative). Sub-cells within `margin` node lines of the box's edges are left out
+    (corners of absorbing boundaries); every field frame after the first is checked."""
     f = RunFolder(a.dir).volume()
     g = f.geometry
-    I = np.rint((g[:, 0] - g[:, 0].min()) / a.h).astype(int)
-    J = np.rint((g[:, 1] - g[:, 1].min()) / a.h).astype(int)
+    lines = [np.unique(np.round(g[:, d], 9)) for d in (0, 1)]
+    I, J = (np.searchsorted(lines[d], np.round(g[:, d], 9)) for d in (0, 1))
     x0, x1, y0, y1 = (float(v) for v in a.box.split(","))
-    i0, i1 = int(round(x0 / a.h)) + a.margin, int(round(x1 / a.h)) - a.margin
-    j0, j1 = int(round(y0 / a.h)) + a.margin, int(round(y1 / a.h)) - a.margin
+    i0, i1 = np.searchsorted(lines[0], x0 - 1e-9) + a.margin, np.searchsorted(lines[0], x1 + 1e-9) - 1 - a.margin
+    j0, j1 = np.searchsorted(lines[1], y0 - 1e-9) + a.margin, np.searchsorted(lines[1], y1 + 1e-9) - 1 - a.margin
     worst = 0.0
     frames = f.series("pore_pressure")[1:]
     for p in frames:
@@ -295,6 +336,17 @@ def main():
     t.add_argument("--p-tol", type=float, default=0.01)
     t.add_argument("--s-tol", type=float, default=0.01)
     parsers.append(t)
+    td = sub.add_parser("terzaghi-discretisation")
+    td.add_argument("dir")
+    td.add_argument("--reference", required=True, help="output dir of a finer run of the same scene")
+    td.add_argument("--coarser", action="append", help="output dir of a run that must be farther from the reference (repeatable)")
+    td.add_argument("--height", type=float, required=True)
+    td.add_argument("--load", type=float, required=True, help="compressive load on the top [Pa]")
+    td.add_argument("--stations", required=True, help="name:depth,... (depth below the drained top [m])")
+    td.add_argument("--top", required=True, help="station at the loaded top")
+    td.add_argument("--p-tol", type=float, required=True)
+    td.add_argument("--s-tol", type=float, required=True)
+    parsers.append(td)
     u = sub.add_parser("pulse")
     u.add_argument("dir")
     u.add_argument("--lower", required=True)
@@ -315,7 +367,6 @@ def main():
         q.add_argument("--hydraulic-conductivity", type=float, required=True)
     c = sub.add_parser("checkerboard")
     c.add_argument("dir")
-    c.add_argument("--h", type=float, required=True)
     c.add_argument("--box", required=True, help="x0,x1,y0,y1 of the saturated region [m]")
     c.add_argument("--margin", type=int, default=2)
     c.add_argument("--max-ratio", type=float, required=True)
@@ -358,7 +409,7 @@ def main():
     e.add_argument("--max-error", type=float, required=True)
     e.add_argument("--min-darcy-fraction", type=float, required=True)
     a = p.parse_args()
-    return {"terzaghi": terzaghi, "pulse": pulse, "energy": energy, "checkerboard": checkerboard, "geostatic": geostatic, "mandel": mandel, "site": site}[a.cmd](a)
+    return {"terzaghi": terzaghi, "terzaghi-discretisation": terzaghi_discretisation, "pulse": pulse, "energy": energy, "checkerboard": checkerboard, "geostatic": geostatic, "mandel": mandel, "site": site}[a.cmd](a)
 
 
 if __name__ == "__main__":

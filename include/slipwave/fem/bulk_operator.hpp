@@ -59,6 +59,15 @@ public:
   // nodes, lexicographic, x fastest), and the element a cell belongs to (degree 1: itself).
   PetscInt      elementRegion(PetscInt e) const { return degree_ == 1 ? cell_region_[e] : spectral_.elementRegion(e); }
   const double *elementCoordinates(PetscInt e) const { return degree_ == 1 ? cellCoordinates(e) : spectral_.elementCoordinates(e); }
+  // DMPlex point (vertex) of node a of element e, in the order of elementNodeOffset.
+  PetscInt      elementVertex(PetscInt e, PetscInt a) const { return degree_ == 1 ? cellVertex(e, a) : element_vertices_[e * spectral_.nodesPerElement() + a]; }
+  // Elements with the same index share region and geometry, so any matrix built from both
+  // (degree 1: cellMatrix; degree > 1: the geometry record of the spectral operator).
+  PetscInt      elementMatrix(PetscInt e) const { return degree_ == 1 ? cell_matrix_[e] : spectral_.elementRecord(e); }
+  // Degree > 1: the kind of element eigenvalue bound the stable step takes (certified where
+  // affordable, Collatz-Wielandt on unstructured 3D meshes), for other bounds of the same
+  // elements to choose alike.
+  EigenBoundKind eigenBoundKind() const { return bound_kind_; }
   PetscInt      cellElement(PetscInt c) const { return degree_ == 1 ? c : cell_element_[c]; }
   // fe = K_e ue for element e alone (node-major, nodesPerElement dim values each; fe
   // overwritten), the matrix addStiffnessTimes applies: degree 1 the stored cell matrix,
@@ -122,6 +131,8 @@ private:
   SpectralOperator      spectral_;            // degree > 1
   double                omega2_bound_ = 0;    // degree > 1: certified bound on omega_max^2, all ranks
   std::vector<PetscInt> cell_element_, cell_position_; // degree > 1: per cell, its element and place in it
+  std::vector<PetscInt> element_vertices_;             // degree > 1: per element its nodes' DM vertices
+  EigenBoundKind        bound_kind_ = EigenBoundKind::Certified;
 };
 
 // rows (global) = the row bounds of addStiffnessRowBounds summed over the ranks' cells:

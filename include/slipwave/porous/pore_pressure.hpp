@@ -4,7 +4,10 @@
 // porous/pore_pressure_bc.cpp: the fluid boundary conditions. The pressure is a nodal scalar on its own node layout (a clone
 // of the mesh DM with one dof per vertex, node i of it is node i of the displacement), so the
 // displacement layout, the "cd" TS and every dry-scene pass stay as they are; a dry scene
-// never creates this object.
+// never creates this object. At element degree p > 1 the nodes are the elements' GLL nodes
+// (the mesh's vertices there), the element operators those of fem/spectral_biot.hpp applied
+// from each geometry's GLL factors, and the sub-steps and the wave step's coupling factor
+// those of physics/split_diffusion_step.hpp (docs/saturated-soil.md, "At element degree p > 1").
 //
 // One step, with S the lumped storage (integral of N_a / M), Q the coupling
 // (integral of N_a div), H the Darcy matrix (integral of kappa grad N_a . grad N_b), split:
@@ -45,12 +48,19 @@ struct SaturatedRegion {
 struct PorePressure {
   DM                           pdm = nullptr;    // one dof per vertex
   std::vector<SaturatedRegion> regions;          // per region, in materials order
-  // Element matrices per distinct bulk matrix (region and geometry): alpha Q, kappa H, S.
+  // Element matrices per distinct bulk element matrix (region and geometry,
+  // BulkOperator::elementMatrix). Degree 1: alpha Q and kappa H, dense. Degree p > 1
+  // (fem/spectral_biot.hpp): what they are applied from, per node alpha w|J| and kappa w|J|
+  // and J^{-1}, with the 1D GLL derivative matrix. Both: the storage S per node.
   std::vector<double>   coupling, diffusion, storage_element;
-  std::vector<PetscInt> cells;                   // local cells of saturated regions
-  std::vector<PetscInt> cell_matrix;             // per cell of `cells`: its distinct-matrix index
-  std::vector<PetscInt> cell_p, cell_u;          // per cell node: local offset in p, in u
-  PetscInt              nen = 0, dim = 0;
+  PetscInt              degree = 1;
+  std::vector<double>   coupling_weight, diffusion_weight, inverse_jacobian, gll_derivative;
+  std::vector<PetscInt> matrix_region;           // per distinct matrix: its region
+  fem::EigenBoundKind   bound_kind = fem::EigenBoundKind::Certified; // degree > 1: the bulk's kind, for the undrained rows
+  std::vector<PetscInt> cells;                   // local elements of saturated regions (degree 1: cells)
+  std::vector<PetscInt> cell_matrix;             // per element of `cells`: its distinct-matrix index
+  std::vector<PetscInt> cell_p, cell_u;          // per element node: local offset in p, in u
+  PetscInt              nen = 0, dim = 0;        // nodes per element, dimension
   Vec storage = nullptr, inv_storage = nullptr;  // lumped S per node (0 off the saturated regions)
   Vec free_mask = nullptr;                       // 1 where p evolves: S > 0 and not drained
   Vec inflow = nullptr;                          // q: prescribed boundary inflow per node [m^3/s]
@@ -134,15 +144,21 @@ PetscErrorCode PorePressureDiffuseStep(PorePressure *pore, PetscReal h);
 // pressure's energy (PorePressureEnergy books it with the Darcy dissipation).
 PetscErrorCode PorePressureDrainOpenGaps(PorePressure *pore, Vec open_marker);
 
-// Adds alpha^2 (|Q|^T S^{-1} |Q| 1) to the Gershgorin rows of K (global, displacement layout):
-// the undrained stiffening the wave step must cover (rows of drained nodes do not stiffen).
+// Adds to the row bounds of K (global, displacement layout; K <= diag(rows)) those of the
+// undrained stiffening alpha^2 Q^T S^{-1} Q that the wave step must cover. Degree 1: its
+// Gershgorin rows |Q|^T S^{-1} |Q| 1 (rows of drained nodes do not stiffen). Degree p > 1: per
+// element, its own stiffening Q_e^T S_e^{-1} Q_e (S_e its share of the storage; their sum bounds
+// the assembled one) is the elastic element with lambda = alpha^2 M, mu = 0
+// (fem/spectral_biot.hpp), at most lambda_e diag(alpha w|J|) with lambda_e its eigenvalue bound
+// (the bulk's kind), so each node's rows get lambda_e alpha w|J| from each of its elements.
 PetscErrorCode PorePressureAddUndrainedRows(PorePressure *pore, DM dm, Vec rows);
 
 // Report lines: per saturated region its Biot numbers, the fluid boundaries, and what the
 // pore pressure costs in step: dt_drained (bulk without the undrained stiffening),
-// dt_undrained (with it), dt_diffusion, and the run's limit.
+// dt_undrained (with it, counted coupling_factor times: PorePressureCouplingFactor),
+// dt_diffusion, and the run's limit.
 std::vector<std::string> PorePressureReport(const PorePressure *pore, const std::vector<medium::RegionMaterialInfo> &materials, double dt_drained, double dt_undrained,
-                                            double dt_limit, double dt);
+                                            double coupling_factor, double dt_limit, double dt);
 
 // Within the module (porous/pore_pressure_bc.cpp): -bc_<b>_fluid of every boundary, drained
 // nodes into drained_local (1) and the inflow integral of N_a q into inflow_local (local
@@ -153,7 +169,16 @@ PetscErrorCode PorePressureReadFluidBoundaries(DM dm, DM pdm, const std::vector<
 PetscErrorCode PorePressureDrainNodes(PorePressure *pore, Vec marker);
 
 // Sub-steps per step of size h: 1 without sub-cycling (the step is then within the limit).
+// Degree p > 1: 1 while h is within half the diffusion limit, else an even count
+// (physics/split_diffusion_step.hpp).
 PetscInt PorePressureSubsteps(const PorePressure *pore, double h);
+// The factor c by which the wave step's bound counts the undrained stiffening for a step h
+// (K + c alpha^2 Q^T S^-1 Q; physics/split_diffusion_step.hpp): at degree p > 1 the split
+// step's, 1 <= c <= 2 with sub-cycling, growing without bound as h nears the diffusion limit
+// without it; 1 at degree 1, whose stable step takes the undrained rows as they are (their
+// Gershgorin bound is loose, and Q1's fastest-diffusing pressure modes, the node-alternating
+// ones, are those Q^T hardly sees: measured stable, docs/saturated-soil.md).
+double PorePressureCouplingFactor(const PorePressure *pore, double h);
 
 // The fluid's terms of the energy budget at t_n (docs/saturated-soil.md): the shadow storage
 // energy F_{n+1/2} = ½ p_n S p_{n+1}, and this step's Darcy dissipation

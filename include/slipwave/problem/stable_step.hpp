@@ -23,6 +23,7 @@ struct StableStep {
   double dt_without_stiffness_damping = 0; // the same bound with beta = 0, to report what Rayleigh costs [s]
   double dt_drained = 1e300;  // saturated scenes: the bulk bound without the undrained stiffening alpha^2 Q^T S^-1 Q [s]
   double dt_diffusion = 1e300; // saturated scenes: the explicit pore-pressure diffusion limit [s]
+  double coupling_factor = 1;  // saturated scenes: c of K + c alpha^2 Q^T S^-1 Q (porous::PorePressureCouplingFactor)
   std::string governing;     // which constraint sets dt_limit
   // The fourth-order integrator (-ts_cd_order 4): its limit and what sets it. The bulk alone
   // (no interfaces, contact or absorbing dashpots, rigid bodies) gets the scheme's own range,
