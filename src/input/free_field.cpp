@@ -75,7 +75,7 @@ PetscErrorCode setColumnFluid(DM dm, const FreeFieldFluid &fluid, const std::vec
   std::vector<physics::ColumnFluidNode> nodes(n);
   for (int i = 0; i < n; ++i) nodes[i] = {values[3 * i] > 0, values[3 * i + 1], values[3 * i + 2]};
   const std::string problem = side->column.setPorePressure(segments, nodes, fluid.rules);
-  PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "-bc_%s_type freefield beside a saturated region: %s; allowed: -element_degree 1, or absorbing or tied sides",
+  PetscCheck(problem.empty(), comm, PETSC_ERR_USER_INPUT, "-bc_%s_type freefield beside a saturated region: %s; allowed: absorbing or tied sides",
              side->name.c_str(), problem.c_str());
   PetscFunctionReturn(0);
 }
@@ -309,10 +309,10 @@ void FreeFieldCommit(FreeField *ff) {
   ff->has_trial = false;
 }
 
-double FreeFieldStableStep(const FreeField *ff) {
+double FreeFieldStableStep(const FreeField *ff, double coupling_factor) {
   double dt = 1e300;
   if (ff)
-    for (const FreeFieldSide &side : ff->sides) dt = std::min(dt, side.column.stableStep());
+    for (const FreeFieldSide &side : ff->sides) dt = std::min(dt, side.column.stableStep(coupling_factor));
   return dt;
 }
 

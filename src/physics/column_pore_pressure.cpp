@@ -7,14 +7,19 @@
 
 #include "slipwave/physics/biot.hpp"
 #include "slipwave/physics/cavitation.hpp"
+#include "slipwave/physics/split_diffusion_step.hpp"
 
 namespace slipwave::physics {
 
 std::string ColumnPorePressure::setup(const std::vector<double> &heights, const std::vector<ColumnFluidSegment> &segments, const std::vector<ColumnFluidNode> &nodes,
-                                      const ColumnFluidRules &rules) {
-  char      buf[200];
-  const int n = (int)heights.size();
+                                      const ColumnFluidRules &rules, const ColumnElement &given) {
+  char                buf[200];
+  const int           n  = (int)heights.size();
+  const ColumnElement el = completeColumnElement(given);
+  const int           p  = el.degree;
   if (n < 2 || (int)segments.size() != n - 1 || (int)nodes.size() != n) return "a column's pore pressure needs one fluid per segment and one per node";
+  if (p < 1 || (n - 1) % p != 0 || (int)el.w.size() != p + 1 || (int)el.D.size() != (p + 1) * (p + 1))
+    return "a column's pore pressure of degree p needs p segments per element, p+1 weights and a (p+1)^2 derivative matrix";
   for (int e = 0; e < n - 1; ++e) {
     const ColumnFluidSegment &s = segments[e];
     if (!(heights[e + 1] > heights[e])) {
@@ -25,20 +30,30 @@ std::string ColumnPorePressure::setup(const std::vector<double> &heights, const 
       std::snprintf(buf, sizeof buf, "saturated segment %d has alpha %g, M %g Pa, kappa %g m^2/(Pa s); allowed: 0 < alpha <= 1, M > 0, kappa >= 0", e, s.alpha, s.M, s.kappa);
       return buf;
     }
+    const ColumnFluidSegment &first = segments[e - e % p];
+    if (s.saturated != first.saturated || (s.saturated && (s.alpha != first.alpha || s.M != first.M || s.kappa != first.kappa))) {
+      std::snprintf(buf, sizeof buf, "the element of degree %d from height %g to %g has segments of different pore fluids", p, heights[e - e % p], heights[e - e % p + p]);
+      return buf;
+    }
   }
   if (!(rules.dt_diffusion > 0)) return "the diffusion limit must be > 0";
   storage_.clear();
   bool any = false;
   for (const ColumnFluidSegment &s : segments) any = any || s.saturated;
   if (!any) return "";
-  length_.resize(n - 1);
-  for (int e = 0; e < n - 1; ++e) length_[e] = heights[e + 1] - heights[e];
+  element_  = el;
   segments_ = segments;
   rules_    = rules;
+  jacobian_.resize((n - 1) / p);
+  for (int E = 0; E < elementCount(); ++E) jacobian_[E] = 0.5 * (heights[(E + 1) * p] - heights[E * p]);
+  stiffness_ref_.assign((size_t)(p + 1) * (p + 1), 0.0);
+  for (int a = 0; a <= p; ++a)
+    for (int b = 0; b <= p; ++b)
+      for (int q = 0; q <= p; ++q) stiffness_ref_[a * (p + 1) + b] += el.w[q] * el.D[q * (p + 1) + a] * el.D[q * (p + 1) + b];
   storage_.assign(n, 0.0);
-  for (int e = 0; e < n - 1; ++e)
-    if (segments_[e].saturated)
-      for (int a = 0; a < 2; ++a) storage_[e + a] += length_[e] / (2 * segments_[e].M);
+  for (int E = 0; E < elementCount(); ++E)
+    if (elementFluid(E).saturated)
+      for (int a = 0; a <= p; ++a) storage_[E * p + a] += el.w[a] * jacobian_[E] / elementFluid(E).M;
   inv_storage_.assign(n, 0.0);
   hydrostatic_.assign(n, 0.0);
   inflow_rate_.assign(n, 0.0);
@@ -53,22 +68,29 @@ std::string ColumnPorePressure::setup(const std::vector<double> &heights, const 
 }
 
 void ColumnPorePressure::couplingTimes(const double *u, int stride, std::vector<double> &q) const {
+  const int p = element_.degree;
   std::fill(q.begin(), q.end(), 0.0);
-  for (size_t e = 0; e < length_.size(); ++e) {
-    if (!segments_[e].saturated) continue;
-    const double half = 0.5 * segments_[e].alpha * (u[(e + 1) * stride] - u[e * stride]);
-    q[e] += half;
-    q[e + 1] += half;
+  for (int E = 0; E < elementCount(); ++E) {
+    if (!elementFluid(E).saturated) continue;
+    for (int a = 0; a <= p; ++a) {
+      double div = 0; // J times du/dz at node a
+      for (int b = 0; b <= p; ++b) div += element_.D[a * (p + 1) + b] * u[(E * p + b) * stride];
+      q[E * p + a] += elementFluid(E).alpha * element_.w[a] * div;
+    }
   }
 }
 
-void ColumnPorePressure::diffusionTimes(const std::vector<double> &p, std::vector<double> &hp) const {
+void ColumnPorePressure::diffusionTimes(const std::vector<double> &pr, std::vector<double> &hp) const {
+  const int p = element_.degree;
   std::fill(hp.begin(), hp.end(), 0.0);
-  for (size_t e = 0; e < length_.size(); ++e) {
-    if (!segments_[e].saturated) continue;
-    const double flux = segments_[e].kappa / length_[e] * (p[e] - p[e + 1]);
-    hp[e] += flux;
-    hp[e + 1] -= flux;
+  for (int E = 0; E < elementCount(); ++E) {
+    if (!elementFluid(E).saturated) continue;
+    const double scale = elementFluid(E).kappa / jacobian_[E];
+    for (int a = 0; a <= p; ++a) {
+      double row = 0;
+      for (int b = 0; b <= p; ++b) row += stiffness_ref_[a * (p + 1) + b] * pr[E * p + b];
+      hp[E * p + a] += scale * row;
+    }
   }
 }
 
@@ -79,7 +101,7 @@ void ColumnPorePressure::start(const double *u, int stride) {
   std::fill(cavity_.begin(), cavity_.end(), 0.0);
 }
 
-int ColumnPorePressure::substeps(double h) const { return diffusionSubsteps(h, rules_.dt_diffusion, rules_.subcycle); }
+int ColumnPorePressure::substeps(double h) const { return diffusionSubstepsOfDegree(element_.degree, h, rules_.dt_diffusion, rules_.subcycle); }
 
 void ColumnPorePressure::step(double h, const double *u, int stride) {
   if (!active()) return;
@@ -107,39 +129,50 @@ void ColumnPorePressure::step(double h, const double *u, int stride) {
 }
 
 void ColumnPorePressure::addForce(double scale, double *f, int stride) const {
-  for (size_t e = 0; e < length_.size(); ++e) {
-    if (!segments_[e].saturated) continue;
-    const double half = scale * 0.5 * segments_[e].alpha * (p_[e] + p_[e + 1]);
-    f[e * stride] -= half;
-    f[(e + 1) * stride] += half;
+  const int p = element_.degree;
+  for (int E = 0; E < elementCount(); ++E) {
+    if (!elementFluid(E).saturated) continue;
+    for (int b = 0; b <= p; ++b) {
+      double pull = 0;
+      for (int a = 0; a <= p; ++a) pull += element_.w[a] * element_.D[a * (p + 1) + b] * p_[E * p + a];
+      f[(E * p + b) * stride] += scale * elementFluid(E).alpha * pull;
+    }
   }
 }
 
 double ColumnPorePressure::diffusionLimit() const {
+  const int           p = element_.degree;
+  std::vector<double> row(storage_.size(), 0.0);
+  for (int E = 0; E < elementCount(); ++E)
+    if (elementFluid(E).saturated)
+      for (int a = 0; a <= p; ++a)
+        for (int b = 0; b <= p; ++b) row[E * p + a] += elementFluid(E).kappa / jacobian_[E] * std::fabs(stiffness_ref_[a * (p + 1) + b]);
   double dt = 1e300;
-  for (size_t i = 0; i < storage_.size(); ++i) {
-    if (!(inv_storage_[i] > 0)) continue;
-    double row = 0;
-    for (size_t e = (i > 0 ? i - 1 : 0); e <= i && e < length_.size(); ++e)
-      if (segments_[e].saturated) row += 2 * segments_[e].kappa / length_[e];
-    dt = std::min(dt, explicitDiffusionStepOfRow(storage_[i], row));
-  }
+  for (size_t i = 0; i < storage_.size(); ++i)
+    if (inv_storage_[i] > 0) dt = std::min(dt, explicitDiffusionStepOfRow(storage_[i], row[i]));
   return dt;
 }
 
 double ColumnPorePressure::undrainedRow(int node) const {
   if (!active()) return 0.0;
-  // w_a: each saturated segment of node a contributes |alpha/2| to both of its u-nodes.
-  auto w = [&](int a) {
+  // Degree 1: each saturated segment of node a contributes |alpha/2| to both of its u-nodes.
+  auto saturated = [&](int e) { return e >= 0 && e < elementCount() && elementFluid(e).saturated; };
+  auto w         = [&](int a) {
     double sum = 0;
     for (int e = a - 1; e <= a; ++e)
-      if (e >= 0 && e < (int)length_.size() && segments_[e].saturated) sum += segments_[e].alpha;
+      if (saturated(e)) sum += elementFluid(e).alpha;
     return sum * inv_storage_[a];
   };
   double row = 0;
   for (int e = node - 1; e <= node; ++e)
-    if (e >= 0 && e < (int)length_.size() && segments_[e].saturated) row += 0.5 * segments_[e].alpha * (w(e) + w(e + 1));
+    if (saturated(e)) row += 0.5 * elementFluid(e).alpha * (w(e) + w(e + 1));
   return row;
+}
+
+double ColumnPorePressure::undrainedModulus(int E) const {
+  if (!active() || !elementFluid(E).saturated) return 0.0;
+  const ColumnFluidSegment &f = elementFluid(E);
+  return f.alpha * f.alpha * f.M;
 }
 
 std::vector<double> ColumnPorePressure::state() const {

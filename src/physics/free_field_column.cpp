@@ -69,8 +69,7 @@ void soilPoint(const HystereticSoilModel &model, int dim, const double *g, doubl
 
 std::string FreeFieldColumn::setup(int dim, const std::vector<double> &heights, const std::vector<ElasticMaterial> &materials, double alpha, double beta,
                                    const ColumnElement &given) {
-  ColumnElement element = given;
-  if (element.degree == 1 && element.x.empty()) element.x = {-1, 1}, element.w = {1, 1}, element.D = {-0.5, 0.5, -0.5, 0.5};
+  const ColumnElement element = completeColumnElement(given);
   char buf[240];
   if (dim != 2 && dim != 3) return "the dimension must be 2 or 3";
   if (heights.size() < 2) return "a free-field column needs at least two node heights";
@@ -111,19 +110,18 @@ std::string FreeFieldColumn::setup(int dim, const std::vector<double> &heights, 
   alpha_ = alpha;
   beta_  = beta;
   p_     = p;
-  ref_w_ = element.w;
-  ref_D_ = element.D;
+  element_ = element;
   ref_S2_.assign((p + 1) * (p + 1), 0.0);
   for (int a = 0; a <= p; ++a)
     for (int b = 0; b <= p; ++b) {
       double sum = 0;
-      for (int q = 0; q <= p; ++q) sum += ref_w_[q] * ref_D_[q * (p + 1) + a] * ref_D_[q * (p + 1) + b];
+      for (int q = 0; q <= p; ++q) sum += element_.w[q] * element_.D[q * (p + 1) + a] * element_.D[q * (p + 1) + b];
       ref_S2_[a * (p + 1) + b] = 2 * sum;
     }
   // W^-1/2 S2 W^-1/2 has the eigenvalues of W^-1 S2.
   std::vector<double> scaled(ref_S2_);
   for (int a = 0; a <= p; ++a)
-    for (int b = 0; b <= p; ++b) scaled[a * (p + 1) + b] /= std::sqrt(ref_w_[a] * ref_w_[b]);
+    for (int b = 0; b <= p; ++b) scaled[a * (p + 1) + b] /= std::sqrt(element_.w[a] * element_.w[b]);
   ref_lambda_ = symmetricLambdaMax(p + 1, scaled);
   const int n = (int)z_.size(), ne = elementCount();
   mass_.assign(n, 0.0);
@@ -132,7 +130,7 @@ std::string FreeFieldColumn::setup(int dim, const std::vector<double> &heights, 
     const double L  = elementLength(e);
     const auto  &m  = mat_[e * p_];
     const auto   lm = lame(m);
-    for (int a = 0; a <= p_; ++a) mass_[e * p_ + a] += m.rho * L / 2 * ref_w_[a];
+    for (int a = 0; a <= p_; ++a) mass_[e * p_ + a] += m.rho * L / 2 * element_.w[a];
     for (int c = 0; c < dim_; ++c) k_[e * dim_ + c] = (c == dim_ - 1 ? lm.lambda + 2 * lm.mu : lm.mu) / L;
   }
   modulus_factor_.assign(n - 1, 1.0);
@@ -231,14 +229,7 @@ void FreeFieldColumn::setGeostaticScales(double gravity, const std::vector<bool>
 }
 
 std::string FreeFieldColumn::setPorePressure(const std::vector<ColumnFluidSegment> &segments, const std::vector<ColumnFluidNode> &nodes, const ColumnFluidRules &rules) {
-  bool any = false;
-  for (const ColumnFluidSegment &f : segments) any = any || f.saturated;
-  if (any && p_ > 1) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "the pore pressure of a free-field column is of degree 1 only; the column has degree %d", p_);
-    return buf;
-  }
-  const std::string problem = pore_.setup(z_, segments, nodes, rules);
+  const std::string problem = pore_.setup(z_, segments, nodes, rules, element_);
   if (!problem.empty()) return problem;
   base_dashpot_[dim_ - 1] = baseImpedance(dim_ - 1);
   if (input_component_ >= 0) setInput(input_component_, input_p_wave_);
@@ -262,7 +253,7 @@ void FreeFieldColumn::setInput(int component, bool p_wave) {
 
 double FreeFieldColumn::scaledGradient(const std::vector<double> &x, int e, int c, int q) const {
   double g = 0;
-  for (int b = 0; b <= p_; ++b) g += ref_D_[q * (p_ + 1) + b] * x[(e * p_ + b) * dim_ + c];
+  for (int b = 0; b <= p_; ++b) g += element_.D[q * (p_ + 1) + b] * x[(e * p_ + b) * dim_ + c];
   return 2 * g;
 }
 
@@ -298,7 +289,7 @@ void FreeFieldColumn::soilForce(std::vector<double> &f) {
     for (int c = 0; c < dim_; ++c)
       for (int a = 0; a <= p_; ++a) {
         double s = 0;
-        for (int q = 0; q <= p_; ++q) s += ref_w_[q] * ref_D_[q * n1 + a] * sig[q * ns + c];
+        for (int q = 0; q <= p_; ++q) s += element_.w[q] * element_.D[q * n1 + a] * sig[q * ns + c];
         f[(e * p_ + a) * dim_ + c] += s;
       }
   }
@@ -342,7 +333,7 @@ void FreeFieldColumn::memoryForce(double h, std::vector<double> &f) {
       }
       for (int a = 0; a <= p_; ++a) {
         double pull = 0;
-        for (int q = 0; q <= p_; ++q) pull += ref_w_[q] * ref_D_[q * n1 + a] * total[q];
+        for (int q = 0; q <= p_; ++q) pull += element_.w[q] * element_.D[q * n1 + a] * total[q];
         f[(e * p_ + a) * dim_ + c] -= pull;
       }
     }
@@ -449,6 +440,9 @@ void FreeFieldColumn::stress(int segment, int node, double *sigma) const {
 
 double FreeFieldColumn::poreStress(int segment, int node, double theta) const {
   if (!pore_.active()) return 0.0;
+  // Degree p > 1: the main mesh integrates alpha p div(dv) by the GLL rule, which collocates
+  // on the face as well: the nodal value.
+  if (p_ > 1) return pore_.alpha(segment) * pore_.pressure(node);
   const int other = node == segment ? segment + 1 : segment;
   return pore_.alpha(segment) * ((1 - theta) * pore_.pressure(node) + theta * pore_.pressure(other));
 }
@@ -459,20 +453,25 @@ int FreeFieldColumn::findNode(double zq, double tol) const {
   return -1;
 }
 
-double FreeFieldColumn::omegaMax() const {
+double FreeFieldColumn::omegaMax(double coupling_factor) const {
   double    w2 = 0;
   const int n  = (int)z_.size();
   if (p_ > 1) {
+    // The vertical chain of a saturated element adds coupling_factor alpha^2 M / L to its
+    // modulus / L (ColumnPorePressure::undrainedModulus): its element bound scales alike.
     for (int e = 0; e < elementCount(); ++e)
-      for (int c = 0; c < dim_; ++c) w2 = std::max(w2, 2 * k_[e * dim_ + c] / (mat_[e * p_].rho * elementLength(e)) * ref_lambda_);
+      for (int c = 0; c < dim_; ++c) {
+        const double k = k_[e * dim_ + c] + (c == dim_ - 1 ? coupling_factor * pore_.undrainedModulus(e) / elementLength(e) : 0.0);
+        w2             = std::max(w2, 2 * k / (mat_[e * p_].rho * elementLength(e)) * ref_lambda_);
+      }
     return std::sqrt(w2);
   }
   // Gershgorin on M^{-1} K per chain: row i sums to 2 (k_left + k_right) / m_i; the vertical
   // rows of saturated segments add the undrained stiffening alpha^2 Q^T S^{-1} Q as the main
-  // mesh bounds it.
+  // mesh bounds it, coupling_factor times.
   for (int i = 0; i < n; ++i)
     for (int c = 0; c < dim_; ++c) {
-      double row = c == dim_ - 1 ? pore_.undrainedRow(i) : 0.0;
+      double row = c == dim_ - 1 ? coupling_factor * pore_.undrainedRow(i) : 0.0;
       if (i > 0) row += 2 * k_[(i - 1) * dim_ + c];
       if (i < n - 1) row += 2 * k_[i * dim_ + c];
       w2 = std::max(w2, row / mass_[i]);
@@ -480,7 +479,7 @@ double FreeFieldColumn::omegaMax() const {
   return std::sqrt(w2);
 }
 
-double FreeFieldColumn::stableStep() const { return centralDifferenceStableStep(omegaMax(), beta_); }
+double FreeFieldColumn::stableStep(double coupling_factor) const { return centralDifferenceStableStep(omegaMax(coupling_factor), beta_); }
 
 // Each Iwan state's tail age (updates since the tail was set) to or from its kSince slot at
 // update `now` (the same map both ways).

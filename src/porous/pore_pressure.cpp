@@ -690,12 +690,9 @@ PetscErrorCode PorePressureTrial(PorePressure *pp, DM dm, const PetscScalar *u, 
   PetscFunctionReturn(0);
 }
 
-PetscInt PorePressureSubsteps(const PorePressure *pp, double h) {
-  // Degree p > 1: sub-steps that keep the diffusion's amplification non-negative, which the
-  // stable step's coupling factor assumes (PorePressureCouplingFactor).
-  if (pp->degree > 1) return h > 0 ? physics::splitDiffusionSubsteps(h, pp->dt_diffusion, pp->subcycle) : 1;
-  return physics::diffusionSubsteps(h, pp->dt_diffusion, pp->subcycle);
-}
+// Degree p > 1: sub-steps that keep the diffusion's amplification non-negative, which the
+// stable step's coupling factor assumes (PorePressureCouplingFactor).
+PetscInt PorePressureSubsteps(const PorePressure *pp, double h) { return physics::diffusionSubstepsOfDegree((int)pp->degree, h, pp->dt_diffusion, pp->subcycle); }
 
 double PorePressureCouplingFactor(const PorePressure *pp, double h) {
   return pp->degree > 1 ? physics::splitCouplingFactor(h, pp->dt_diffusion, pp->subcycle) : 1.0;

@@ -151,7 +151,7 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   // The free-field columns are the 1D version of the side's elements, so their bound
   // (Gershgorin at degree 1, the element eigenvalue at p > 1) is normally below the mesh's;
   // checked anyway, since they step with the same dt.
-  step->dt_free_field           = input::FreeFieldStableStep(m->free_field);
+  step->dt_free_field           = input::FreeFieldStableStep(m->free_field, step->coupling_factor);
   const bool free_field_governs = step->dt_free_field < step->dt_limit;
   step->dt_limit                = std::min(step->dt_limit, step->dt_free_field);
   const bool interfaces_matter  = step->dt_bulk < step->dt_without_interfaces * (1 - 1e-12);

@@ -40,8 +40,12 @@ FREE="-bc_left_type freefield -bc_right_type freefield"
 COL="-regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -material_soil_saturated -material_soil_porosity 0.4
  -material_soil_hydraulic_conductivity 0.04 -fluid_cavitation_pressure none -bc_top_fluid drained -bc_bottom_type absorbing -input_wave p -input_boundary bottom
  -input_stf ricker -input_f0 10 -input_t0 0.12 -input_amplitude 0.1 -ts_max_time 0.4 -output_fields 0 -progress_interval 100000"
-COL2="$COL -mesh_box_faces 4,50 -mesh_box_upper 4,50 -station_coordinates 2,50,2,25,2,10,0,25 -station_names top,d25,d40,side25"
-COL3="$COL -mesh_dim 3 -mesh_box_faces 2,2,50 -mesh_box_upper 2,2,50 -station_coordinates 1,1,50,1,1,25,1,1,10,0,0,25 -station_names top,d25,d40,side25"
+# SEM_DEGREE=p (tests/cases/sem_saturated.sh): elements of degree p (the column's pore pressure
+# at the GLL nodes, as the main mesh's), about the same node spacing; the site's elements 5 m
+# tall as in saturated_free_field.sh.
+COL="$COL -element_degree $DEGREE"
+COL2="$COL -mesh_box_faces $(elements 4),$(elements 50) -mesh_box_upper 4,50 -station_coordinates 2,50,2,25,2,10,0,25 -station_names top,d25,d40,side25"
+COL3="$COL -mesh_dim 3 -mesh_box_faces $(elements 2),$(elements 2),$(elements 50) -mesh_box_upper 2,2,50 -station_coordinates 1,1,50,1,1,25,1,1,10,0,0,25 -station_names top,d25,d40,side25"
 $SW $COL2 $TIED -output_dir "$WORK/tied" > "$WORK/tied.log"
 $SW $COL2 $FREE -output_dir "$WORK/free" > "$WORK/free.log"
 $MPIEXEC -n 2 $SW $COL2 $FREE -output_dir "$WORK/free2" > "$WORK/free2.log"
@@ -68,7 +72,7 @@ echo "restart at step $half: energy.csv and the station files identical"
 grep -v -E "^(gravity|water_table|geostatic_stage):" config/scenes/saturated_site.yaml > "$WORK/site_nogravity.yaml"
 grep -v -E "tie_with|_type: tied" "$WORK/site_nogravity.yaml" > "$WORK/site_nogravity_ff.yaml"
 grep -v -E "tie_with|_type: tied" config/scenes/saturated_site.yaml > "$WORK/site_ff.yaml"
-SITE="-input_wave p -ts_max_time 2 -output_fields 0 -progress_interval 100000"
+SITE="-element_degree $DEGREE -mesh_box_faces $(elements 10),$([ "$DEGREE" = 1 ] && echo 40 || echo 16) -input_wave p -ts_max_time 2 -output_fields 0 -progress_interval 100000"
 $SW -options_file "$WORK/site_nogravity.yaml" $SITE -output_dir "$WORK/site_tied" > "$WORK/site_tied.log"
 $SW -options_file "$WORK/site_nogravity_ff.yaml" $SITE $FREE -output_dir "$WORK/site_free" > "$WORK/site_free.log"
 $SW -options_file config/scenes/saturated_site.yaml $SITE -input_amplitude 0.5 -geostatic_tolerance 1e-13 -geostatic_max_steps 100000 -output_dir "$WORK/wet_tied" \

@@ -6,13 +6,13 @@
 #include <memory>
 #include <vector>
 
-#include "slipwave/numerics/gll_basis.hpp"
 #include "slipwave/physics/constant_q.hpp"
 #include "slipwave/physics/elastic_material.hpp"
 #include "slipwave/physics/free_field_column.hpp"
 #include "slipwave/physics/hysteretic_soil.hpp"
 #include "slipwave/physics/source_time_function.hpp"
 #include "slipwave/physics/stable_time_step.hpp"
+#include "gll_column.hpp"
 #include "unit_check.hpp"
 
 using slipwave::physics::ConstantQModel;
@@ -197,21 +197,6 @@ void constantQ() {
 
 } // namespace
 
-// A column of degree p from the GLL rule (numerics/gll_basis) on nel equal elements of [0, H].
-slipwave::physics::ColumnElement gllElement(int p) {
-  slipwave::physics::ColumnElement el;
-  el.degree = p;
-  el.x.resize(p + 1), el.w.resize(p + 1), el.D.resize((p + 1) * (p + 1));
-  slipwave::numerics::gllPointsWeights(p, el.x.data(), el.w.data());
-  slipwave::numerics::lagrangeDerivativeMatrix(p, el.x.data(), el.D.data());
-  return el;
-}
-std::vector<double> gllHeights(double H, int nel, const slipwave::physics::ColumnElement &el) {
-  std::vector<double> z{0.0};
-  for (int e = 0; e < nel; ++e)
-    for (int a = 1; a <= el.degree; ++a) z.push_back(a == el.degree ? H * (e + 1) / nel : H * (e + (1 + el.x[a]) / 2) / nel);
-  return z;
-}
 
 // Degree p (spectral elements):
 // - one element of degree 2, length L: M^-1 K has the eigenvalues 0, 6 and 12 times

@@ -104,8 +104,9 @@ PetscErrorCode FreeFieldCreate(DM dm, const BoundaryConditions &bc, const std::v
 PetscErrorCode FreeFieldUpdate(FreeField *ff, DM dm, TS ts, PetscReal t, double v_in, bool enabled);
 // The trial columns of the last FreeFieldUpdate become the committed ones (no-op without one).
 void           FreeFieldCommit(FreeField *ff);
-// Smallest stable step of the columns (1e300 if none).
-double         FreeFieldStableStep(const FreeField *ff);
+// Smallest stable step of the columns (1e300 if none), their saturated segments' undrained
+// stiffening counted coupling_factor times (the main mesh's, problem/stable_step.hpp).
+double         FreeFieldStableStep(const FreeField *ff, double coupling_factor);
 PetscErrorCode FreeFieldDestroy(FreeField **ff);
 
 } // namespace slipwave::input

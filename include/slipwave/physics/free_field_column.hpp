@@ -56,7 +56,7 @@
 // stress at each point (as the main mesh drives its memory by the force of the soil's stress),
 // one more set of memory variables for the lateral stress.
 //
-// Saturated segments (setPorePressure, degree 1): the segments' materials are the drained
+// Saturated segments (setPorePressure, any degree): the segments' materials are the drained
 // skeleton's, and the vertical chain carries the excess pore pressure of the main mesh's u-p
 // split restricted to the column (physics/column_pore_pressure.hpp): each step computes
 // p_{n+1} from u_{n+1} and adds the force alpha Q^T p_{n+1} to the vertical chain, so the
@@ -70,21 +70,13 @@
 #include <string>
 #include <vector>
 
+#include "slipwave/physics/column_element.hpp"
 #include "slipwave/physics/column_pore_pressure.hpp"
 #include "slipwave/physics/constant_q.hpp"
 #include "slipwave/physics/elastic_material.hpp"
 #include "slipwave/physics/hysteretic_soil.hpp"
 
 namespace slipwave::physics {
-
-// The column's reference element on [-1, 1]: its degree, GLL points x and weights w (p+1
-// each) and derivative matrix D[i*(p+1) + j] = l_j'(x_i) (the caller takes them from
-// numerics/gll_basis). Left empty: degree 1 (points -1, 1, weights 1, D rows (-1/2, 1/2)).
-constexpr int kMaxColumnDegree = 8;
-struct ColumnElement {
-  int                 degree = 1;
-  std::vector<double> x, w, D;
-};
 
 class FreeFieldColumn {
 public:
@@ -118,7 +110,7 @@ public:
   void setGeostaticScales(double gravity, const std::vector<bool> &geostatic, double reference_stress, double floor);
   // The pore pressure of saturated segments (physics/column_pore_pressure.hpp): per segment
   // its Biot numbers (the segment's material must be the drained skeleton), per node the main
-  // mesh's fluid conditions at the side. Degree 1 only. Call after setup and before start.
+  // mesh's fluid conditions at the side. Call after setup and before start.
   std::string setPorePressure(const std::vector<ColumnFluidSegment> &segments, const std::vector<ColumnFluidNode> &nodes, const ColumnFluidRules &rules);
   bool        saturated() const { return pore_.active(); }
   const ColumnPorePressure &pore() const { return pore_; }
@@ -148,7 +140,8 @@ public:
   // integral of alpha p N_a over the lumped weight. The main mesh's cells integrate their
   // alpha p div(dv) exactly, which on a side's node is this face integral of the pressure
   // (linear along the face), not its nodal value: so the total stress a side receives is
-  // stress() less this on the diagonal.
+  // stress() less this on the diagonal. Degree p > 1: alpha p_node (theta unused), as the main
+  // mesh's GLL rule collocates the pressure on the face too.
   double poreStress(int segment, int node, double theta) const;
   // Node whose height is within tol of z, or -1.
   int findNode(double z, double tol) const;
@@ -156,8 +149,10 @@ public:
   // stiffness-proportional damping), for comparison with the main model's. Degree 1:
   // Gershgorin. Degree p: the largest element's omega^2 = 2 k_e/(rho L_e) lambda_max(W^-1 S2)
   // (K = sum K_e <= max_e omega_e^2 M; the reference eigenvalue by Jacobi rotations).
-  double omegaMax() const;
-  double stableStep() const;
+  // Saturated segments add the undrained stiffening coupling_factor times, as the main mesh
+  // does (porous::PorePressureCouplingFactor: 1 at degree 1, the split step's c at p > 1).
+  double omegaMax(double coupling_factor = 1) const;
+  double stableStep(double coupling_factor = 1) const;
 
   // Full state for checkpoints: t, u, v, a, v_half, memory variables and last spring forces,
   // then (hysteretic columns only) the Iwan states, their last stresses and the lateral memory,
@@ -181,7 +176,7 @@ private:
   std::vector<double>          z_, mass_;
   std::vector<ElasticMaterial> mat_;
   int                          p_ = 1;             // element degree: p_ segments per element
-  std::vector<double>          ref_w_, ref_D_;     // reference GLL weights and derivative matrix
+  ColumnElement                element_;           // reference GLL points, weights and derivative matrix
   std::vector<double>          ref_S2_;            // 2 sum_q w_q D_qa D_qb, (p+1)^2
   double                       ref_lambda_ = 2;    // lambda_max(W^-1 S2)
   std::vector<double>          k_; // per element and component: modulus / L

@@ -30,4 +30,9 @@ int splitDiffusionSubsteps(double h, double dt_diffusion, bool subcycle);
 // dt_diffusion with one sub-step (the diffusion itself is unstable there).
 double splitCouplingFactor(double h, double dt_diffusion, bool subcycle);
 
+// The sub-step rule of a u-p mesh of element degree p: splitDiffusionSubsteps at p > 1,
+// physics::diffusionSubsteps (biot.hpp) at p = 1. The main mesh and the free-field columns
+// share it, so they split a step alike.
+int diffusionSubstepsOfDegree(int degree, double h, double dt_diffusion, bool subcycle);
+
 } // namespace slipwave::physics
