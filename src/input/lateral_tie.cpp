@@ -81,8 +81,15 @@ PetscErrorCode LateralTieCreate(DM dm, const BoundaryConditions &bc, Vec mass, L
   for (PetscInt d = 0; d < dim; ++d) extent = std::max(extent, (double)(bounds[3 + d] - bounds[d]));
   const double quantum = 1e-9 * extent;
 
-  std::vector<PetscInt> from; // global dofs: node i (dim), node j (dim), pair after pair
-  PetscInt              npairs_global = 0;
+  // Every tie pair on every rank (the side nodes are gathered), joined into groups: a node on
+  // two tied directions (3D, the vertical edges of a box tied left-right and front-back) ties
+  // all four corner nodes at its height, which pairwise means would not (each node's
+  // acceleration would be the last pair's mean). Groups are keyed by their nodes' x-dofs.
+  std::map<PetscInt, PetscInt> parent;
+  auto find = [&](PetscInt x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
   for (const auto &[a, b] : bc.tied_pairs) {
     // The tie direction is the axis of side a's mean outward normal.
     double n_a[3] = {0, 0, 0}, n_b[3] = {0, 0, 0};
@@ -107,32 +114,37 @@ PetscErrorCode LateralTieCreate(DM dm, const BoundaryConditions &bc, Vec mass, L
       PetscCheck(hit != by_key.end(), comm, PETSC_ERR_USER_INPUT,
                  "a node of tied side '%s' has no node facing it on '%s'; allowed: sides meshed alike (node for node at the same positions along them)", a.c_str(),
                  b.c_str());
-      ++npairs_global;
-      if (node.dof < lo || node.dof >= hi) continue; // the owner of node i takes the pair
-      for (PetscInt d = 0; d < dim; ++d) from.push_back(node.dof + d);
-      for (PetscInt d = 0; d < dim; ++d) from.push_back(hit->second + d);
+      for (PetscInt x : {node.dof, hit->second})
+        if (!parent.count(x)) parent[x] = x;
+      parent[find(node.dof)] = find(hit->second);
     }
   }
-  auto *tie          = new LateralTie();
-  tie->dim           = dim;
-  tie->npairs        = (PetscInt)from.size() / (2 * dim);
-  tie->npairs_global = npairs_global;
+  std::map<PetscInt, std::vector<PetscInt>> groups; // root -> members (ascending: the map's order)
+  for (const auto &entry : parent) groups[find(entry.first)].push_back(entry.first);
+  auto *tie = new LateralTie();
+  tie->dim  = dim;
+  std::vector<PetscInt> from; // global dofs, node after node, group after group
+  tie->group_start.push_back(0);
+  for (const auto &entry : groups) {
+    const std::vector<PetscInt> &members = entry.second;
+    if (members[0] < lo || members[0] >= hi) continue; // the owner of the group's first node takes it
+    for (PetscInt x : members)
+      for (PetscInt d = 0; d < dim; ++d) from.push_back(x + d);
+    tie->group_start.push_back((PetscInt)from.size() / dim);
+  }
   IS is_from, is_to;
   PetscCall(ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)from.size(), from.data(), PETSC_COPY_VALUES, &is_from));
   PetscCall(ISCreateStride(PETSC_COMM_SELF, (PetscInt)from.size(), 0, 1, &is_to));
-  PetscCall(VecCreateSeq(PETSC_COMM_SELF, (PetscInt)from.size(), &tie->pair_values));
-  PetscCall(VecScatterCreate(mass, is_from, tie->pair_values, is_to, &tie->scatter));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, (PetscInt)from.size(), &tie->node_values));
+  PetscCall(VecScatterCreate(mass, is_from, tie->node_values, is_to, &tie->scatter));
   PetscCall(ISDestroy(&is_from));
   PetscCall(ISDestroy(&is_to));
-  PetscCall(VecScatterBegin(tie->scatter, mass, tie->pair_values, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(tie->scatter, mass, tie->pair_values, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterBegin(tie->scatter, mass, tie->node_values, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(tie->scatter, mass, tie->node_values, INSERT_VALUES, SCATTER_FORWARD));
   const PetscScalar *m;
-  PetscCall(VecGetArrayRead(tie->pair_values, &m));
-  for (PetscInt p = 0; p < tie->npairs; ++p) {
-    tie->mass.push_back(PetscRealPart(m[p * 2 * dim]));
-    tie->mass.push_back(PetscRealPart(m[p * 2 * dim + dim]));
-  }
-  PetscCall(VecRestoreArrayRead(tie->pair_values, &m));
+  PetscCall(VecGetArrayRead(tie->node_values, &m));
+  for (size_t k = 0; k < from.size(); k += dim) tie->mass.push_back(PetscRealPart(m[k]));
+  PetscCall(VecRestoreArrayRead(tie->node_values, &m));
   *out = tie;
   PetscFunctionReturn(0);
 }
@@ -141,20 +153,23 @@ PetscErrorCode LateralTieApply(LateralTie *tie, Vec accel) {
   PetscFunctionBeginUser;
   if (!tie) PetscFunctionReturn(0);
   const PetscInt dim = tie->dim;
-  PetscCall(VecScatterBegin(tie->scatter, accel, tie->pair_values, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(tie->scatter, accel, tie->pair_values, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterBegin(tie->scatter, accel, tie->node_values, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(tie->scatter, accel, tie->node_values, INSERT_VALUES, SCATTER_FORWARD));
   PetscScalar *a;
-  PetscCall(VecGetArray(tie->pair_values, &a));
-  for (PetscInt p = 0; p < tie->npairs; ++p) {
-    const double mi = tie->mass[2 * p], mj = tie->mass[2 * p + 1];
+  PetscCall(VecGetArray(tie->node_values, &a));
+  for (size_t g = 0; g + 1 < tie->group_start.size(); ++g) {
+    const PetscInt first = tie->group_start[g], end = tie->group_start[g + 1];
+    double         total = 0;
+    for (PetscInt k = first; k < end; ++k) total += tie->mass[k];
     for (PetscInt d = 0; d < dim; ++d) {
-      const double mean = (mi * a[p * 2 * dim + d] + mj * a[p * 2 * dim + dim + d]) / (mi + mj);
-      a[p * 2 * dim + d] = a[p * 2 * dim + dim + d] = mean;
+      double momentum = 0;
+      for (PetscInt k = first; k < end; ++k) momentum += tie->mass[k] * PetscRealPart(a[k * dim + d]);
+      for (PetscInt k = first; k < end; ++k) a[k * dim + d] = momentum / total;
     }
   }
-  PetscCall(VecRestoreArray(tie->pair_values, &a));
-  PetscCall(VecScatterBegin(tie->scatter, tie->pair_values, accel, INSERT_VALUES, SCATTER_REVERSE));
-  PetscCall(VecScatterEnd(tie->scatter, tie->pair_values, accel, INSERT_VALUES, SCATTER_REVERSE));
+  PetscCall(VecRestoreArray(tie->node_values, &a));
+  PetscCall(VecScatterBegin(tie->scatter, tie->node_values, accel, INSERT_VALUES, SCATTER_REVERSE));
+  PetscCall(VecScatterEnd(tie->scatter, tie->node_values, accel, INSERT_VALUES, SCATTER_REVERSE));
   PetscFunctionReturn(0);
 }
 
@@ -162,7 +177,7 @@ PetscErrorCode LateralTieDestroy(LateralTie **tie) {
   PetscFunctionBeginUser;
   if (!*tie) PetscFunctionReturn(0);
   PetscCall(VecScatterDestroy(&(*tie)->scatter));
-  PetscCall(VecDestroy(&(*tie)->pair_values));
+  PetscCall(VecDestroy(&(*tie)->node_values));
   delete *tie;
   *tie = nullptr;
   PetscFunctionReturn(0);

@@ -20,8 +20,7 @@
 #     (-pore_pressure_subcycle false; measured 2-5e-4, saturated_up_column.sh's unsplit errors
 #     are 3-6e-4), which checks the solution's absorbing base itself.
 #  2. The same column on hexahedra with free-field sides on all four sides against rollers
-#     (-constrain_components x,y). (Tied sides in both directions are no reference in 3D: a
-#     corner node belongs to two pairs, and the pairwise means do not tie all four.)
+#     (-constrain_components x,y).
 #  3. The saturated site of config/scenes/saturated_site.yaml (rock below 30 m of saturated
 #     sand, k = 1e-4 m/s) under its P wave: without gravity, where the default cavitation limit
 #     holds p at -100 kPa at up to 132 nodes at once; and with gravity, the water table at the

@@ -3,8 +3,11 @@
 // as in a periodic column. In the explicit scheme this is exact and costs nothing to solve:
 // both nodes get the mass-weighted mean of their accelerations, (m_i a_i + m_j a_j)/(m_i + m_j),
 // so if they start together they stay together, and the tie forces, equal and opposite on
-// nodes with equal velocities, do no work. The pairs may live on different ranks: a
-// VecScatter brings both nodes of each pair to the rank that owns the first.
+// nodes with equal velocities, do no work. A node tied in two directions (3D: the vertical
+// edges of a box tied left-right and front-back) joins the pairs it is in into one group, the
+// four corner nodes at its height, which take their group's mass-weighted mean. The nodes of a
+// group may live on different ranks: a VecScatter brings them to the rank that owns the
+// first.
 #pragma once
 #include <petscdmplex.h>
 
@@ -15,14 +18,15 @@
 namespace slipwave::input {
 
 struct LateralTie {
-  VecScatter          scatter = nullptr;
-  Vec                 pair_values = nullptr; // 2*dim per pair: node i then node j
-  std::vector<double> mass;                  // 2 per pair
-  PetscInt            dim = 0, npairs = 0, npairs_global = 0;
+  VecScatter            scatter = nullptr;
+  Vec                   node_values = nullptr; // dim per node of this rank's groups, group after group
+  std::vector<double>   mass;                  // per node
+  std::vector<PetscInt> group_start;           // group g holds nodes group_start[g] .. group_start[g+1]-1
+  PetscInt              dim = 0;
 };
 
 PetscErrorCode LateralTieCreate(DM dm, const BoundaryConditions &bc, Vec mass, LateralTie **tie);
-// Replaces the accelerations of tied nodes by their pair's mass-weighted mean.
+// Replaces the accelerations of tied nodes by their group's mass-weighted mean.
 PetscErrorCode LateralTieApply(LateralTie *tie, Vec accel);
 PetscErrorCode LateralTieDestroy(LateralTie **tie);
 
