@@ -448,16 +448,17 @@ void setupDamping(const DrmSetting &m, Drm *d) {
   d->drive_trial = d->drive_committed;
 }
 
-// Saturated sites: refuses what the undrained free field cannot carry, and keeps each layer
-// element's undrained medium (lambda_u, mu, alpha, M; zeros in a dry element).
-PetscErrorCode setupPoreFluid(const DrmSetting &m, Drm *d) {
+// Saturated sites: refuses what the undrained free field cannot carry (before the layer is
+// built); setupPoreFluid keeps each layer element's undrained medium (lambda_u, mu, alpha, M;
+// zeros in a dry element).
+PetscErrorCode checkPoreFluid(const DrmSetting &m, const DrmOptions &o, Drm *d) {
   PetscFunctionBeginUser;
   if (!m.pore_fluid) PetscFunctionReturn(0);
   for (const DrmPoreFluid &f : *m.pore_fluid) d->saturated = d->saturated || f.M > 0;
   if (!d->saturated) PetscFunctionReturn(0);
-  PetscCheck(d->file.empty(), m.comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(o.file.empty(), m.comm, PETSC_ERR_USER_INPUT,
              "-drm_free_field_file = %s with a saturated region (-material_<r>_saturated): not supported (the file has no pore pressure); allowed: the plane wave (-drm_wave, -drm_stf)",
-             d->file.c_str());
+             o.file.c_str());
   // The solver damps the skeleton only (beta K, its constant-Q memory), not the fluid's
   // alpha^2 M, so the damped site's complex undrained modulus is not (lambda + alpha^2 M)(1 + i w beta).
   PetscCheck(m.rayleigh.alpha == 0 && m.rayleigh.beta == 0, m.comm, PETSC_ERR_USER_INPUT,
@@ -467,6 +468,11 @@ PetscErrorCode setupPoreFluid(const DrmSetting &m, Drm *d) {
     PetscCheck((*m.pore_fluid)[r].M == 0 || m.materials[r].damping_ratio == 0, m.comm, PETSC_ERR_USER_INPUT,
                "-material_%s_damping_ratio = %g with -material_%s_saturated and -input_method drm: not supported yet; allowed: 0 in saturated regions", m.materials[r].region.c_str(),
                m.materials[r].damping_ratio, m.materials[r].region.c_str());
+  PetscFunctionReturn(0);
+}
+
+void setupPoreFluid(const DrmSetting &m, Drm *d) {
+  if (!d->saturated) return;
   for (PetscInt e : d->elements) {
     const PetscInt            r = m.bulk.elementRegion(e);
     const DrmPoreFluid        f = (*m.pore_fluid)[r];
@@ -475,7 +481,6 @@ PetscErrorCode setupPoreFluid(const DrmSetting &m, Drm *d) {
     else d->element_fluid.insert(d->element_fluid.end(), 4, 0.0);
   }
   d->p0.assign(d->elements.size() * m.bulk.nodesPerElement(), 0.0);
-  PetscFunctionReturn(0);
 }
 
 // The run report's lines: the wave (or the file), the layer, the site.
@@ -539,6 +544,7 @@ PetscErrorCode DrmCreate(const DrmSetting &m, Drm **out) {
   }
   PetscCheck(m.input_wave == InputWave::None, comm, PETSC_ERR_USER_INPUT,
              "-input_wave = %s with -input_method drm; allowed: -input_wave none (DRM brings the wave in through its layer, -drm_wave)", inputWaveName(m.input_wave));
+  PetscCall(checkPoreFluid(m, o, d));
   d->wave    = (physics::PlaneWaveType)o.wave;
   d->angle   = std::fabs(o.angle);
   d->azimuth = dim == 2 ? (o.angle < 0 ? 180 : 0) : o.azimuth;
@@ -577,7 +583,7 @@ PetscErrorCode DrmCreate(const DrmSetting &m, Drm **out) {
 
   PetscCall(countNodes(m, d, b_flag, &counts[1]));
   setupDamping(m, d);
-  PetscCall(setupPoreFluid(m, d));
+  setupPoreFluid(m, d);
   PetscCall(report(m, d, o, counts, site, site_regions));
   *out = d;
   PetscFunctionReturn(0);
