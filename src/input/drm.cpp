@@ -456,6 +456,10 @@ PetscErrorCode checkPoreFluid(const DrmSetting &m, const DrmOptions &o, Drm *d) 
   if (!m.pore_fluid) PetscFunctionReturn(0);
   for (const DrmPoreFluid &f : *m.pore_fluid) d->saturated = d->saturated || f.M > 0;
   if (!d->saturated) PetscFunctionReturn(0);
+  // The u-p layer terms (porous/pore_pressure_drm.cpp) use the pore pressure's stored cell
+  // matrices, which exist at degree 1 only.
+  PetscCheck(m.bulk.degree() == 1, m.comm, PETSC_ERR_USER_INPUT,
+             "-element_degree = %" PetscInt_FMT " with -input_method drm and a saturated region: not supported yet; allowed: -element_degree 1", m.bulk.degree());
   PetscCheck(o.file.empty(), m.comm, PETSC_ERR_USER_INPUT,
              "-drm_free_field_file = %s with a saturated region (-material_<r>_saturated): not supported (the file has no pore pressure); allowed: the plane wave (-drm_wave, -drm_stf)",
              o.file.c_str());
