@@ -19,7 +19,7 @@ namespace slipwave::app {
 namespace {
 
 constexpr PetscInt kMagic   = 0x53574350; // "SWCP"
-constexpr PetscInt kVersion = 14; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
+constexpr PetscInt kVersion = 15; // 2: ledger with `anelastic`, attenuation memory; 3: and `contact_damped`;
                                  // 4: state only (no RHS force parts, no attenuation trial);
                                  // 5: the scene options after the header, a seal at the end;
                                  // 6: the pore pressure state and the ledger's fluid terms;
@@ -37,6 +37,7 @@ constexpr PetscInt kVersion = 14; // 2: ledger with `anelastic`, attenuation mem
                                  // 13: each interface pair's sigma* (the friction lag's normal traction)
                                  // 14: a free-field column beside saturated soil appends its pore
                                  //    pressure state (p, alpha Q u, cavities)
+                                 // 15: DRM on a saturated site appends its pore pressure terms (G, r, W)
 constexpr PetscInt kHeader  = 10;
 
 // The ledger as a flat array, in a fixed order.
@@ -73,10 +74,14 @@ std::vector<Vec> stateVectors(const CheckpointState &s) {
 // The committed pore pressure state of a saturated scene (porous/pore_pressure.hpp): p_n,
 // alpha Q u_n (the reference of the next strain increment), H p_n (the first diffusion
 // sub-step of the next step), the step before's mean H p (the ledger's Darcy term) and the
-// cavities' volumes.
+// cavities' volumes; with DRM its committed G, r and the last step's volume source W
+// (porous/pore_pressure_drm.hpp).
 std::vector<Vec> poreStateVectors(const CheckpointState &s) {
   const porous::PorePressure *pore = s.model->pore;
-  return pore ? std::vector<Vec>{pore->p, pore->Qu, pore->Hp, pore->Hbar_previous, pore->cavity} : std::vector<Vec>{};
+  if (!pore) return {};
+  std::vector<Vec> x{pore->p, pore->Qu, pore->Hp, pore->Hbar_previous, pore->cavity};
+  if (pore->drm_source) x.insert(x.end(), {pore->drm_volume, pore->drm_flow, pore->drm_source_previous});
+  return x;
 }
 
 // A Vec holding `values` on this rank (its layout defines what a restart must reproduce).

@@ -8,6 +8,7 @@
 #include "slipwave/core/option_choice.hpp"
 #include "slipwave/input/drm_field_file.hpp"
 #include "slipwave/medium/attenuation.hpp"
+#include "slipwave/physics/biot.hpp"
 #include "slipwave/physics/plane_wave_layered.hpp"
 
 namespace slipwave::input {
@@ -37,7 +38,13 @@ struct Drm {
   std::string                 file;                       // -drm_free_field_file, or "" for the plane wave
   FieldFileHistories          file_histories;
   bool                        synthesized = false;
-  std::vector<double>         u0;                         // dim per DRM node, at the current time
+  std::vector<double>         u0;                         // dim per DRM node, at field_time
+  // Saturated sites: per layer element its undrained medium (lambda_u, mu, alpha, M; M = 0 in
+  // a dry element), and p0 per element node at field_time.
+  bool                        saturated = false;
+  std::vector<double>         element_fluid, p0;
+  double                      field_time = 0;
+  bool                        field_valid = false;
   // Damping of the forces (docs/drm.md, "Damped sites"): the stiffness-proportional Rayleigh
   // term beta K v0 with the solver's half-step velocity, and the constant-Q memory of each
   // layer element's rows, both from the committed state (the last accepted step), as the
@@ -185,7 +192,8 @@ bool verticalCrossing(const fem::BulkOperator &bulk, PetscInt c, const double *x
 bool sameMedium(const DrmSetting &m, PetscInt a, PetscInt b) {
   const physics::ElasticMaterial &x = m.materials[a].elastic, &y = m.materials[b].elastic;
   const bool same_q = !m.attenuation || (m.materials[a].damping_ratio == m.materials[b].damping_ratio && m.attenuation->region_factor[a] == m.attenuation->region_factor[b]);
-  return x.rho == y.rho && x.vp == y.vp && x.vs == y.vs && same_q;
+  const bool same_fluid = !m.pore_fluid || ((*m.pore_fluid)[a].alpha == (*m.pore_fluid)[b].alpha && (*m.pore_fluid)[a].M == (*m.pore_fluid)[b].M);
+  return x.rho == y.rho && x.vp == y.vp && x.vs == y.vs && same_q && same_fluid;
 }
 
 // How the discrete model damps region r: the global Rayleigh coefficients and the region's
@@ -244,7 +252,8 @@ PetscErrorCode siteFromMesh(MPI_Comm comm, const DrmSetting &m, double *surface,
   }
   *site = physics::LayeredSite{};
   for (size_t j = 0; j < site_regions->size(); ++j) {
-    site->materials.push_back(m.materials[(*site_regions)[j]].elastic);
+    // A saturated layer carries the undrained wave: its P modulus holds alpha^2 M.
+    site->materials.push_back(medium::boundaryElastic(m.materials[(*site_regions)[j]]));
     site->damping.push_back(regionDamping(m, (*site_regions)[j]));
     if (j + 1 < site_regions->size()) site->thickness.push_back(tops[j + 1] - tops[j]);
   }
@@ -439,6 +448,45 @@ void setupDamping(const DrmSetting &m, Drm *d) {
   d->drive_trial = d->drive_committed;
 }
 
+// Saturated sites: refuses what the undrained free field cannot carry (before the layer is
+// built); setupPoreFluid keeps each layer element's undrained medium (lambda_u, mu, alpha, M;
+// zeros in a dry element).
+PetscErrorCode checkPoreFluid(const DrmSetting &m, const DrmOptions &o, Drm *d) {
+  PetscFunctionBeginUser;
+  if (!m.pore_fluid) PetscFunctionReturn(0);
+  for (const DrmPoreFluid &f : *m.pore_fluid) d->saturated = d->saturated || f.M > 0;
+  if (!d->saturated) PetscFunctionReturn(0);
+  // The u-p layer terms (porous/pore_pressure_drm.cpp) use the pore pressure's stored cell
+  // matrices, which exist at degree 1 only.
+  PetscCheck(m.bulk.degree() == 1, m.comm, PETSC_ERR_USER_INPUT,
+             "-element_degree = %" PetscInt_FMT " with -input_method drm and a saturated region: not supported yet; allowed: -element_degree 1", m.bulk.degree());
+  PetscCheck(o.file.empty(), m.comm, PETSC_ERR_USER_INPUT,
+             "-drm_free_field_file = %s with a saturated region (-material_<r>_saturated): not supported (the file has no pore pressure); allowed: the plane wave (-drm_wave, -drm_stf)",
+             o.file.c_str());
+  // The solver damps the skeleton only (beta K, its constant-Q memory), not the fluid's
+  // alpha^2 M, so the damped site's complex undrained modulus is not (lambda + alpha^2 M)(1 + i w beta).
+  PetscCheck(m.rayleigh.alpha == 0 && m.rayleigh.beta == 0, m.comm, PETSC_ERR_USER_INPUT,
+             "-damping_ratio > 0 (Rayleigh alpha %g 1/s, beta %g s) with -input_method drm and a saturated region: not supported yet; allowed: -damping_ratio 0", m.rayleigh.alpha,
+             m.rayleigh.beta);
+  for (size_t r = 0; r < m.materials.size(); ++r)
+    PetscCheck((*m.pore_fluid)[r].M == 0 || m.materials[r].damping_ratio == 0, m.comm, PETSC_ERR_USER_INPUT,
+               "-material_%s_damping_ratio = %g with -material_%s_saturated and -input_method drm: not supported yet; allowed: 0 in saturated regions", m.materials[r].region.c_str(),
+               m.materials[r].damping_ratio, m.materials[r].region.c_str());
+  PetscFunctionReturn(0);
+}
+
+void setupPoreFluid(const DrmSetting &m, Drm *d) {
+  if (!d->saturated) return;
+  for (PetscInt e : d->elements) {
+    const PetscInt            r = m.bulk.elementRegion(e);
+    const DrmPoreFluid        f = (*m.pore_fluid)[r];
+    const physics::LameParameters lm = physics::lame(medium::boundaryElastic(m.materials[r]));
+    if (f.M > 0) d->element_fluid.insert(d->element_fluid.end(), {lm.lambda, lm.mu, f.alpha, f.M});
+    else d->element_fluid.insert(d->element_fluid.end(), 4, 0.0);
+  }
+  d->p0.assign(d->elements.size() * m.bulk.nodesPerElement(), 0.0);
+}
+
 // The run report's lines: the wave (or the file), the layer, the site.
 PetscErrorCode report(const DrmSetting &m, Drm *d, const DrmOptions &o, const PetscInt counts[3], const physics::LayeredSite &site,
                       const std::vector<PetscInt> &site_regions) {
@@ -476,6 +524,8 @@ PetscErrorCode report(const DrmSetting &m, Drm *d, const DrmOptions &o, const Pe
     layers += one;
   }
   d->report.push_back("    DRM free-field site (the mesh's first column): " + layers);
+  if (d->saturated)
+    d->report.push_back("    DRM on a saturated site: the undrained free field (vp of a saturated layer is its undrained one, p0 = -alpha M eps_v), the forces of the u-p operator (docs/drm.md)");
   if (m.rayleigh.alpha > 0 || m.rayleigh.beta > 0 || m.attenuation)
     d->report.push_back("    DRM damped as the model: the free field with complex moduli per frequency, the forces with the layer's damping terms (docs/drm.md)");
   PetscFunctionReturn(0);
@@ -498,6 +548,7 @@ PetscErrorCode DrmCreate(const DrmSetting &m, Drm **out) {
   }
   PetscCheck(m.input_wave == InputWave::None, comm, PETSC_ERR_USER_INPUT,
              "-input_wave = %s with -input_method drm; allowed: -input_wave none (DRM brings the wave in through its layer, -drm_wave)", inputWaveName(m.input_wave));
+  PetscCall(checkPoreFluid(m, o, d));
   d->wave    = (physics::PlaneWaveType)o.wave;
   d->angle   = std::fabs(o.angle);
   d->azimuth = dim == 2 ? (o.angle < 0 ? 180 : 0) : o.azimuth;
@@ -536,6 +587,7 @@ PetscErrorCode DrmCreate(const DrmSetting &m, Drm **out) {
 
   PetscCall(countNodes(m, d, b_flag, &counts[1]));
   setupDamping(m, d);
+  setupPoreFluid(m, d);
   PetscCall(report(m, d, o, counts, site, site_regions));
   *out = d;
   PetscFunctionReturn(0);
@@ -567,7 +619,7 @@ PetscErrorCode synthesize(Drm *d, TS ts) {
   const size_t m     = (size_t)std::ceil(t_end / dt) + 2;
   std::vector<double> v_in(m);
   for (size_t k = 0; k < m; ++k) v_in[k] = d->incident.velocity(k * dt);
-  d->histories   = physics::synthesizeHistories(d->field, d->depths, d->reference_depth, v_in, dt);
+  d->histories   = physics::synthesizeHistories(d->field, d->depths, d->reference_depth, v_in, dt, d->saturated);
   d->synthesized = true;
   PetscFunctionReturn(0);
 }
@@ -582,7 +634,42 @@ void planeWaveDisplacements(Drm *d, PetscInt dim, double t) {
   }
 }
 
+// p0 of the undrained plane wave at every node of the layer's saturated elements, each with its
+// element's medium (sigma_zz and eps_xx are continuous across the layers, eps_v is not).
+void undrainedPressures(Drm *d, PetscInt nen, double t) {
+  for (size_t ei = 0; ei < d->elements.size(); ++ei) {
+    const double *f = &d->element_fluid[4 * ei];
+    for (PetscInt a = 0; a < nen; ++a) {
+      const size_t k = d->element_node[ei * nen + a];
+      const double s = physics::planeWaveDisplacementAt(d->histories, d->node_depth[k], 3, t - d->node_delay[k]);
+      const double e = physics::planeWaveDisplacementAt(d->histories, d->node_depth[k], 4, t - d->node_delay[k]);
+      d->p0[ei * nen + a] = f[3] > 0 ? physics::undrainedPlaneWavePressure(s, e, f[0], f[1], f[2], f[3]) : 0.0;
+    }
+  }
+}
+
 } // namespace
+
+PetscErrorCode DrmFreeFieldUpdate(Drm *d, const DrmSetting &m, TS ts, PetscReal t) {
+  const PetscInt dim = m.dim;
+  PetscFunctionBeginUser;
+  if (d->field_valid && d->field_time == t) PetscFunctionReturn(0);
+  if (!d->file.empty()) {
+    for (size_t k = 0; k < d->node_offset.size(); ++k)
+      for (PetscInt i = 0; i < dim; ++i) d->u0[dim * k + i] = FieldFileDisplacement(d->file_histories, k, (int)i, t);
+  } else {
+    if (!d->synthesized) PetscCall(synthesize(d, ts));
+    planeWaveDisplacements(d, dim, t);
+    if (d->saturated) undrainedPressures(d, m.bulk.nodesPerElement(), t);
+  }
+  d->field_time  = t;
+  d->field_valid = true;
+  PetscFunctionReturn(0);
+}
+
+DrmLayer DrmLayerOf(const Drm *d) { return {d->elements, d->element_node, d->element_node_is_b, d->u0, d->p0, d->field_time}; }
+
+bool DrmSaturated(const Drm *d) { return d && d->saturated; }
 
 PetscErrorCode DrmAddForce(Drm *d, const DrmSetting &m, TS ts, PetscReal t, Vec f) {
   constexpr int  kMaxMechanisms = 8;
@@ -594,13 +681,7 @@ PetscErrorCode DrmAddForce(Drm *d, const DrmSetting &m, TS ts, PetscReal t, Vec 
   PetscCheck(t >= t_committed, PETSC_COMM_SELF, PETSC_ERR_ORDER, "DRM: force asked at t = %g s, before the committed state at %g s", (double)t, t_committed);
   d->trial_time = t;
   d->has_trial  = true;
-  if (!d->file.empty()) {
-    for (size_t k = 0; k < d->node_offset.size(); ++k)
-      for (PetscInt i = 0; i < dim; ++i) d->u0[dim * k + i] = FieldFileDisplacement(d->file_histories, k, (int)i, t);
-  } else {
-    if (!d->synthesized) PetscCall(synthesize(d, ts));
-    planeWaveDisplacements(d, dim, t);
-  }
+  PetscCall(DrmFreeFieldUpdate(d, m, ts, t));
   // The solver's stiffness-proportional damping uses v_{n+1/2} = (u_{n+1} - u_n)/h, so the free
   // field's is the same difference of u0; at the first call (t_0, where the solver uses v_0)
   // the free field is at rest.
@@ -681,6 +762,7 @@ bool DrmSetState(Drm *d, const std::vector<double> &s) {
   d->started        = s[0] != 0;
   d->committed_time = s[1];
   d->has_trial      = false;
+  d->field_valid    = false;
   size_t o          = 2;
   for (std::vector<double> *x : {&d->u0_committed, &d->memory_committed, &d->drive_committed}) {
     std::copy(s.begin() + o, s.begin() + o + x->size(), x->begin());

@@ -26,6 +26,11 @@ double undrainedPWaveSpeed(double K_drained, double G, double alpha, double M, d
   return std::sqrt((K_drained + 4.0 * G / 3.0 + alpha * alpha * M) / rho);
 }
 
+double undrainedPlaneWavePressure(double sigma_zz, double eps_xx, double lambda_undrained, double mu, double alpha, double M) {
+  const double eps_zz = (sigma_zz - lambda_undrained * eps_xx) / (lambda_undrained + 2.0 * mu);
+  return -alpha * M * (eps_xx + eps_zz);
+}
+
 double consolidationCoefficient(double K_drained, double G, double alpha, double M, double kappa) {
   return kappa / (1.0 / M + alpha * alpha / (K_drained + 4.0 * G / 3.0));
 }

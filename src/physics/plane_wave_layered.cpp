@@ -157,8 +157,8 @@ PlaneWaveLayered::State PlaneWaveLayered::stateAt(const std::vector<Complex> &am
 }
 
 PlaneWaveHistories synthesizeHistories(const PlaneWaveLayered &field, const std::vector<double> &depths, double reference_depth, const std::vector<double> &v_in,
-                                       double dt) {
-  const size_t m = v_in.size(), n = numerics::fftLength(4 * std::max<size_t>(m, 1));
+                                       double dt, bool with_strain) {
+  const size_t m = v_in.size(), n = numerics::fftLength(4 * std::max<size_t>(m, 1)), nc = with_strain ? 5 : 3;
   std::vector<Complex> input(n, 0.0);
   std::copy(v_in.begin(), v_in.end(), input.begin());
   numerics::fft(input, false);
@@ -166,7 +166,7 @@ PlaneWaveHistories synthesizeHistories(const PlaneWaveLayered &field, const std:
   // is e^{i w q (zr - zN)} (up-going), so dividing by it puts v_in at the reference depth.
   const double  shift = reference_depth - field.halfspaceDepth();
   const size_t  nd    = depths.size();
-  std::vector<std::vector<Complex>> out(3 * nd, std::vector<Complex>(n, 0.0));
+  std::vector<std::vector<Complex>> out(nc * nd, std::vector<Complex>(n, 0.0));
   for (size_t j = 0; j <= n / 2; ++j) {
     const double               w   = 2 * M_PI * (double)j / ((double)n * dt);
     const std::vector<Complex> amp = field.amplitudes(w);
@@ -174,24 +174,30 @@ PlaneWaveHistories synthesizeHistories(const PlaneWaveLayered &field, const std:
     const Complex              ref  = std::exp(Complex(0, -w) * q_hs * shift);
     for (size_t d = 0; d < nd; ++d) {
       const PlaneWaveLayered::State st = field.stateAt(amp, w, depths[d]);
-      for (size_t c = 0; c < 3; ++c) {
-        const Complex y = input[j] * st.u[c] * ref;
+      // Per unit incident velocity: the velocity is st.u; the traction is -i w st.traction
+      // times the displacement v/(i w), so sigma_zz = -traction_z v; eps_xx = -i w p u_x =
+      // -p v_x. Their channels hold the rates, i w times those, whose integral is the value.
+      const Complex rate(0, w);
+      const Complex transfer[5] = {st.u[0], st.u[1], st.u[2], -rate * st.traction[2], -rate * field.horizontalSlowness() * st.u[0]};
+      for (size_t c = 0; c < nc; ++c) {
+        const Complex y = input[j] * transfer[c] * ref;
         if (j == 0 || 2 * j == n) {
-          out[3 * d + c][j] = y.real(); // real input: the transfer is real at w = 0; at Nyquist (complex when damped) its real part is kept
+          out[nc * d + c][j] = y.real(); // real input: the transfer is real at w = 0; at Nyquist (complex when damped) its real part is kept
         } else {
-          out[3 * d + c][j]     = y;
-          out[3 * d + c][n - j] = std::conj(y);
+          out[nc * d + c][j]     = y;
+          out[nc * d + c][n - j] = std::conj(y);
         }
       }
     }
   }
   PlaneWaveHistories h;
-  h.samples = m;
-  h.dt      = dt;
-  h.velocity.resize(3 * nd * m);
-  h.displacement.resize(3 * nd * m);
+  h.samples  = m;
+  h.channels = nc;
+  h.dt       = dt;
+  h.velocity.resize(nc * nd * m);
+  h.displacement.resize(nc * nd * m);
   std::vector<Complex> accel(n);
-  for (size_t k = 0; k < 3 * nd; ++k) {
+  for (size_t k = 0; k < nc * nd; ++k) {
     // The acceleration by the spectral derivative i w, for the end correction below.
     for (size_t j = 0; j < n; ++j) {
       const double w = 2 * M_PI * (double)(j <= n / 2 ? (long)j : (long)j - (long)n) / ((double)n * dt);
@@ -211,7 +217,7 @@ PlaneWaveHistories synthesizeHistories(const PlaneWaveLayered &field, const std:
 
 double planeWaveDisplacementAt(const PlaneWaveHistories &h, size_t d, size_t c, double t) {
   if (t <= 0 || h.samples == 0) return 0;
-  const double *u = &h.displacement[(d * 3 + c) * h.samples], *v = &h.velocity[(d * 3 + c) * h.samples];
+  const double *u = &h.displacement[(d * h.channels + c) * h.samples], *v = &h.velocity[(d * h.channels + c) * h.samples];
   const double  s = t / h.dt;
   if (s >= (double)(h.samples - 1)) return u[h.samples - 1];
   const size_t k = (size_t)s;

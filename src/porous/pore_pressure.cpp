@@ -598,7 +598,7 @@ PetscErrorCode PorePressureDestroy(PorePressure **pore) {
   if (!*pore) PetscFunctionReturn(0);
   PorePressure *pp = *pore;
   for (Vec *v : {&pp->storage, &pp->inv_storage, &pp->free_mask, &pp->inflow, &pp->p, &pp->p_trial, &pp->Qu, &pp->Qu_trial, &pp->p_star, &pp->Hbar, &pp->Hbar_trial, &pp->Hbar_previous, &pp->Hp, &pp->Hp_trial, &pp->p_hydrostatic, &pp->p_total, &pp->p_total_trial, &pp->at_water_table, &pp->sealed_free_mask, &pp->sealed_inv_storage,
-                 &pp->cavity, &pp->cavity_trial, &pp->node_coordinates[0], &pp->node_coordinates[1], &pp->node_coordinates[2], &pp->node_volume, &pp->cavity_fraction, &pp->p_local, &pp->q_local})
+                 &pp->cavity, &pp->cavity_trial, &pp->drm_volume, &pp->drm_volume_trial, &pp->drm_flow, &pp->drm_flow_trial, &pp->drm_source, &pp->drm_source_previous, &pp->node_coordinates[0], &pp->node_coordinates[1], &pp->node_coordinates[2], &pp->node_volume, &pp->cavity_fraction, &pp->p_local, &pp->q_local})
     PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&pp->pdm));
   delete pp;
@@ -621,15 +621,17 @@ PetscErrorCode PorePressureTrial(PorePressure *pp, DM dm, const PetscScalar *u, 
     pp->t       = t;
     pp->started = true;
   }
-  // p_{n+1} = p* - S^{-1} [alpha Q (u_{n+1} - u_n) - h q] on free nodes; 0 elsewhere.
+  // p_{n+1} = p* - S^{-1} [alpha Q (u_{n+1} - u_n) - h q - W] on free nodes; 0 elsewhere (W:
+  // the DRM's volume source, porous/pore_pressure_drm.hpp; none without DRM).
   const double h = t - pp->t;
   PetscCall(diffuse(pp, h));
   PetscCall(VecCopy(pp->Hbar, pp->Hbar_trial));
   {
     PetscInt           n;
     PetscScalar       *pt;
-    const PetscScalar *ps, *qt, *qc, *in, *inv, *mask;
+    const PetscScalar *ps, *qt, *qc, *in, *inv, *mask, *w = nullptr;
     PetscCall(VecGetLocalSize(pp->p, &n));
+    if (pp->drm_source) PetscCall(VecGetArrayRead(pp->drm_source, &w));
     PetscCall(VecGetArray(pp->p_trial, &pt));
     PetscCall(VecGetArrayRead(pp->p_star, &ps));
     PetscCall(VecGetArrayRead(pp->Qu_trial, &qt));
@@ -637,7 +639,8 @@ PetscErrorCode PorePressureTrial(PorePressure *pp, DM dm, const PetscScalar *u, 
     PetscCall(VecGetArrayRead(pp->inflow, &in));
     PetscCall(VecGetArrayRead(pp->inv_storage, &inv));
     PetscCall(VecGetArrayRead(pp->free_mask, &mask));
-    for (PetscInt i = 0; i < n; ++i) pt[i] = mask[i] * (ps[i] - inv[i] * ((qt[i] - qc[i]) - h * in[i]));
+    for (PetscInt i = 0; i < n; ++i) pt[i] = mask[i] * (ps[i] - inv[i] * ((qt[i] - qc[i]) - h * in[i] - (w ? w[i] : 0.0)));
+    if (w) PetscCall(VecRestoreArrayRead(pp->drm_source, &w));
     if (pp->cavitation) {
       // The floor on free nodes (a drained node holds p = 0 and no cavity: water fills it).
       PetscScalar       *vt;
@@ -740,6 +743,11 @@ PetscErrorCode PorePressureCommit(PorePressure *pp) {
   std::swap(pp->Qu, pp->Qu_trial);
   std::swap(pp->Hbar_previous, pp->Hbar_trial);
   std::swap(pp->Hp, pp->Hp_trial);
+  if (pp->drm_source) {
+    std::swap(pp->drm_volume, pp->drm_volume_trial);
+    std::swap(pp->drm_flow, pp->drm_flow_trial);
+    std::swap(pp->drm_source_previous, pp->drm_source);
+  }
   pp->t          = pp->t_trial;
   pp->diffused_h = -1;
   PetscFunctionReturn(0);
@@ -881,9 +889,10 @@ PetscErrorCode PorePressureEnergy(PorePressure *pp, DM dm, PetscReal h, Vec v, V
   PetscFunctionBeginUser;
   // Local sums, reduced once: 0 v_{n+1/2} . f_pore, 1 v_n . f_pore on held dofs, 2 p S p,
   // 3 p . Hbar_n, 4 p . Hbar_{n-1}, 5 p . q, 6 nodes held this step with p_n != 0, 7 the work
-  // on the cavities in the step that led to t_n, 8 the nodes with a cavity at t_n.
+  // on the cavities in the step that led to t_n, 8 the nodes with a cavity at t_n, 9 p . W_{n+1/2},
+  // 10 p . W_{n-1/2} (DRM's volume source, free nodes).
   PetscCall(diffuse(pp, h)); // Hbar_n of the step about to be taken
-  double s[9] = {0, 0, 0, 0, 0, 0, 0, pp->cavity_work_step, (double)pp->cavities_local};
+  double s[11] = {0, 0, 0, 0, 0, 0, 0, pp->cavity_work_step, (double)pp->cavities_local, 0, 0};
   pp->cavity_work_step = 0; // booked once
   {
     PetscInt           n;
@@ -919,6 +928,17 @@ PetscErrorCode PorePressureEnergy(PorePressure *pp, DM dm, PetscReal h, Vec v, V
       s[5] += PetscRealPart(p[k] * q[k]);
       if (PetscRealPart(mask[k]) == 0 && p[k] != 0.0) s[6] += 1;
     }
+    if (pp->drm_source) {
+      const PetscScalar *w, *wp;
+      PetscCall(VecGetArrayRead(pp->drm_source, &w));
+      PetscCall(VecGetArrayRead(pp->drm_source_previous, &wp));
+      for (PetscInt k = 0; k < n; ++k) {
+        s[9] += PetscRealPart(mask[k] * p[k] * w[k]);
+        s[10] += PetscRealPart(mask[k] * p[k] * wp[k]);
+      }
+      PetscCall(VecRestoreArrayRead(pp->drm_source_previous, &wp));
+      PetscCall(VecRestoreArrayRead(pp->drm_source, &w));
+    }
     PetscCall(VecRestoreArrayRead(pp->free_mask, &mask));
     PetscCall(VecRestoreArrayRead(pp->inflow, &q));
     PetscCall(VecRestoreArrayRead(pp->Hbar_previous, &hq));
@@ -926,7 +946,7 @@ PetscErrorCode PorePressureEnergy(PorePressure *pp, DM dm, PetscReal h, Vec v, V
     PetscCall(VecRestoreArrayRead(pp->storage, &S));
     PetscCall(VecRestoreArrayRead(pp->p, &p));
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 9, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)v)));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 11, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)v)));
   // The storage identity with cavities: S (p_{n+1} - p_n) gains V_{n+1} - V_n, so the shadow
   // energy below (written without them) changes by -cavityWork more than the terms it books;
   // the ledger books the cavities' work beside the Darcy dissipation.
@@ -937,9 +957,10 @@ PetscErrorCode PorePressureEnergy(PorePressure *pp, DM dm, PetscReal h, Vec v, V
     if (pp->cavitation_first < 0) pp->cavitation_first = pp->t;
     pp->cavitation_last = pp->t;
   }
-  // S p_{n+1} = S p_n - h alpha Q v_{n+1/2} - h (Hbar_n - q) on free nodes, p = 0 on the
-  // others, and p_n . alpha Q v = v . alpha Q^T p_n = v . f_pore.
-  e->storage    = 0.5 * (s[2] - h * s[0] - h * s[3] + h * s[5]);
+  // S p_{n+1} = S p_n - h alpha Q v_{n+1/2} - h (Hbar_n - q) + W_{n+1/2} on free nodes, p = 0
+  // on the others, and p_n . alpha Q v = v . alpha Q^T p_n = v . f_pore.
+  e->storage    = 0.5 * (s[2] - h * s[0] - h * s[3] + h * s[5] + s[9]);
+  e->drm_input  = 0.5 * (s[9] + s[10]);
   e->darcy      = 0.5 * h * (s[3] + s[4]);
   if (s[6] > 0) {
     // Nodes drained from this step on while holding p_n (a gap opened over them): the sums

@@ -19,6 +19,7 @@
 #include "slipwave/mesh/cell_quality_check.hpp"
 #include "slipwave/numerics/gll_basis.hpp"
 #include "slipwave/porous/pore_pressure.hpp"
+#include "slipwave/porous/pore_pressure_drm.hpp"
 #include "slipwave/problem/nodal_acceleration.hpp"
 #include "slipwave/problem/rigid_bodies.hpp"
 #include "slipwave/time/central_difference.hpp"
@@ -26,8 +27,8 @@
 namespace slipwave::problem {
 namespace {
 
-input::DrmSetting drmSetting(const Elastodynamics &m) {
-  return {m.comm, m.dm, m.dim, m.mesh.regions, m.materials, m.bulk, m.rayleigh, m.attenuation, m.bc.input_wave};
+input::DrmSetting drmSetting(const Elastodynamics &m, const std::vector<input::DrmPoreFluid> *pore_fluid = nullptr) {
+  return {m.comm, m.dm, m.dim, m.mesh.regions, m.materials, m.bulk, m.rayleigh, m.attenuation, m.bc.input_wave, pore_fluid};
 }
 
 // What the free-field columns take from the pore pressure (input/free_field.hpp).
@@ -249,7 +250,11 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscCall(assembleDampingBlocks(m));
   PetscCall(RigidBodiesCreate(m->dm, m->bulk, m->materials, m->bc, m->mass, &m->rigid));
   PetscCall(input::LateralTieCreate(m->dm, m->bc, m->mass, &m->tie));
-  PetscCall(input::DrmCreate(drmSetting(*m), &m->drm));
+  {
+    std::vector<input::DrmPoreFluid> fluid;
+    for (const porous::SaturatedRegion &r : saturated) fluid.push_back({r.alpha, r.saturated ? r.M : 0.0});
+    PetscCall(input::DrmCreate(drmSetting(*m, any_saturated ? &fluid : nullptr), &m->drm));
+  }
   PetscCall(VecDuplicate(m->mass, &m->f_internal));
   PetscCall(VecDuplicate(m->mass, &m->f_external));
   PetscCall(VecDuplicate(m->mass, &m->f_input));
@@ -270,9 +275,8 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   }
   PetscCall(createInterfaces(m));
   if (any_saturated) {
-    // Not yet: the DRM free field and its layer forces are those of a dry (one-phase) site.
-    PetscCheck(!m->drm, comm, PETSC_ERR_USER_INPUT, "-input_method drm with a saturated region (-material_<r>_saturated): not supported yet; allowed: -input_method base");
     PetscCall(porous::PorePressureCreate(m->dm, m->bulk, m->mesh.boundaries, std::move(saturated), m->bc.gravity, m->bc.gravity_direction, &m->pore));
+    if (m->drm) PetscCall(porous::PorePressureDrmCreate(m->pore, m->drm, m->bulk));
     PetscCall(porous::PorePressureAddHydrostaticForce(m->pore, m->dm, m->bc.constant_force));
     // Interfaces on saturated soil: their fluid condition, and the law in effective stress.
     for (auto &iface : m->interfaces)
@@ -344,6 +348,7 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   // excess pore pressure stays zero.
   if (m->pore && m->input_enabled) {
     const PetscScalar *ul;
+    PetscCall(ElastodynamicsDrmPoreSource(m, ts, t));
     PetscCall(VecGetArrayRead(m->u_local, &ul));
     PetscCall(porous::PorePressureTrial(m->pore, m->dm, ul, t, m->f_pore));
     PetscCall(VecRestoreArrayRead(m->u_local, &ul));
@@ -376,7 +381,10 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
   PetscCall(NodalAccelerationUpdate({m->inv_mass, m->bc.free_mask, m->bc.input_force, m->bc.constant_force, &m->bc.timed_loads, m->free_field || m->drm}, m->f_input,
                                     m->f_external, &m->nodal));
   PetscCall(NodalAccelerationInput(m->nodal, v_in, m->bc.input_force, m->f_input));
-  if (m->drm && m->input_enabled) PetscCall(input::DrmAddForce(m->drm, drmSetting(*m), ts, t, m->f_input));
+  if (m->drm && m->input_enabled) {
+    PetscCall(input::DrmAddForce(m->drm, drmSetting(*m), ts, t, m->f_input));
+    if (m->pore) PetscCall(porous::PorePressureDrmForce(m->pore, m->drm, m->dm, m->f_input));
+  }
   PetscCall(NodalAccelerationExternal(m->nodal, m->bc.constant_force, m->f_input, m->f_external));
   if (m->input_enabled) PetscCall(input::TimedLoadsAdd(m->bc.timed_loads, t, m->f_external));
   if (m->free_field) {
@@ -419,6 +427,14 @@ PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx) {
 } // namespace slipwave::problem
 
 namespace slipwave::problem {
+
+PetscErrorCode ElastodynamicsDrmPoreSource(Elastodynamics *m, TS ts, PetscReal t) {
+  PetscFunctionBeginUser;
+  if (!m->drm || !m->pore) PetscFunctionReturn(0);
+  PetscCall(input::DrmFreeFieldUpdate(m->drm, drmSetting(*m), ts, t));
+  PetscCall(porous::PorePressureDrmSource(m->pore, m->drm));
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode ElastodynamicsCommit(Elastodynamics *m) {
   PetscFunctionBeginUser;

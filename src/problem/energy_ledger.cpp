@@ -206,7 +206,11 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool ev
 
   porous::PoreEnergy fluid;
   if (m->pore) {
-    // Its Darcy and inflow work are booked every step like the rest of the work.
+    // Its Darcy and inflow work are booked every step like the rest of the work. The storage
+    // energy F_{n+1/2} needs the DRM's volume source of the coming step.
+    PetscReal t;
+    PetscCall(TSGetTime(ts, &t));
+    if (m->input_enabled) PetscCall(ElastodynamicsDrmPoreSource(m, ts, t + h));
     PetscCall(porous::PorePressureEnergy(m->pore, m->dm, h, v, a, m->f_pore, m->bc.free_mask, &fluid));
     s[2] += fluid.storage;
     s[5] -= fluid.held_power;
@@ -231,6 +235,7 @@ PetscErrorCode EnergyLedgerUpdate(Elastodynamics *m, TS ts, PetscReal h, bool ev
     e->integrator_correction += h_mean * s[12];
     e->darcy += fluid.darcy;
     e->fluid_inflow += fluid.inflow;
+    e->input += fluid.drm_input;
     e->cavitation += fluid.cavitation;
   }
   e->h_prev = h;

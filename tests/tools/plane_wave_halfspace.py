@@ -60,6 +60,20 @@ class HalfspacePlaneWave:
             out += amp * np.outer([d[0], -d[1]], v(arg))
         return out
 
+    def undrained_pressure(self, alpha_M, v, t, x, y, xr, zr):
+        """Excess pore pressure of the undrained wave (no change of fluid content), -alpha M div u,
+        with vp the undrained speed: only the P waves change volume, each by -(d . s) times its
+        velocity history (d . s = 1/vp for both), so p = alpha M / vp times their velocity."""
+        z = -y
+        out = np.zeros(np.size(t))
+        q_in = self.qp if self.wave == "p" else self.qs
+        for k, (amp, (d, s)) in enumerate(self.waves):
+            if k == 2 or (k == 0 and self.wave != "p"):
+                continue  # S waves
+            arg = t - self.p * (x - xr) + (q_in * (z - zr) if k == 0 else -s[1] * z - q_in * zr)
+            out += amp * (d @ s) * alpha_M * v(arg)
+        return out
+
 
 def beyond_critical_velocity(rho, vp, vs, angle_deg, v_in, dt, x, y, xr, zr):
     """(v_x, v_y) of an SV wave beyond the critical angle (sin i > vs/vp), where the reflected P

@@ -39,6 +39,15 @@ int main() {
   const double Gs = 3e7, Ks = 5e7, Ms = biotModulus(soil, Ks), sigma = 1e5;
   const double eps = -sigma / (Ks + 4 * Gs / 3 + Ms);
   unit::near(loadingEfficiency(Ks, Gs, 1, Ms) * sigma, -Ms * eps, 1e-14, 0, "loading efficiency: p = gamma sigma in undrained uniaxial strain");
+  // The plane wave's undrained pressure: at vertical incidence (eps_xx = 0) p = gamma sigma_zz
+  // with the compression positive; an inclined wave's strain state (eps_xx, eps_zz) taken
+  // through Hooke's law with lambda_u gives sigma_zz, and the kernel returns -alpha M eps_v.
+  const double lambda_u = Ks - 2 * Gs / 3 + Ms;
+  unit::near(undrainedPlaneWavePressure(-sigma, 0, lambda_u, Gs, 1, Ms), loadingEfficiency(Ks, Gs, 1, Ms) * sigma, 1e-14, 0,
+             "undrained plane-wave pressure: gamma times the vertical compression at eps_xx = 0");
+  const double exx = 2e-5, ezz = -7e-5, szz = lambda_u * (exx + ezz) + 2 * Gs * ezz;
+  unit::near(undrainedPlaneWavePressure(szz, exx, lambda_u, Gs, 0.8, Ms), -0.8 * Ms * (exx + ezz), 1e-12, 0,
+             "undrained plane-wave pressure: -alpha M (eps_xx + eps_zz) from sigma_zz and eps_xx");
   unit::near(undrainedPWaveSpeed(Ks, Gs, 1, Ms, 2000), std::sqrt((Ks + 4 * Gs / 3 + Ms) / 2000), 1e-15, 0, "undrained P speed");
   unit::near(mobility(soil), 1e-4 / (1000 * 9.81), 1e-15, 0, "mobility k_h / (rho_f g)");
   // c_v = k E_oed / gamma_w when fluid and grains are incompressible (Terzaghi).

@@ -33,6 +33,14 @@
 // committed step, v0 the free field's half-step velocity. The mass-proportional terms (alpha M,
 // lumped) couple no b and e nodes. The base input (-input_wave) is refused with drm.
 //
+// Saturated sites (docs/drm.md, "Saturated sites"): the free field is the undrained one (each
+// saturated layer with its undrained P modulus lambda + alpha^2 M, the excess pore pressure
+// p0 = -alpha M eps_v per layer element, physics::undrainedPlaneWavePressure), and the forces
+// are those of the u-p operator: the coupling and Darcy terms of the layer's saturated
+// elements, which porous/pore_pressure_drm.hpp adds from DrmLayer (the pore pressure's
+// matrices live on the floor above). Refused there: a free field from a file (it has no
+// pressure) and damping (the solver damps the skeleton only, not alpha^2 M).
+//
 // The forces are external work booked as input (they go into Elastodynamics::f_input).
 #pragma once
 #include <petscts.h>
@@ -50,6 +58,11 @@ namespace slipwave::input {
 
 struct Drm;
 
+// A region's pore fluid as the undrained free field needs it: Biot's alpha and M; M = 0: dry.
+struct DrmPoreFluid {
+  double alpha = 0, M = 0;
+};
+
 // What the layer, the site and the forces are made from: the assembled problem's mesh, its
 // regions' materials and damping and the bulk operator whose layer rows give the forces
 // (problem/elastodynamics.cpp fills it from its Elastodynamics; the references stay valid
@@ -64,14 +77,33 @@ struct DrmSetting {
   physics::RayleighCoefficients                  rayleigh;
   const medium::Attenuation                     *attenuation; // constant-Q damping, or null
   InputWave                                      input_wave;  // the base input, refused with drm
+  const std::vector<DrmPoreFluid>               *pore_fluid = nullptr; // per region, read by DrmCreate only; null: no saturated region
 };
+
+// The layer as the u-p terms need it (porous/pore_pressure_drm.hpp), at the time of the last
+// DrmFreeFieldUpdate: per layer element its bulk element and, per element node, the index of
+// its DRM node and whether it is a b node; u0 (dim per DRM node) and p0 (per element node,
+// the element's own medium; zero in dry elements).
+struct DrmLayer {
+  const std::vector<PetscInt> &elements;
+  const std::vector<size_t>   &element_node;
+  const std::vector<char>     &element_node_is_b;
+  const std::vector<double>   &u0, &p0;
+  double                       time;
+};
+DrmLayer DrmLayerOf(const Drm *drm);
+// Whether the free field carries an undrained pore pressure (some region is saturated).
+bool DrmSaturated(const Drm *drm);
 
 // Reads -input_method base|drm; for drm its options, the layer and the site. *drm stays null
 // with base (the vertically incident base input of input/boundary_conditions.hpp).
 PetscErrorCode DrmCreate(const DrmSetting &setting, Drm **drm);
 PetscErrorCode DrmDestroy(Drm **drm);
-// f += the effective forces at time t (global vector). The free-field histories are
-// synthesised at the first call, up to the TS's final time.
+// The free field u0 (and p0) at the layer's nodes at time t, kept until asked for another t.
+// The free-field histories are synthesised at the first call, up to the TS's final time.
+PetscErrorCode DrmFreeFieldUpdate(Drm *drm, const DrmSetting &setting, TS ts, PetscReal t);
+// f += the effective forces at time t (global vector): the skeleton's; a saturated layer's
+// coupling terms are porous::PorePressureDrmForce's.
 PetscErrorCode DrmAddForce(Drm *drm, const DrmSetting &setting, TS ts, PetscReal t, Vec f);
 // Lines for the run report (empty without DRM).
 std::vector<std::string> DrmReport(const Drm *drm);

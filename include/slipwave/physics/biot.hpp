@@ -36,6 +36,14 @@ double skemptonB(double K_drained, double alpha, double M);
 double loadingEfficiency(double K_drained, double G, double alpha, double M);
 // sqrt((K + 4G/3 + alpha^2 M)/rho): the P speed with the fluid locked in the pores.
 double undrainedPWaveSpeed(double K_drained, double G, double alpha, double M, double rho);
+// The excess pore pressure of an undrained plane wave (no change of fluid content:
+// p = -alpha M eps_v) from two quantities continuous across horizontal interfaces: the total
+// normal stress on a horizontal plane sigma_zz [Pa, tension positive] and the normal strain
+// along the direction of travel eps_xx (the transverse strain of a plane wave is zero).
+// With lambda_u = lambda + alpha^2 M, sigma_zz = lambda_u (eps_xx + eps_zz) + 2 mu eps_zz gives
+// eps_zz, so each medium at an interface gets its own eps_v (the DRM's free field,
+// docs/drm.md "Saturated sites").
+double undrainedPlaneWavePressure(double sigma_zz, double eps_xx, double lambda_undrained, double mu, double alpha, double M);
 // c_v = kappa / (1/M + alpha^2/(K + 4G/3)): the 1D (oedometric) consolidation coefficient.
 double consolidationCoefficient(double K_drained, double G, double alpha, double M, double kappa);
 // Forward Euler on s dp/dt = -sum_j H_ij p_j is stable (Gershgorin on s^{-1} H, whose

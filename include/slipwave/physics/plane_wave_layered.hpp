@@ -91,21 +91,26 @@ private:
 // velocity (along the incident polarisation) at depth reference_depth >= halfspaceDepth() and
 // x = 0 is v_in: v_in[k] = v(k dt), k = 0 .. m-1, zero before. They are synthesised by FFT
 // over a period of at least 4m samples (zero padded, so the reverberations of m samples have
-// decayed before they wrap around). Returned per depth d and component c (radial, transverse,
-// up), sample k: index (d*3 + c)*m + k, velocity and its time integral (displacement, zero at
-// t = 0; the trapezoid rule with its end correction from the spectral acceleration, fourth
-// order). The field at horizontal position x is the history at t - p x.
+// decayed before they wrap around). Returned per depth d and channel c, sample k: index
+// (d*channels + c)*m + k, a rate and its time integral (zero at t = 0; the trapezoid rule with
+// its end correction from the spectral derivative, fourth order). Channels 0-2: velocity and
+// displacement (radial, transverse, up). With with_strain (a saturated site's undrained pore
+// pressure, physics::undrainedPorePressure) two more, both continuous across the horizontal
+// interfaces: 3, the total normal stress on a horizontal plane sigma_zz [Pa, tension
+// positive]; 4, the normal strain along the direction of travel eps_xx = -p v_x. Their
+// integral channel holds the value, the other its rate. The field at horizontal position x is
+// the history at t - p x.
 struct PlaneWaveHistories {
-  size_t              samples = 0;
+  size_t              samples = 0, channels = 3;
   double              dt      = 0;
   std::vector<double> velocity, displacement;
 };
 PlaneWaveHistories synthesizeHistories(const PlaneWaveLayered &field, const std::vector<double> &depths, double reference_depth, const std::vector<double> &v_in,
-                                       double dt);
+                                       double dt, bool with_strain = false);
 
-// Displacement of component c at depth index d and time t (the histories' own clock): cubic
-// Hermite between samples with the velocity as its slope (error O(dt^4)); zero for t <= 0,
-// the last sample held after the end.
+// The integral channel c (displacement for c < 3, sigma_zz, eps_xx) at depth index d and time
+// t (the histories' own clock): cubic Hermite between samples with the rate as its slope
+// (error O(dt^4)); zero for t <= 0, the last sample held after the end.
 double planeWaveDisplacementAt(const PlaneWaveHistories &h, size_t d, size_t c, double t);
 
 } // namespace slipwave::physics

@@ -102,6 +102,15 @@ struct PorePressure {
   double   cavitation_first = -1, cavitation_last = -1;
   PetscInt cavities_max = 0, cavities_now = 0;
   double   largest_cavity = 0, largest_cavity_time = 0, largest_cavity_at[3] = {0, 0, 0};
+  // -input_method drm on a saturated site (porous/pore_pressure_drm.hpp): the layer's pressure
+  // rows as a volume source W of each step, S (p_{n+1} - p*) = ... + W, from G = the split
+  // alpha Q u0 and r = the split H p0 (committed, t_n, and the trial's); W of the trial step
+  // and of the last committed one (the ledger books 1/2 p_n (W_{n+1/2} + W_{n-1/2})). Null
+  // without DRM.
+  Vec      drm_volume = nullptr, drm_volume_trial = nullptr;   // G [m^3]
+  Vec      drm_flow = nullptr, drm_flow_trial = nullptr;       // r [m^3/s]
+  Vec      drm_source = nullptr, drm_source_previous = nullptr; // W [m^3]
+  std::vector<PetscInt> drm_cell;                              // per DRM layer element: its index in cells, -1 if dry
   Vec      node_coordinates[3] = {nullptr, nullptr, nullptr}; // x, y (, z) per pressure node (global layout)
   Vec      node_volume = nullptr;                    // the saturated volume each node stands for (lumped) [m^3; m^2 in 2D]
   Vec      cavity_fraction = nullptr;                // V / node_volume, refreshed by PorePressureCavityFraction [-]
@@ -187,8 +196,10 @@ double PorePressureCouplingFactor(const PorePressure *pore, double h);
 // pore pressure supplies, which the ledger takes out of the reactions (it is internal work).
 // cavitation: the work the fluid did on its cavities in the last committed step
 // (physics::cavityWork on the free nodes), which the shadow storage energy lacks.
+// drm_input: the DRM's volume source's work, 1/2 p_n (W_{n+1/2} + W_{n-1/2}) (input work, as
+// the DRM's forces are).
 struct PoreEnergy {
-  double storage = 0, darcy = 0, inflow = 0, held_power = 0, cavitation = 0;
+  double storage = 0, darcy = 0, inflow = 0, held_power = 0, cavitation = 0, drm_input = 0;
 };
 // v, a: v_n and a_n; f_pore at t_n; free_mask of the displacement dofs; dm the displacement
 // layout. A node held this step (drained) that still holds p_n != 0 (a gap just opened over

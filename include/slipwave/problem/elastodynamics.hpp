@@ -97,6 +97,11 @@ PetscErrorCode ElastodynamicsFourthOrderCorrection(Elastodynamics *model, PetscR
 // A "cd" TS (type set, options read) gets the RHS, the commit hook, the correction of order 4
 // and the nodal damping.
 PetscErrorCode ElastodynamicsSetUpTS(Elastodynamics *model, TS ts);
+// -input_method drm on a saturated site: the free field at t and the pore pressure's volume
+// source of the step from the committed time to t (porous/pore_pressure_drm.hpp). The RHS
+// calls it at its t, the energy ledger at t_n + h first (the step's fluid storage energy
+// needs it). No-op otherwise.
+PetscErrorCode ElastodynamicsDrmPoreSource(Elastodynamics *model, TS ts, PetscReal t);
 // Global f = K x by the element loop (ghost exchange included), as the RHS computes it.
 PetscErrorCode ElastodynamicsStiffnessTimes(Elastodynamics *model, Vec x, Vec f);
 // Stores the cell stresses of the global displacement u as the initial stress.
