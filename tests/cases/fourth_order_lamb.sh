@@ -10,7 +10,7 @@
 # 0.28 of it, 3.2 x as many steps: 0.17-0.40 %).
 set -eu
 LAMB_CELLS=68 LAMB_BOUND=0.004 SEM_DEGREE=4 bash tests/cases/lamb_line_load.sh
-log="${BUILD:-build}/tests/work/lamb_line_load_p4/np1.log"
+log="${TEST_WORK_ROOT:-${BUILD:-build}/tests/work}/lamb_line_load_p4/np1.log"
 grep "6.6 GLL nodes per S wavelength at 27.64 Hz" "$log"
 grep "time step .*; fourth-order integrator (-ts_cd_order 4, the default), limited by stability" "$log"
 grep "time integrator: order 4: the order-4 step .* is more than 2 x the order-2 step" "$log"

@@ -18,7 +18,9 @@ elements() { echo $(( ($1 + DEGREE - 1) / DEGREE )); }
 # (-ts_cd_order 4 on every slipwave command line of $SW, before the test's own options;
 # tests/cases/fourth_order_*.sh, issue 25).
 [ -n "${CD_ORDER:-}" ] && export SLIPWAVE_TEST_OPTIONS="-ts_cd_order $CD_ORDER"
-WORK="$BUILD/tests/work/$(basename "$0" .sh)${SEM_DEGREE:+_p$SEM_DEGREE}${SEM_DIM:+_${SEM_DIM}d}${CD_ORDER:+_o$CD_ORDER}"
+# The suite (tests/run_tests.sh) gives each case a root of its own, TEST_WORK_ROOT, so the
+# folders of a case and of the scripts it runs go together.
+WORK="${TEST_WORK_ROOT:-$BUILD/tests/work}/$(basename "$0" .sh)${SEM_DEGREE:+_p$SEM_DEGREE}${SEM_DIM:+_${SEM_DIM}d}${CD_ORDER:+_o$CD_ORDER}"
 rm -rf "$WORK"; mkdir -p "$WORK"
 # 1D column options: 100 m of soil, rho 2000, vp 400, vs 200, Ricker f0 = 5 Hz, peak 0.1 m/s.
 COLUMN="-regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -bc_bottom_type absorbing -input_boundary bottom
