@@ -90,7 +90,7 @@ PetscErrorCode runCase(PetscInt dim, PetscInt nc, Row *row) {
   double                t0 = now();
   PetscCall(problem::ElastodynamicsCreate(PETSC_COMM_WORLD, &m));
   problem::StableStep st;
-  PetscCall(problem::StableStepCompute(&m, &st));
+  PetscCall(problem::StableStepCompute(&m, problem::TimeStepOptions(), &st));
   row->setup = now() - t0;
   row->ncell = m.bulk.cellCount();
 

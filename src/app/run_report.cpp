@@ -279,6 +279,14 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
   if (limit.dt_cfl < 1e300)
     PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s); h_min/vp_max = %.4e s for comparison\n", integrator.dt_limit, integrator.governing.c_str(), limit.dt_cfl));
   else PetscCall(PetscPrintf(comm, "  stable step: %.4e s (%s)\n", integrator.dt_limit, integrator.governing.c_str()));
+  if (limit.mass_scaling.nodes > 0) {
+    const problem::MassScalingResult &ms = limit.mass_scaling;
+    PetscCall(PetscPrintf(comm,
+                          "  mass scaling (-time_step_mass_scaling interface): %" PetscInt_FMT " interface nodes carry +%.4g kg%s of inertia without weight, %.3g %% of region %s's mass "
+                          "(%.3g %% of the model's), a node up to %.3g x its own; the limit %.4e s instead of %.4e s\n",
+                          ms.nodes, ms.added, model.dim == 2 ? "/m" : "", 100 * ms.added / ms.lightest_side, ms.lightest_region.c_str(), 100 * ms.added / ms.model_mass,
+                          ms.largest_factor, integrator.dt_limit, limit.dt_own_mass));
+  }
   // dt_bulk, not dt_limit: the free-field columns or the pore-pressure diffusion may set the limit lower without any interface.
   if (limit.dt_without_interfaces < 1e300 && limit.dt_bulk < limit.dt_without_interfaces * (1 - 1e-12))
     PetscCall(PetscPrintf(comm, "  warning: the interface penalty lowers the stable step from %.4e s (bulk alone) to %.4e s (-%.1f %%)\n", limit.dt_without_interfaces,

@@ -268,7 +268,7 @@ PetscErrorCode setUp(MPI_Comm comm, Run *r) {
   if (r->opt.restart[0]) PetscCall(CheckpointVerify(comm, r->opt.restart));
   PetscCall(problem::TimeStepOptionsRead(comm, &r->time_step));
   PetscCall(problem::ElastodynamicsCreate(comm, &r->model));
-  PetscCall(problem::StableStepCompute(&r->model, &r->step));
+  PetscCall(problem::StableStepCompute(&r->model, r->time_step, &r->step));
   PetscCall(r->stations.Setup(r->model.dm, r->model.bulk, r->model.mesh));
   PetscCall(r->answers.Setup(r->model, r->stations));
   PetscCall(RegionVelocitiesRead(comm, r->model.dim, r->model.materials, &r->region_velocity));

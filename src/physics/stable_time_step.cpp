@@ -23,6 +23,8 @@ double centralDifferenceStableStepOfRow(double omega2, double rate) {
   return 2.0 / (std::sqrt(omega2 + 0.25 * rate * rate) + 0.5 * rate);
 }
 
+double massForStableStep(double stiffness_row, double damping_row, double dt) { return 0.25 * dt * dt * stiffness_row + 0.5 * dt * damping_row; }
+
 double fourthOrderStableStep(double omega_max, double beta_stiffness_damping) {
   const double xi = 0.5 * beta_stiffness_damping * omega_max, w_end = std::sqrt(12.0);
   // The condition fails where xi >= Xi(W) = (1/(1 - W^2/12) - W^2/4) / W, a function that falls

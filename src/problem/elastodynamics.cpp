@@ -297,6 +297,19 @@ PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *m) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode ElastodynamicsAddMass(Elastodynamics *m, Vec added) {
+  PetscFunctionBeginUser;
+  PetscCall(VecAXPY(m->mass, 1.0, added));
+  PetscCall(VecCopy(m->mass, m->inv_mass));
+  PetscCall(VecReciprocal(m->inv_mass));
+  PetscCall(NodalAccelerationDestroy(&m->nodal));
+  if (m->tie) {
+    PetscCall(input::LateralTieDestroy(&m->tie));
+    PetscCall(input::LateralTieCreate(m->dm, m->bc, m->mass, &m->tie));
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ElastodynamicsDestroy(Elastodynamics *m) {
   PetscFunctionBeginUser;
   PetscCall(input::BoundaryConditionsDestroy(&m->bc));

@@ -5,12 +5,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "slipwave/core/option_choice.hpp"
 #include "slipwave/input/free_field.hpp"
 #include "slipwave/physics/stable_time_step.hpp"
 #include "slipwave/porous/pore_pressure.hpp"
+#include "slipwave/problem/interface_mass_scaling.hpp"
 #include "slipwave/problem/rigid_bodies.hpp"
 
 namespace slipwave::problem {
+
+const char *const kMassScalingNames[2] = {"none", "interface"};
+
 namespace {
 
 // Default fraction of the stable step without interfaces (with them: kSafetyInterfaces).
@@ -101,15 +106,12 @@ PetscErrorCode couplingFactor(Elastodynamics *m, Vec bulk_rows, Vec undrained, d
   PetscFunctionReturn(0);
 }
 
-} // namespace
-
-PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
-  Vec rowabs;
+// The bulk's rows (rowabs, laid out like u): its Gershgorin rows, and in saturated regions
+// those of the undrained stiffness K + c alpha^2 Q^T S^-1 Q (c = 1 at degree 1; at p > 1 the
+// split step's factor, step->coupling_factor; step->dt_drained without them).
+PetscErrorCode bulkRows(Elastodynamics *m, Vec rowabs, StableStep *step) {
   PetscFunctionBeginUser;
-  PetscCall(VecDuplicate(m->mass, &rowabs));
   PetscCall(fem::BulkStiffnessRowBounds(m->dm, m->bulk, rowabs));
-  // Saturated regions: the rows of the undrained stiffness K + c alpha^2 Q^T S^-1 Q (c = 1 at
-  // degree 1; at p > 1 the split step's factor).
   if (m->pore) {
     PetscReal omega_drained;
     Vec       undrained;
@@ -122,6 +124,15 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
     PetscCall(VecAXPY(rowabs, step->coupling_factor, undrained));
     PetscCall(VecDestroy(&undrained));
   }
+  PetscFunctionReturn(0);
+}
+
+// The limit of the model with its masses as they are.
+PetscErrorCode limitOf(Elastodynamics *m, StableStep *step) {
+  Vec rowabs;
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(m->mass, &rowabs));
+  PetscCall(bulkRows(m, rowabs, step));
   // K is the bulk and the interface springs together (adding the rows, not taking the larger
   // of two frequencies).
   PetscReal omega_bulk = 0, omega_all = 0;
@@ -189,13 +200,50 @@ PetscErrorCode StableStepCompute(Elastodynamics *m, StableStep *step) {
   PetscFunctionReturn(0);
 }
 
+} // namespace
+
+PetscErrorCode StableStepCompute(Elastodynamics *m, const TimeStepOptions &options, StableStep *step) {
+  PetscFunctionBeginUser;
+  PetscCall(limitOf(m, step));
+  if (options.mass_scaling == MassScaling::Interface && !m->interfaces.empty()) {
+    // The scaled nodes may have held the bulk's largest row: the bulk's own limit then rises,
+    // and the nodes are scaled again to it (a few rounds: each moves the largest row to
+    // another node).
+    Vec physical, rows;
+    PetscCall(VecDuplicate(m->mass, &physical));
+    PetscCall(VecCopy(m->mass, physical));
+    PetscCall(VecDuplicate(m->mass, &rows));
+    const double dt_own = step->dt_limit;
+    for (int round = 0; round < 8; ++round) {
+      StableStep bulk;
+      PetscInt   nodes;
+      PetscCall(bulkRows(m, rows, &bulk));
+      PetscCall(InterfaceMassScale(m, rows, step->dt_without_interfaces, &nodes));
+      if (nodes == 0) break;
+      PetscCall(limitOf(m, step));
+    }
+    PetscCall(MassScalingSummarize(m, physical, &step->mass_scaling));
+    step->dt_own_mass = dt_own;
+    PetscCall(VecDestroy(&rows));
+    PetscCall(VecDestroy(&physical));
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode TimeStepOptionsRead(MPI_Comm comm, TimeStepOptions *o) {
   PetscFunctionBeginUser;
+  PetscInt scaling = (PetscInt)o->mass_scaling;
   PetscOptionsBegin(comm, "", "Time step", "slipwave");
   PetscCall(PetscOptionsReal("-time_step_safety",
                              "time step as a fraction of the stable limit, used when -ts_dt is not given (0 < s <= 1; default 0.9, 0.5 with interfaces)", "SimulationRun",
                              o->safety, &o->safety, &o->safety_set));
+  PetscCall(core::OptionsChoice(PetscOptionsObject, "-time_step_mass_scaling",
+                              "none (default): every node its own lumped mass; interface: the nodes of interface pairs take the mass dt^2 K/4 + dt C/2 their rows need "
+                              "to be stable at the bulk's own step (at most dt^2 k/4 per spring: Newmark's beta = 1/4 on the penalty), so the penalty does not lower the step "
+                              "(problem/interface_mass_scaling.hpp; the run reports the mass added)",
+                              kMassScalingNames, 2, &scaling, nullptr));
   PetscOptionsEnd();
+  o->mass_scaling = (MassScaling)scaling;
   PetscCheck(!o->safety_set || (o->safety > 0 && o->safety <= 1), comm, PETSC_ERR_USER_INPUT, "-time_step_safety = %g; allowed: 0 < s <= 1", (double)o->safety);
   PetscFunctionReturn(0);
 }

@@ -53,7 +53,7 @@ PetscErrorCode sceneCreate(Scene *s, const std::string &more = "") {
   PetscCall(PetscOptionsClear(nullptr));
   PetscCall(PetscOptionsInsertString(nullptr, (kScene + more).c_str()));
   PetscCall(problem::ElastodynamicsCreate(comm, &s->m));
-  PetscCall(problem::StableStepCompute(&s->m, &s->step));
+  PetscCall(problem::StableStepCompute(&s->m, problem::TimeStepOptions(), &s->step));
   problem::Elastodynamics &m = s->m;
   // Node coordinates in the displacement layout.
   Vec coords;
@@ -223,7 +223,7 @@ PetscErrorCode checkModifiedEnergy() {
                                               "-material_soil_rho 1800 -material_soil_vp 600 -material_soil_vs 250 -material_block_rho 2500 -material_block_E 3e10 "
                                               "-material_block_nu 0.2 -bc_bottom_type fixed"));
   PetscCall(problem::ElastodynamicsCreate(PETSC_COMM_WORLD, &m));
-  PetscCall(problem::StableStepCompute(&m, &step));
+  PetscCall(problem::StableStepCompute(&m, problem::TimeStepOptions(), &step));
   const PetscReal h = 0.9 * step.dt_limit_fourth_order;
   PetscCall(TSCreate(m.comm, &ts));
   PetscCall(TSSetType(ts, time::kTSCentralDifference));

@@ -51,7 +51,7 @@ PetscErrorCode runScene(const std::string &scene_options, PetscReal t_end, bool 
   PetscCall(PetscOptionsClear(nullptr));
   PetscCall(PetscOptionsInsertString(nullptr, scene_options.c_str()));
   PetscCall(problem::ElastodynamicsCreate(comm, &m));
-  PetscCall(problem::StableStepCompute(&m, &step));
+  PetscCall(problem::StableStepCompute(&m, problem::TimeStepOptions(), &step));
   PetscCall(TSCreate(comm, &ts));
   PetscCall(TSSetType(ts, time::kTSCentralDifference));
   PetscCall(TSSetMaxTime(ts, t_end));

@@ -93,11 +93,11 @@ int main() {
   for (double xi : {0.1, 1.0}) {
     const double m = 600, k = 4e8, wn = std::sqrt(2 * k / m), c = xi * wn * m; // 2c/m = 2 xi wn
     const double dt  = centralDifferenceStableStepOfRow(2 * k / m, 2 * c / m);
-    auto         run = [&](double h) {
+    auto         run = [&](double h, double mass) {
       double x1 = -0.5, x2 = 0.5, v1 = 0, v2 = 0, early = 0, late = 0;
       for (int n = 0; n < 20000; ++n) {
         const double f = k * (x2 - x1) + c * (v2 - v1);
-        v1 += h * f / m, v2 -= h * f / m;
+        v1 += h * f / mass, v2 -= h * f / mass;
         x1 += h * v1, x2 += h * v2;
         if (!(std::fabs(x2 - x1) < 1e100)) return HUGE_VAL;
         if (n < 1000) early = std::fmax(early, std::fabs(x2 - x1));
@@ -106,8 +106,14 @@ int main() {
       return late / early;
     };
     const std::string tag = "contact pair xi = " + std::to_string(xi).substr(0, 3);
-    unit::check(run(0.99 * dt) <= 1 + 1e-12, tag + ": bounded at 0.99 x the row bound");
-    unit::check(run(1.01 * dt) > 1e3, tag + ": grows at 1.01 x the row bound");
+    unit::check(run(0.99 * dt, m) <= 1 + 1e-12, tag + ": bounded at 0.99 x the row bound");
+    unit::check(run(1.01 * dt, m) > 1e3, tag + ": grows at 1.01 x the row bound");
+    // Mass scaling to a step T three times the pair's own: the mass massForStableStep gives
+    // (rows 2k and 2c) puts the row bound at T, and the pair is stable just below it only.
+    const double T = 3 * dt, scaled = massForStableStep(2 * k, 2 * c, T);
+    unit::near(centralDifferenceStableStepOfRow(2 * k / scaled, 2 * c / scaled), T, 1e-14, 0, tag + ": the scaled mass's row bound is the target step");
+    unit::check(run(0.99 * T, scaled) <= 1 + 1e-12, tag + ": scaled mass, bounded at 0.99 x the target step");
+    unit::check(run(1.01 * T, scaled) > 1e3, tag + ": scaled mass, grows at 1.01 x the target step");
   }
 
   // Fourth order: sqrt(12)/omega undamped (sqrt(3) x central differences); with damping the

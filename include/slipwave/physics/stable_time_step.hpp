@@ -19,6 +19,13 @@ double centralDifferenceStableStep(double omega_max, double beta_stiffness_dampi
 // which is the bound above when rate = beta omega2 (a single mode).
 double centralDifferenceStableStepOfRow(double omega2, double rate);
 
+// The smallest lumped mass m [kg] with which one row, stiffness row sum K [N/m] and damping
+// row sum C [N s/m], is stable at the step dt [s]: the row condition above,
+// (dt/2) C/m + (dt^2/4) K/m <= 1, solved for m: m = dt^2 K/4 + dt C/2. For a spring alone it
+// is the mass Newmark's average acceleration (beta = 1/4) adds to the node when the spring
+// is taken implicitly: m + dt^2 k/4 (problem/interface_mass_scaling.hpp).
+double massForStableStep(double stiffness_row, double damping_row, double dt);
+
 // The fourth-order scheme u_{n+1} - 2 u_n + u_{n-1} = h^2 (1 - h^2 w^2 / 12) a*_n on the
 // mode of omega_max with the lagged damping beta K: central differences for the mode
 // w~^2 = w^2 (1 - W^2/12), 2 xi~ w~ = 2 xi w (1 - W^2/12) (W = w h, xi = beta w / 2), so the

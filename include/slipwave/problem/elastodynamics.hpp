@@ -79,6 +79,11 @@ struct Elastodynamics {
 
 PetscErrorCode ElastodynamicsCreate(MPI_Comm comm, Elastodynamics *model);
 PetscErrorCode ElastodynamicsDestroy(Elastodynamics *model);
+// Adds `added` (laid out like u) to the lumped mass after the set-up (mass scaling,
+// problem/interface_mass_scaling.hpp): the inverse mass and the tied sides' weights follow;
+// gravity, the contact dashpots and the absorbing dashpots keep the physical mass they were
+// built with.
+PetscErrorCode ElastodynamicsAddMass(Elastodynamics *model, Vec added);
 PetscErrorCode ElastodynamicsRHS(TS ts, PetscReal t, Vec u, Vec a, void *ctx);
 // The trial states of the last RHS evaluation become the committed ones.
 PetscErrorCode ElastodynamicsCommit(Elastodynamics *model);

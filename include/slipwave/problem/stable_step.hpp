@@ -10,6 +10,7 @@
 
 #include "slipwave/fem/bulk_operator.hpp"
 #include "slipwave/problem/elastodynamics.hpp"
+#include "slipwave/problem/interface_mass_scaling.hpp"
 
 namespace slipwave::problem {
 
@@ -35,6 +36,10 @@ struct StableStep {
   // differences whatever the order, so their limit is the same.
   double dt_limit_fourth_order = 0;
   std::string governing_fourth_order;
+  // -time_step_mass_scaling interface: the mass added, and the limit the nodes' own mass gave
+  // (0 when nothing was scaled).
+  MassScalingResult mass_scaling;
+  double            dt_own_mass = 0;
 };
 
 // Default fraction of the stable step with contact interfaces. The open/close switching of a
@@ -44,17 +49,23 @@ struct StableStep {
 // report warns when pairs opened or closed under a larger fraction.
 inline constexpr PetscReal kSafetyInterfaces = 0.5;
 
+enum class MassScaling { None, Interface };
+extern const char *const kMassScalingNames[2]; // none, interface (-time_step_mass_scaling)
+
 struct TimeStepOptions {
-  PetscReal safety     = -1; // fraction of the limit; default kSafetyBulk, or kSafetyInterfaces with interfaces
-  PetscBool safety_set = PETSC_FALSE;
+  PetscReal   safety       = -1; // fraction of the limit; default kSafetyBulk, or kSafetyInterfaces with interfaces
+  PetscBool   safety_set   = PETSC_FALSE;
+  MassScaling mass_scaling = MassScaling::None;
 };
 
 // rows_i with K <= diag(rows) for the bulk stiffness (global vector laid out like u,
 // overwritten; fem::BulkOperator::addStiffnessRowBounds): max rows_i / m_i bounds omega_max^2,
 // for the stable step and the constant-Q reference frequencies.
-// The limit of the whole model (interfaces and free field set up).
-PetscErrorCode StableStepCompute(Elastodynamics *model, StableStep *step);
-// -time_step_safety (read before the heavy setup, so a bad value stops early).
+// The limit of the whole model (interfaces and free field set up). With
+// -time_step_mass_scaling interface the nodes of interface pairs first take the mass that
+// keeps the limit at the bulk's own (InterfaceMassScale; the model's mass changes).
+PetscErrorCode StableStepCompute(Elastodynamics *model, const TimeStepOptions &options, StableStep *step);
+// -time_step_safety, -time_step_mass_scaling (read before the heavy setup, so a bad value stops early).
 PetscErrorCode TimeStepOptionsRead(MPI_Comm comm, TimeStepOptions *options);
 // The fraction of the stable limit: -time_step_safety, or the default (kSafetyBulk, or
 // kSafetyInterfaces with interfaces).
