@@ -7,16 +7,9 @@
 # (scripts/convergence_check.py's grid_band, the same rule as make run's bands), and the table
 # says each run's distance from it. About 20 minutes on one core (the 0.0625 m run: 570 s).
 # One rank per run (GRADED_NP). Rows go to $BENCH_CSV (benchmark,case,metric,value,unit).
-set -eu
 cd "$(dirname "$0")/../.."
-BUILD=${BUILD:-build}
-PY=/usr/bin/python3
-CSV=${BENCH_CSV:-}
-NP=${GRADED_NP:-1}
-T=${GRADED_TIME:-4}
-FINE=${GRADED_FINE:-0.25 0.125 0.0625}
-WORK="$BUILD/bench/work/default_scene_graded"
-rm -rf "$WORK"; mkdir -p "$WORK"
+WORK=${BUILD:-build}/bench/work/default_scene_graded
+REGIONS=rock,soil_low,soil_mid,soil,block
 . bench/study/graded_scene.sh
 run uniform_1m -options_file config/scenes/default.yaml
 run uniform_0.5m -options_file config/scenes/default.yaml -mesh_box_faces 244,120

@@ -1,4 +1,5 @@
-# The default scene on cells graded toward the block's base without structured columns
+# The default scene (its own regions: Gauss points within 14 m of the block) on cells graded
+# toward the block's base without structured columns
 # (bench/study/graded_unstructured.geo: FINE m at the base growing by GROW m per metre, at
 # most 1 m; the fine cells stay in the clay, so the bulk's step is the clay's 0.125 m cells'
 # and not the rock's) with the interface nodes' mass scaled (-time_step_mass_scaling
@@ -9,24 +10,17 @@
 # Richardson estimate from the three scaled levels and each run's distance from it and from
 # the structured study's estimates (bench/study/graded_estimates.json). About 15 minutes on
 # one core. Rows to $BENCH_CSV.
-set -eu
 cd "$(dirname "$0")/../.."
-BUILD=${BUILD:-build}
-PY=/usr/bin/python3
-CSV=${BENCH_CSV:-}
-NP=${GRADED_NP:-1}
-T=${GRADED_TIME:-4}
-FINE=${GRADED_FINE:-0.25 0.125 0.0625}
+WORK=${BUILD:-build}/bench/work/default_scene_mass_scaling
+REGIONS=rock,soil_low,soil_mid,soil_far,soil,block
 GROW=${GRADED_GROW:-0.1}
-WORK="$BUILD/bench/work/default_scene_mass_scaling"
-rm -rf "$WORK"; mkdir -p "$WORK"
 . bench/study/graded_scene.sh
 for f in $FINE; do
   gmsh -2 bench/study/graded_unstructured.geo -setnumber fine "$f" -setnumber grow "$GROW" -format msh41 -o "$WORK/u$f.msh" > "$WORK/u$f.gmsh.log"
   run "scaled_$f" $GRADED_OPTIONS -mesh_file "$WORK/u$f.msh" -time_step_mass_scaling interface
 done
 run own_mass_0.125 $GRADED_OPTIONS -mesh_file "$WORK/u0.125.msh"
-for f in $FINE own_mass_0.125; do grep -hE "^  (mesh:|mass scaling|time step)" "$WORK/$([ "$f" = own_mass_0.125 ] && echo "$f" || echo "scaled_$f").log"; done
+for f in $FINE; do grep -hE "^  (mesh:|mass scaling|time step)" "$WORK/scaled_$f.log"; done
 levels=$(printf "scaled_%s," $FINE)
 $PY bench/study/graded_table.py "$WORK" default_scene_mass_scaling "$CSV" "$NP" --tags "${levels%,},own_mass_0.125" --levels "${levels%,}" \
   --reference bench/study/graded_estimates.json

@@ -174,7 +174,7 @@ double LowPassCornerFrequency(const problem::Elastodynamics &model) {
   return resolvedFrequency(model).frequency * nodesPerWavelengthNeeded(model.bulk.degree()) / 8;
 }
 
-void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt, const std::string &answers) {
+void WriteRunInfo(const problem::Elastodynamics &model, const problem::StableStep &step, const std::string &output_dir, double dt, const std::string &answers) {
   const Resolution  res  = resolvedFrequency(model);
   const std::string path = output_dir + "/run_info.json";
   if (FILE *f = std::fopen(path.c_str(), "w")) {
@@ -183,6 +183,9 @@ void WriteRunInfo(const problem::Elastodynamics &model, const std::string &outpu
     if (model.bulk.degree() > 1) std::fprintf(f, " \"element_degree\": %d, \"element_size_m\": %.6g,\n", (int)model.bulk.degree(), model.bulk.minElementSize());
     if (model.hysteresis) std::fprintf(f, " \"hysteretic_regions\": [%s],\n", hystereticRegionsJson(model.materials).c_str());
     if (!answers.empty()) std::fprintf(f, " \"answers\": %s,\n", answers.c_str());
+    if (step.mass_scaling.nodes > 0)
+      std::fprintf(f, " \"mass_scaling\": {\"nodes\": %d, \"added_kg\": %.10g, \"lightest_region\": \"%s\", \"lightest_region_mass_kg\": %.10g, \"stable_step_own_mass_s\": %.10g},\n",
+                   (int)step.mass_scaling.nodes, step.mass_scaling.added, step.mass_scaling.lightest_region.c_str(), step.mass_scaling.lightest_side, step.dt_own_mass);
     std::fprintf(f, " \"input_top_frequency_hz\": %.6g, \"time_step_s\": %.10g}\n", problem::SceneTopFrequency(model).hz, dt);
     std::fclose(f);
   }

@@ -355,7 +355,7 @@ PetscErrorCode openOutputs(Run *r, TS ts) {
     r->energy_csv.SetFourthOrder(r->integrator.order == 4);
     PetscCall(r->energy_csv.Open(r->opt.output_dir, restarted ? CheckpointFolder(r->opt.restart) + "/energy.csv" : "", r->restart_step));
     r->dt = dt;
-    WriteRunInfo(r->model, r->opt.output_dir, dt);
+    WriteRunInfo(r->model, r->step, r->opt.output_dir, dt);
     const input::BoundaryConditions &bc = r->model.bc;
     // Rank 0 alone: a failure warns (an error here would leave the other ranks waiting).
     // Up to where the run ends: -ts_max_time, or sooner -ts_max_steps steps of dt (a run
@@ -419,7 +419,7 @@ PetscErrorCode solve(Run *r, TS ts) {
   if (r->answers.active()) {
     std::string answers;
     PetscCall(r->answers.Finish(r->model, r->opt.restart[0] != 0, r->opt.output_dir, &answers));
-    if (r->rank == 0 && !answers.empty()) WriteRunInfo(r->model, r->opt.output_dir, r->dt, answers);
+    if (r->rank == 0 && !answers.empty()) WriteRunInfo(r->model, r->step, r->opt.output_dir, r->dt, answers);
   }
   PetscCall(PetscLogStagePop());
   PetscCall(VecDestroy(&u));

@@ -22,7 +22,8 @@
 #   bound 3 x its error), and to round-off (bound 1e-12) on the default scene
 #   (config/scenes/default.yaml: rigid block on yielding clay, absorbing base, free-field
 #   sides, its first 0.5 s), whose scaled limit must be the bulk's own; 2 ranks give the
-#   1-rank slip (sliding block) and rocking (default scene) to 1e-9.
+#   1-rank slip (sliding block) and rocking (default scene) to 1e-9; run_info.json says the
+#   mass added (its "mass_scaling": the report's number, the lightest region: the base).
 set -eu
 . tests/tools/lib.sh
 newmark_pulse "$WORK/pulse.csv"
@@ -42,7 +43,7 @@ if grep -q "interface penalty lowers" "$WORK/scene1.log"; then echo "FAIL the pe
 $MPIEXEC -n 2 $SW -options_file config/scenes/sliding_block.yaml -mesh_box_faces 2,12 -time_step_mass_scaling interface -bc_bottom_record "$WORK/pulse.csv" \
   -output_dir "$WORK/np2" > "$WORK/np2.log"
 $PY - "$WORK" <<'PY'
-import math, re, sys
+import json, math, re, sys
 sys.path.insert(0, "python")
 import numpy as np
 from slipwave import RunFolder
@@ -61,6 +62,8 @@ for tag in ("m1x6", "m2x12"):
     log = open(f"{work}/{tag}_interface.log").read()
     ms = re.search(r"carry \+(\S+) kg/m .* the limit (\S+) s instead of (\S+) s", log)
     added[tag] = float(ms.group(1))
+    info = json.load(open(f"{work}/{tag}_interface/run_info.json"))["mass_scaling"]
+    check(abs(info["added_kg"] / added[tag] - 1) < 5e-4 and info["lightest_region"] == "base", f"{tag}: run_info.json mass_scaling {info}")
     check(float(ms.group(2)) > float(ms.group(3)), f"{tag}: the limit with scaling {ms.group(2)} s above the own-mass limit {ms.group(3)} s")
     balance, own = (abs(float(re.search(r"energy balance error (\S+) of the largest energy", text).group(1))) for text in (log, open(f"{work}/{tag}_none.log").read()))
     check(balance <= 3 * own, f"{tag}: energy balance error {balance:.2e} with the scaled mass, {own:.2e} without (bound 3 x)")

@@ -24,9 +24,10 @@ PetscErrorCode ReportSetup(const problem::Elastodynamics &model, const problem::
                            PetscReal max_time, const std::string &output_dir, PetscReal output_interval, bool verbose);
 
 // Rank 0: OUTPUT_DIR/run_info.json (resolved frequency, h_min, input top frequency, dt; with
-// hysteretic soil, each region's backbone and the parameters it was built from); answers: a
+// hysteretic soil, each region's backbone and the parameters it was built from; with mass
+// scaling, what it added); answers: a
 // JSON object for its "answers" (app/run_answers.hpp; written again at the end of the run).
-void WriteRunInfo(const problem::Elastodynamics &model, const std::string &output_dir, double dt, const std::string &answers = "");
+void WriteRunInfo(const problem::Elastodynamics &model, const problem::StableStep &step, const std::string &output_dir, double dt, const std::string &answers = "");
 
 // The corner of the low-passed peaks: p vs_min / (8 h), h the largest element of the region
 // that resolves least (what scripts/scene_metrics.py calls the resolved frequency; the
