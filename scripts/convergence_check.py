@@ -3,8 +3,8 @@
 
 usage: /usr/bin/python3 scripts/convergence_check.py SCENE --out DIR [--np N] [--levels 2|3]
            [--refine h|p] [--companion coarser|finer] [--third coarser|finer]
-           [--degrees P2[,P3]] [--axes x,y] [--order Q] [--interface base] [--reuse] [--echo-main]
-           [-- SLIPWAVE OPTIONS...]
+           [--degrees P2[,P3]] [--axes x,y] [--geo FILE.geo [--geo-set N=V,...] [--geo-dim 2|3]]
+           [--order Q] [--interface base] [--reuse] [--echo-main] [-- SLIPWAVE OPTIONS...]
 
 Runs slipwave on the scene (options file SCENE, then the options after `--`) at its own
 resolution, the main run, in DIR/main, and at a companion resolution in DIR/coarse (or
@@ -24,7 +24,14 @@ one otherwise, and say so (the default scene's 6 m block at x = -3..3 m does not
 2 m cells of its coarse level; its finer level costs 8 times the main run in 2D). --refine p
 changes -element_degree on the same elements instead: the levels' degrees are the scene's
 and --degrees (e.g. --degrees 1 for a scene at p = 2); r is the ratio of the degrees, the
-ratio of the mean GLL node spacings.
+ratio of the mean GLL node spacings. A Gmsh mesh: --refine h with --geo FILE.geo meshes every
+level from that file, `gmsh -2 FILE.geo -clscale 2^-k -setnumber N V ... -format msh41` (the
+main run 1, the coarse level 2, a finer level 1/2: Gmsh scales every size the file sets,
+its size fields included; a structured file can scale its counts by Mesh.MeshSizeFactor,
+tests/data/column.geo) into DIR/<level>.msh, and runs it as the level's -mesh_file; r = 2,
+the size factor's ratio (the cell counts, printed, show how the file followed it). --geo-set
+sets the file's numbers, --geo-dim the mesh's dimension (default 2); the companion is then
+coarser unless --companion says finer.
 
 Answers. scripts/scene_metrics.py on every level. The low-passed peaks are all taken at the
 coarsest level's resolved frequency, so that the levels low-pass alike and their peaks are
@@ -239,9 +246,12 @@ def levels_of(options, args):
     """[(name, extra options, resolution h relative to the main run)], finest first, and the
     index of the main run in it. With --companion or --third auto, the coarser side where
     the levels fit the scene, else the finer (said on stdout)."""
+    if args.refine == "h" and args.geo:
+        steps = ladder("finer" if args.companion == "finer" else "coarser", "finer" if args.third == "finer" else "coarser", args.levels)
+        return [(LEVEL_NAMES[k], ["-mesh_file", os.path.join(args.out, f"{LEVEL_NAMES[k]}.msh")], 2.0 ** -k) for k in steps], steps.index(0)
     if args.refine == "h":
         if "mesh_box_faces" not in options:
-            fail(f"SCENE {args.scene} has no mesh_box_faces (a Gmsh mesh?); allowed with --refine h: a built-in box mesh (or use --refine p)")
+            fail(f"SCENE {args.scene} has no mesh_box_faces (a Gmsh mesh?); allowed with --refine h: a built-in box mesh, or --geo with the mesh's .geo file (or use --refine p)")
         companions = ["coarser", "finer"] if args.companion == "auto" else [args.companion]
         thirds = ["coarser", "finer"] if args.third == "auto" else [args.third]
         tried = []
@@ -286,6 +296,42 @@ def region_boxes_misfit(options, level_faces):
                         return (f"-{name} {value}: {'xyz'[a]} = {edge:g} lies inside a cell of the {level} level ({h:g} m cells, -mesh_box_faces "
                                 f"{','.join(str(int(n)) for n in faces)})")
     return None
+
+
+def mesh_levels(args, levels):
+    """Meshes every level of --geo with Gmsh into its -mesh_file; returns the cell counts
+    (Gmsh's elements of the mesh's dimension)."""
+    counts = []
+    for name, level_options, h in levels:
+        target = level_options[1]
+        command = ["gmsh", f"-{args.geo_dim}", args.geo, "-clscale", f"{h:.17g}", "-format", "msh41", "-o", target]
+        for item in (args.geo_set or "").split(","):
+            if item.strip():
+                key, _, value = item.partition("=")
+                command += ["-setnumber", key.strip(), value.strip()]
+        print(f"  {name} mesh: {shlex.join(command)}", flush=True)
+        try:
+            done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        except FileNotFoundError:
+            fail("--geo needs gmsh on the PATH; allowed: install it (make deps) or a box scene")
+        errors = [line for line in done.stdout.splitlines() if line.startswith("Error")]
+        if done.returncode != 0 or errors or not os.path.isfile(target):
+            fail(f"--geo {args.geo}: gmsh failed for the {name} level ({(errors or done.stdout.strip().splitlines()[-1:] or [''])[0]})")
+        counts.append(msh_cell_count(target, args.geo_dim))
+    return counts
+
+
+def msh_cell_count(path, dim):
+    """Elements of dimension dim in a Gmsh 4.1 ASCII file."""
+    count, lines = 0, open(path).read().split("\n")
+    start = lines.index("$Elements")
+    blocks = int(lines[start + 1].split()[0])
+    i = start + 2
+    for _ in range(blocks):
+        entity_dim, _, _, n = (int(x) for x in lines[i].split())
+        count += n if entity_dim == dim else 0
+        i += n + 1
+    return count
 
 
 def launcher():
@@ -385,6 +431,9 @@ def main():
     parser.add_argument("--third", default="auto", help="with --levels 3: coarser, finer or auto (default), one step beyond the other two")
     parser.add_argument("--degrees", help="with --refine p: the other levels' degrees, e.g. 1 or 2,1")
     parser.add_argument("--axes", help="with --refine h: the axes to refine, e.g. y (default all)")
+    parser.add_argument("--geo", help="with --refine h: the Gmsh .geo the levels are meshed from (-clscale 2^-k)")
+    parser.add_argument("--geo-set", help="with --geo: the file's numbers, NAME=VALUE,... (gmsh -setnumber)")
+    parser.add_argument("--geo-dim", type=int, default=2, help="with --geo: the mesh's dimension, 2 (default) or 3")
     parser.add_argument("--order", type=float, default=1.0, help="formal order where none is observed (default 1)")
     parser.add_argument("--interface", default="base")
     parser.add_argument("--echo-main", action="store_true", help="print the main run's output as it runs (it also goes to its log)")
@@ -401,6 +450,10 @@ def main():
             fail(f"{name} {value}; allowed: {' or '.join(str(a) for a in allowed)}")
     if args.np < 1:
         fail(f"--np {args.np}; allowed: 1 or more ranks")
+    if args.geo is not None and (args.refine != "h" or not os.path.isfile(args.geo)):
+        fail(f"--geo {args.geo}: " + ("no such file; allowed: a Gmsh .geo file" if args.refine == "h" else f"with --refine {args.refine}; allowed: --refine h"))
+    if args.geo_dim not in (2, 3):
+        fail(f"--geo-dim {args.geo_dim}; allowed: 2 or 3")
     if not args.order > 0:
         fail(f"--order {args.order:g}; allowed: a formal order > 0")
     if not os.path.isfile(args.scene):
@@ -408,10 +461,15 @@ def main():
     options = read_options_file(args.scene)
     options.update(command_line_options(extra))
     levels, main_index = levels_of(options, args)
-    extra = without_options(extra, ("mesh_box_faces" if args.refine == "h" else "element_degree", "output_dir", "output_overwrite"))
+    refined = ("mesh_file",) if args.geo else ("mesh_box_faces",) if args.refine == "h" else ("element_degree",)
+    extra = without_options(extra, refined + ("output_dir", "output_overwrite"))
     ratios = [levels[i + 1][2] / levels[i][2] for i in range(len(levels) - 1)]
     os.makedirs(args.out, exist_ok=True)
     print(f"convergence_check: {args.scene}, {len(levels)} levels ({', '.join(n for n, _, _ in levels)}), {args.np} rank(s) each", flush=True)
+    if args.geo:
+        counts = mesh_levels(args, levels)
+        print("  cells: " + ", ".join(f"{name} {n}" for (name, _, _), n in zip(levels, counts)) + " (r = 2, the size factor's ratio; the counts' ratios "
+              + ", ".join(f"{counts[i] / counts[i + 1]:.3g}" for i in range(len(counts) - 1)) + f": {2 ** args.geo_dim} where the sizes halve in every direction)", flush=True)
     runs = [run_level(args, name, level_options, extra) for name, level_options, _ in levels]
     from slipwave import RunFolder  # scene_metrics put python/ on the path
     f_cut = min(scene_metrics.resolved_frequency(RunFolder(folder)) for folder, _ in runs)

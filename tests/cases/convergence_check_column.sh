@@ -16,6 +16,9 @@
 # Measured: PGA errors 0.0200, 0.00345 (rate 2.53), bands 0.0395, 0.0069 (rate 2.52); PSA(0.5 s)
 # errors 1.62e-3, 2.63e-4 (2.62), bands 2.85e-3, 5.66e-4 (2.33). (From 400 to 800 cells the PGA
 # band's rate is 2.60 and the error's 2.25: the GCI follows the differences, not the error.)
+# The same column meshed by Gmsh (--geo tests/data/column.geo: the box's cells, 200 / 100 / 50
+# along it at the size factors 1, 2, 4) must give the box's answers and bands (relative 1e-9:
+# the same cells, numbered otherwise), its levels meshed into --out.
 # The answers sorted by band after the table: python/tests/test_convergence_band.py. Also:
 # convergence.json in the main run's folder equals run_info.json's "convergence", every
 # run in a subfolder of --out, and a scene whose region box would cut the coarse level's cells
@@ -28,6 +31,9 @@ column="$COLUMN -input_wave sv -constrain_components y -ts_max_time 1.2 -station
 for n in 200 400; do
   $PY scripts/convergence_check.py "$WORK/column.yaml" --out "$WORK/n$n" --np 1 --levels 3 --axes y --order 2 -- $column -mesh_box_faces 1,$n | tee "$WORK/n$n.txt"
 done
+printf 'mesh_dim: 2\n' > "$WORK/gmsh_column.yaml"
+$PY scripts/convergence_check.py "$WORK/gmsh_column.yaml" --out "$WORK/geo" --np 1 --levels 3 --order 2 --geo tests/data/column.geo -- $column | tee "$WORK/geo.txt"
+grep -q "cells: main 200, coarse 100, coarser 50" "$WORK/geo.txt"
 $PY - "$WORK" <<'PY'
 import json, math, os, sys
 import numpy as np
@@ -63,6 +69,13 @@ for n in (200, 400):
         bands.setdefault(key, []).append((err, b["band"]))
         check(f"{n} cells {key}: {b['value']:.5f} +- {b['band']:.3g} (observed order {b['order_observed']:.2f}) holds the exact {value:.5f} (error {err:.3g}), band <= 3 x error",
               err <= b["band"] <= 3 * err)
+geo = json.load(open(os.path.join(work, "geo", "main", "convergence.json")))
+box = json.load(open(os.path.join(work, "n200", "main", "convergence.json")))
+for key, b in box["answers"].items():
+    g = geo["answers"][key]
+    same = all(abs(g[f] - b[f]) <= 1e-9 * abs(b[f]) for f in ("value", "band"))
+    check(f"Gmsh levels, {key}: {g['value']:.6g} +- {g['band']:.4g} against the box's {b['value']:.6g} +- {b['band']:.4g} (relative 1e-9)", same)
+check("Gmsh levels: the meshes in --out", all(os.path.isfile(os.path.join(work, "geo", f"{level}.msh")) for level in ("main", "coarse", "coarser")))
 for key, ((e1, b1), (e2, b2)) in bands.items():
     band_rate, error_rate = math.log2(b1 / b2), math.log2(e1 / e2)
     check(f"{key}: band shrinks at {band_rate:.2f} from 200 to 400 cells, the error at {error_rate:.2f} (within 0.3), >= 2 - 0.3",
@@ -79,3 +92,7 @@ fi
 cat "$WORK/misfit.txt"
 [ "$(wc -l < "$WORK/misfit.txt")" = 1 ] && grep -q "^convergence_check: error: -region_block_box -3,3,30,40: x = -3 lies inside a cell of the coarse level" "$WORK/misfit.txt"
 [ ! -e "$WORK/misfit/main" ]
+# --geo without its file: one line, the option named.
+if $PY scripts/convergence_check.py "$WORK/gmsh_column.yaml" --out "$WORK/nogeo" --geo "$WORK/none.geo" 2> "$WORK/nogeo.txt"; then echo "FAIL: a missing --geo was accepted"; exit 1; fi
+cat "$WORK/nogeo.txt"
+[ "$(wc -l < "$WORK/nogeo.txt")" = 1 ] && grep -q "^convergence_check: error: --geo $WORK/none.geo: no such file; allowed: a Gmsh .geo file" "$WORK/nogeo.txt"
