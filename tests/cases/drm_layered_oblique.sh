@@ -29,26 +29,13 @@ $PY - "$WORK" "$e" <<'PY'
 import sys
 import numpy as np
 sys.path.insert(0, "tests/tools")
-from haskell_propagator import surface_transfer
+from haskell_propagator import surface_velocity_ricker
 w, e = sys.argv[1], float(sys.argv[2])
 ok = True
-for wave, angle, c_rock in (("sv", 15, 800.0), ("p", 20, 1600.0)):
-    p = np.sin(np.radians(angle)) / c_rock
-    q_rock = np.sqrt(1 / c_rock**2 - p**2)
+for wave, angle in (("sv", 15), ("p", 20)):
     for n, x in (("a", -40.0), ("b", 0.0), ("c", 40.0)):
         d = np.genfromtxt(f"{w}/{wave}/stations/{n}.csv", delimiter=",", names=True)
-        t = d["t"]
-        dt, m = t[1] - t[0], 8 * len(t)
-        tt = np.arange(m) * dt
-        arg = (np.pi * 2.0 * (tt - 0.6)) ** 2
-        v_in = 0.1 * (1 - 2 * arg) * np.exp(-arg)
-        om = 2 * np.pi * np.fft.rfftfreq(m, dt)
-        # The Ricker's spectrum is below 1e-30 of its peak above 25 Hz: the transfer is left zero there.
-        band = om < 2 * np.pi * 25
-        tf = np.zeros((2, len(om)), complex)
-        tf[:, band] = surface_transfer([(30.0, 1900, 500, 200)], (2400, 1600, 800), wave, angle, om[band])
-        shift = np.exp(-1j * om * ((30 - e) * q_rock + p * (x + 60 - e)))
-        ref = [np.fft.irfft(np.fft.rfft(v_in) * tf[k] * shift, m)[: len(t)] for k in (0, 1)]
+        ref = surface_velocity_ricker(d["t"], 2.0, 0.6, 0.1, [(30.0, 1900, 500, 200)], (2400, 1600, 800), wave, angle, 30 - e, x + 60 - e)
         err = np.sqrt(np.sum((d["v_x"] - ref[0]) ** 2 + (d["v_y"] - ref[1]) ** 2) / np.sum(ref[0] ** 2 + ref[1] ** 2))
         print(f"{wave} {angle} deg: surface x = {x:g}: relative L2 error against the propagator {err:.2e} (bound 2e-2)")
         ok &= err <= 2e-2

@@ -48,3 +48,25 @@ def surface_transfer(layers, halfspace, wave, angle_deg, omega):
         s = P @ (inc + Eh[:, :2] @ R)
         out[:, k] = (s[0], -s[1])
     return out
+
+
+def surface_velocity_ricker(t, f0, t0, amplitude, layers, halfspace, wave, angle_deg, rock_depth, x_from_reference):
+    """The surface velocity [v_x, v_y] at the times t (uniform) of a Ricker incident wave
+    (peak velocity `amplitude` at t0, centre frequency f0) given at a reference point in the
+    halfspace: rock_depth below the top of the halfspace and x_from_reference along x from it
+    (the DRM's reference point, drm_layered_oblique.sh), through surface_transfer; numpy's FFT
+    zero padded eight times. The Ricker's spectrum is below 1e-30 of its peak above 12.5 f0:
+    the transfer is left zero there."""
+    dt, m = t[1] - t[0], 8 * len(t)
+    tt = np.arange(m) * dt
+    arg = (np.pi * f0 * (tt - t0)) ** 2
+    v_in = amplitude * (1 - 2 * arg) * np.exp(-arg)
+    om = 2 * np.pi * np.fft.rfftfreq(m, dt)
+    band = om < 2 * np.pi * 12.5 * f0
+    tf = np.zeros((2, len(om)), complex)
+    tf[:, band] = surface_transfer(layers, halfspace, wave, angle_deg, om[band])
+    c_rock = halfspace[2] if wave == "sv" else halfspace[1]
+    p = np.sin(np.radians(angle_deg)) / c_rock
+    q_rock = np.sqrt(1 / c_rock**2 - p**2)
+    shift = np.exp(-1j * om * (rock_depth * q_rock + p * x_from_reference))
+    return [np.fft.irfft(np.fft.rfft(v_in) * tf[k] * shift, m)[: len(t)] for k in (0, 1)]
