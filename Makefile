@@ -40,7 +40,7 @@ run: deps
 # The default scene (main/) and its 2 m companion (coarse/), then its answers with their
 # grid-convergence bands (scripts/convergence_check.py), then the plots of the main run.
 run-only: build-only
-	MPIEXEC_FLAGS="$(MPIEXEC_FLAGS)" /usr/bin/python3 scripts/convergence_check.py config/scenes/default.yaml --np $(NP) --out $(BUILD)/run/default --companion coarser --echo-main
+	MPIEXEC_FLAGS="$(MPIEXEC_FLAGS)" /usr/bin/python3 scripts/convergence_check.py config/scenes/default.yaml --np $(NP) --out $(BUILD)/run/default --echo-main
 	/usr/bin/python3 scripts/plot_results.py $(BUILD)/run/default/main --layer 30,200
 	xvfb-run -a pvpython --force-offscreen-rendering scripts/paraview_views.py $(BUILD)/run/default/main --state $(BUILD)/run/default/main/plots/view.pvsm
 	@echo "Plots and a ParaView view in $(BUILD)/run/default/main/plots/ (view.pvsm: File > Load State); volume.xmf, interface_base.xmf open in ParaView"

@@ -29,7 +29,9 @@ level from that file, `gmsh -2 FILE.geo -clscale 2^-k -setnumber N V ... -format
 main run 1, the coarse level 2, a finer level 1/2: Gmsh scales every size the file sets,
 its size fields included; a structured file can scale its counts by Mesh.MeshSizeFactor,
 tests/data/column.geo) into DIR/<level>.msh, and runs it as the level's -mesh_file; r = 2,
-the size factor's ratio (the cell counts, printed, show how the file followed it). --geo-set
+the size factor's ratio (the cell counts, printed, show how the file followed it). A scene
+whose mesh_file has its .geo beside it (config/scenes/default.msh and default.geo) takes that
+file without --geo. --geo-set
 sets the file's numbers, --geo-dim the mesh's dimension (default 2); the companion is then
 coarser unless --companion says finer.
 
@@ -459,6 +461,13 @@ def main():
     if not os.path.isfile(args.scene):
         fail(f"SCENE {args.scene}: no such file; allowed: a slipwave options file")
     options = read_options_file(args.scene)
+    if args.refine == "h" and args.geo is None and "mesh_file" in options and "mesh_box_faces" not in options:
+        # a scene whose Gmsh mesh lies beside its .geo (config/scenes/default.msh, default.geo):
+        # the levels come from that file, as with --geo
+        geo = os.path.splitext(os.path.join(os.path.dirname(os.path.abspath(args.scene)), options["mesh_file"]))[0] + ".geo"
+        if os.path.isfile(geo):
+            args.geo = os.path.relpath(geo)
+            print(f"convergence_check: the levels are meshed from {args.geo}, the .geo beside the scene's mesh_file {options['mesh_file']} (as --geo)", flush=True)
     options.update(command_line_options(extra))
     levels, main_index = levels_of(options, args)
     refined = ("mesh_file",) if args.geo else ("mesh_box_faces",) if args.refine == "h" else ("element_degree",)

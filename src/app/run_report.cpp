@@ -178,7 +178,8 @@ void WriteRunInfo(const problem::Elastodynamics &model, const problem::StableSte
   const Resolution  res  = resolvedFrequency(model);
   const std::string path = output_dir + "/run_info.json";
   if (FILE *f = std::fopen(path.c_str(), "w")) {
-    std::fprintf(f, "{\"resolved_frequency_hz\": %.6g, \"points_per_wavelength\": %g, \"slowest_region\": \"%s\", \"resolving_element_size_m\": %.6g, \"h_min_m\": %.6g,\n",
+    // The resolved frequency in full: scripts take the low-pass corner from it (scene_metrics.py).
+    std::fprintf(f, "{\"resolved_frequency_hz\": %.17g, \"points_per_wavelength\": %g, \"slowest_region\": \"%s\", \"resolving_element_size_m\": %.6g, \"h_min_m\": %.6g,\n",
                  res.frequency, nodesPerWavelengthNeeded(model.bulk.degree()), res.region.c_str(), res.size, model.bulk.minCellSize());
     if (model.bulk.degree() > 1) std::fprintf(f, " \"element_degree\": %d, \"element_size_m\": %.6g,\n", (int)model.bulk.degree(), model.bulk.minElementSize());
     if (model.hysteresis) std::fprintf(f, " \"hysteretic_regions\": [%s],\n", hystereticRegionsJson(model.materials).c_str());

@@ -7,11 +7,14 @@
 namespace slipwave::app {
 namespace {
 
-// Options that steer the run but not its physics or mesh (names without the dash).
+// Options that steer the run but not its physics or mesh (names without the dash), and
+// dm_plex_gmsh_use_regions, which the mesh builder sets itself for every Gmsh file
+// (meshing/mesh_builder.cpp): the checkpoint's run had set it, the restart compares before its
+// mesh is read.
 bool steersOnly(const std::string &name) {
   static const char *const exact[] = {"output_dir", "output_overwrite", "output_interval", "output_fields", "progress_interval", "checkpoint_interval", "energy_interval",
                                       "restart",    "ts_max_time",      "ts_max_steps",    "dry_run",       "energy_growth_limit", "help",
-                                      "options_file", "no_signal_handler", "info",        "version"};
+                                      "options_file", "no_signal_handler", "info",        "version",      "dm_plex_gmsh_use_regions"};
   for (const char *e : exact)
     if (name == e) return true;
   static const char *const prefixes[] = {"log", "malloc", "options_", "on_error", "memory_", "fp_trap", "check"};

@@ -31,7 +31,7 @@ if grep -q "warning: boundary" "$WORK/report.txt"; then echo "FAIL: a side holds
 $CHECK energy "$WORK/energy.csv" --max-error 1e-9
 # The 1D column: the scene's site less its block, interface, air and stations, one cell wide
 # (its copy lies elsewhere: the record is named from here).
-grep -vE "^(mesh_box|regions|region_|void_regions|material_block|material_soil_far|interface|station|bc_left|bc_right)" config/scenes/default.yaml > "$WORK/column.yaml"
+grep -vE "^(mesh_file|regions|material_block|material_soil_far|interface|station|bc_left|bc_right)" config/scenes/default.yaml > "$WORK/column.yaml"
 $SW -options_file "$WORK/column.yaml" -input_record config/records/el_centro_1940_ns.csv -ts_max_time 6 -mesh_box_faces 1,50 -mesh_box_lower 0,-20 -mesh_box_upper 1,30 -regions rock,soil_low,soil_mid,soil \
   -region_rock_box 0,1,-20,0 -region_soil_low_box 0,1,0,10 -region_soil_mid_box 0,1,10,20 -region_soil_box 0,1,20,30 -constrain_components y \
   -station_coordinates 0,30 -station_names surface -output_fields 0 -progress_interval 1000 -output_dir "$WORK/column" > "$WORK/column.log"

@@ -24,7 +24,8 @@
 #    side (the default of -station_side) on every rank count, and the report must say so.
 #    On 2 and 3 ranks pairs must be cut by the partition (else the test proves less).
 # The 3-rank run stops after 0.05 s of shaking: on the 2-core machine of make test its three
-# ranks share two cores (3 s took 83 s there, against 45 s on 1 rank and 30 s on 2), and the
+# ranks share two cores (3 s of the 1 m box scene took 83 s there, against 45 s on 1 rank and
+# 30 s on 2; the graded mesh since 2026-11-29 takes about twice that), and the
 # dynamic stage's rank independence (a force summed in another order) is the 2-rank run's
 # check; the 3-way partition's geostatic solve, its cut pairs, report lines and geostatic
 # stresses are checked as before.

@@ -26,8 +26,9 @@ set -eu
 opts="-options_file config/scenes/default.yaml -ts_max_time 2.8 -output_fields 0 -progress_interval 1e7"
 $MPIEXEC -n 2 $SW $opts -output_dir "$WORK/h" > "$WORK/h.log"
 $MPIEXEC -n 2 $SW $opts -interface_base_penalty_length 0.015 -output_dir "$WORK/stiff" > "$WORK/stiff.log"
-grep -vE "^(regions|region_block|region_soil_far|material_block|material_soil_far|interface|station)" config/scenes/default.yaml > "$WORK/site.yaml"
-site="-options_file $WORK/site.yaml -input_record config/records/el_centro_1940_ns.csv -regions rock,soil_low,soil_mid,soil,air -mesh_box_lower -2,-20
+grep -vE "^(mesh_file|regions|material_block|material_soil_far|interface|station)" config/scenes/default.yaml > "$WORK/site.yaml"
+site="-options_file $WORK/site.yaml -input_record config/records/el_centro_1940_ns.csv -regions rock,soil_low,soil_mid,soil,air -void_regions air -mesh_dim 2
+ -region_rock_box -2,2,-20,0 -region_soil_low_box -2,2,0,10 -region_soil_mid_box -2,2,10,20 -region_soil_box -2,2,20,30 -region_air_box -2,2,30,40 -mesh_box_lower -2,-20
  -mesh_box_upper 2,40 -station_coordinates 0,30 -station_names free_field -output_fields 0 -progress_interval 1e7"
 together $SW $site -mesh_box_faces 4,60 -output_dir "$WORK/site_h" > "$WORK/site_h.log"
 together $SW $site -mesh_box_faces 8,120 -output_dir "$WORK/site_h2" > "$WORK/site_h2.log"

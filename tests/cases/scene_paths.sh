@@ -16,14 +16,15 @@ set -eu
 W=$(cd "$WORK" && pwd)
 sw=$(cd "$(dirname "$SLIPWAVE_BINARY")" && pwd)/slipwave
 mkdir -p "$W/elsewhere/config/scenes" "$W/elsewhere/config/records" "$W/run"
-cp config/scenes/default.yaml "$W/elsewhere/config/scenes/"
+cp config/scenes/default.yaml config/scenes/default.msh "$W/elsewhere/config/scenes/"
 cp config/records/el_centro_1940_ns.csv "$W/elsewhere/config/records/"
 cp config/records/el_centro_1940_ns.csv "$W/run/mine.csv"
-dry="-mesh_box_faces 61,30 -dry_run -output_dir out -output_overwrite"
+dry="-dry_run -output_dir out -output_overwrite"
 cd "$W/run"
 "$sw" -options_file "$W/elsewhere/config/scenes/default.yaml" $dry > abs.log
 grep -q "record $W/elsewhere/config/records/el_centro_1940_ns.csv (CSV in g, 2688 samples" abs.log || { echo "FAIL: absolute scene path: record not found beside the scene"; grep record abs.log; exit 1; }
-echo "ok: absolute scene path: the record is read from $W/elsewhere/config/records"
+grep -q "mesh: $W/elsewhere/config/scenes/default.msh, " abs.log || { echo "FAIL: absolute scene path: mesh not found beside the scene"; grep mesh: abs.log; exit 1; }
+echo "ok: absolute scene path: the record is read from $W/elsewhere/config/records, the mesh from $W/elsewhere/config/scenes"
 "$sw" -options_file ../elsewhere/config/scenes/default.yaml $dry > rel.log
 grep -q "record ../elsewhere/config/records/el_centro_1940_ns.csv (CSV in g" rel.log || { echo "FAIL: relative scene path"; grep record rel.log; exit 1; }
 echo "ok: relative scene path: ../elsewhere/config/records/el_centro_1940_ns.csv"

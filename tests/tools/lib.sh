@@ -39,3 +39,11 @@ with open(sys.argv[1], "w") as f:
         f.write(f"{t:.12e},{a:.12e}\n")
 PY
 }
+
+# default_companion FILE: the default scene's 2 m companion mesh (config/scenes/default.geo at
+# Gmsh's size factor 2: 1 m -> 2 m cells, the window's 0.125 m -> 0.25 m; the level make run's
+# band runs beside the scene, scripts/convergence_check.py --geo), for the tests that check
+# what the code does with the scene (answers, paths, restarts) rather than its resolution.
+default_companion() {
+  gmsh -2 config/scenes/default.geo -clscale 2 -format msh41 -o "$1" > "$1.log"
+}

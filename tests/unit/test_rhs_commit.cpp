@@ -2,9 +2,8 @@
 // interface pairs, the free-field columns and the constant-Q memory advance into trial states
 // that the "cd" TS's commit hook accepts after each step (problem/elastodynamics.hpp). Checked
 // on two scenes of config/scenes (run from the repository root):
-//  - default.yaml, coarsened to 61 x 30 cells of 2 m (the block's box on grid lines; its record
-//    named from the repository root: only slipwave's main reads a scene's paths from the
-//    scene's folder) (interface with contact damping, constant-Q soil and block,
+//  - default.yaml (its mesh and record named from the repository root: only slipwave's main
+//    reads a scene's paths from the scene's folder) (interface with contact damping, constant-Q soil and block,
 //    gravity without the geostatic stage, so the block settles and the pairs' states change),
 //  - free_field_site.yaml (free-field columns, Rayleigh damping, incident SV wave),
 //  - a saturated box (pore pressure, drained top, P wave): the pressure update is a trial
@@ -116,7 +115,7 @@ PetscErrorCode Run(bool) {
   PetscFunctionBeginUser;
   PetscCall(time::CentralDifferenceRegister());
   // The free-field site's wave (Ricker, f0 = 2 Hz) reaches the surface after 0.3 s.
-  const std::pair<std::string, PetscReal> scenes[] = {{"-options_file config/scenes/default.yaml -mesh_box_faces 61,30 -input_record config/records/el_centro_1940_ns.csv", 0.1},
+  const std::pair<std::string, PetscReal> scenes[] = {{"-options_file config/scenes/default.yaml -mesh_file config/scenes/default.msh -input_record config/records/el_centro_1940_ns.csv", 0.1},
                                                       {"-options_file config/scenes/free_field_site.yaml", 0.5},
                                                       {"-regions soil -material_soil_rho 2000 -material_soil_vp 400 -material_soil_vs 200 -material_soil_saturated "
                                                        "-material_soil_porosity 0.4 -material_soil_hydraulic_conductivity 0.08 -mesh_box_faces 4,16 -mesh_box_upper 8,32 "
