@@ -1,6 +1,6 @@
 // The default scene's mesh (config/scenes/default.yaml; docs/default-scene.md, "The default since
 // 2026-11-29"):
-// 2D, x = -61..61 m, y = -20..30 m of ground (rock -20..0, the clay's sublayers 0..10, 10..20,
+// 2D, x = -62..62 m, y = -20..30 m of ground (rock -20..0, the clay's sublayers 0..10, 10..20,
 // 20..30) and the rigid block x = -3..3, y = 30..40 on it. Quadrilaterals of 1 m everywhere but
 // in a window of the top sublayer around the block (x = -9..9, y = 24..30), where structured
 // cells are graded geometrically from 1 m to FINE m (default 0.125) toward the block's edges
@@ -11,7 +11,7 @@
 // companion scripts/convergence_check.py --geo runs beside it (2 m, graded to 2 FINE m).
 // Made at twice the size and split in four (Mesh.SubdivisionAlgorithm 1), so that the
 // unstructured part holds no triangle. Physical groups: surfaces rock, soil_low, soil_mid,
-// soil (the top sublayer within 17 m of the block's centre), soil_far (the rest of it), block;
+// soil (the top sublayer within 16 m of the block's centre), soil_far (the rest of it), block;
 // curves bottom, left, right. config/scenes/default.msh is this file's output (gmsh -2
 // default.geo -format msh41 -o default.msh; tests/cases/default_mesh.sh checks it); another
 // finest size: gmsh ... -setnumber fine 0.1.
@@ -50,11 +50,22 @@ EndFor
 q6 = 2 / (lo6 + hi6); // ratios along a line run from its coarse end to its fine end
 q3 = 2 / (lo3 + hi3);
 nb = Max(1, Round(5 / f)); // the block's height, 10 m (rigid: its cells carry its mass only)
-Point(1) = {-61, -20, 0, lc}; Point(2) = {61, -20, 0, lc};
-Point(3) = {-61, 0, 0, lc}; Point(4) = {61, 0, 0, lc};
-Point(5) = {-61, 10, 0, lc}; Point(6) = {61, 10, 0, lc};
-Point(7) = {-61, 20, 0, lc}; Point(8) = {-17, 20, 0, lc}; Point(9) = {17, 20, 0, lc}; Point(10) = {61, 20, 0, lc};
-Point(11) = {-61, 30, 0, lc}; Point(12) = {-17, 30, 0, lc}; Point(13) = {17, 30, 0, lc}; Point(14) = {61, 30, 0, lc};
+// Outside the top sublayer's middle, structured cells of 2 f m (1 f m once split): nf across
+// x = -62..-16 and 16..62, nr across -16..16 (the region soil's width), n20 and n10 over the
+// rock's and the sublayers' depths, n8 along the surface from x = +-16 to the window. Only the
+// ring of region soil around the window is unstructured (its boundary counts sum to an even
+// number at every factor, so that it can be all quadrilaterals): 16 % fewer cells than an
+// unstructured far field, and the structured cells share one element matrix.
+nf = Max(1, Round(46 / (2 * f)));
+nr = Max(1, Round(32 / (2 * f)));
+n20 = Max(1, Round(20 / (2 * f)));
+n10 = Max(1, Round(10 / (2 * f)));
+n8 = Max(1, Round(7 / (2 * f)));
+Point(1) = {-62, -20, 0, lc}; Point(2) = {62, -20, 0, lc};
+Point(3) = {-62, 0, 0, lc}; Point(4) = {62, 0, 0, lc};
+Point(5) = {-62, 10, 0, lc}; Point(6) = {62, 10, 0, lc};
+Point(7) = {-62, 20, 0, lc}; Point(8) = {-16, 20, 0, lc}; Point(9) = {16, 20, 0, lc}; Point(10) = {62, 20, 0, lc};
+Point(11) = {-62, 30, 0, lc}; Point(12) = {-16, 30, 0, lc}; Point(13) = {16, 30, 0, lc}; Point(14) = {62, 30, 0, lc};
 Point(15) = {-3, 40, 0, lc}; Point(16) = {0, 40, 0, lc}; Point(17) = {3, 40, 0, lc};
 xs[] = {-9, -3, 0, 3, 9};
 For i In {0 : 4}
@@ -85,6 +96,12 @@ Line(70) = {31, 15}; Line(71) = {32, 16}; Line(72) = {33, 17};
 Transfinite Curve{70, 71, 72} = nb + 1;
 Line(73) = {15, 16}; Transfinite Curve{73} = n3 + 1 Using Progression 1 / q3;
 Line(74) = {16, 17}; Transfinite Curve{74} = n3 + 1 Using Progression q3;
+Transfinite Curve{1, 2, 3} = 2 * nf + nr + 1;
+Transfinite Curve{4, 6, 17, 20} = nf + 1;
+Transfinite Curve{5} = nr + 1;
+Transfinite Curve{7, 11} = n20 + 1;
+Transfinite Curve{8, 9, 10, 12, 13, 14, 15, 16} = n10 + 1;
+Transfinite Curve{18, 19} = n8 + 1;
 Curve Loop(1) = {1, 11, -2, -7}; Plane Surface(1) = {1};             // rock
 Curve Loop(2) = {2, 12, -3, -8}; Plane Surface(2) = {2};             // soil_low
 Curve Loop(3) = {3, 13, -6, -5, -4, -9}; Plane Surface(3) = {3};     // soil_mid
@@ -97,6 +114,9 @@ For i In {0 : 3}
 EndFor
 Curve Loop(11) = {51, 71, -73, -70}; Plane Surface(11) = {11}; Transfinite Surface{11};
 Curve Loop(12) = {52, 72, -74, -71}; Plane Surface(12) = {12}; Transfinite Surface{12};
+Transfinite Surface{1}; Transfinite Surface{2};
+Transfinite Surface{3} = {5, 6, 10, 7}; // soil_mid: its top is three lines
+Transfinite Surface{4}; Transfinite Surface{5};
 Recombine Surface{1 : 12};
 Physical Surface("rock") = {1};
 Physical Surface("soil_low") = {2};

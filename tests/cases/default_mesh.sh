@@ -10,8 +10,8 @@
 #     (Gmsh places the transfinite nodes to about 3e-8 m here).
 #  4. Away from the window (cell centres outside x = -9..9, y = 24..30) the median edge is 1 m
 #     within 10 % at f = 1 (the far field's resolution, 23-25 Hz), and twice it, within 10 %,
-#     at f = 2 (Gmsh's unstructured cells follow the factor; their median runs 5-10 % under
-#     the nominal size).
+#     at f = 2 (the structured far field's counts are rounded: 1.94 m at f = 2, where the
+#     46 m on each side take 12 cells of 4 m before the split).
 #  5. Its physical groups are the scene's regions (regions: in default.yaml) and the sides
 #     bottom, left, right of its boundary conditions.
 set -eu

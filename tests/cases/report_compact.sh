@@ -17,7 +17,7 @@ n=$(sed -n '/^slipwave: explicit/,/^dry run/p' "$WORK/compact.log" | grep -vc "^
 regions=$(grep -c "^  region " "$WORK/compact.log")
 echo "compact report: $n lines (bound 10 + $regions regions); verbose: $(grep -vc '^dry run' "$WORK/verbose.log")"
 [ "$n" -le $((10 + regions)) ]
-for line in "^  mesh: .*default.msh, 8408 cells" "^  region rock " "^  region soil " "^  region block " "^  resolution: " "^  input: sv wave" \
+for line in "^  mesh: .*default.msh, 7048 cells" "^  region rock " "^  region soil " "^  region block " "^  resolution: " "^  input: sv wave" \
             "^  interface base between soil" "^  stable step: " "^  time step " "^  output: .*6 stations every" "estimated run time"; do
   grep -q "$line" "$WORK/compact.log" || { echo "compact report lacks /$line/"; exit 1; }
 done
