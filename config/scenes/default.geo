@@ -11,7 +11,7 @@
 // companion scripts/convergence_check.py --geo runs beside it (2 m, graded to 2 FINE m).
 // Made at twice the size and split in four (Mesh.SubdivisionAlgorithm 1), so that the
 // unstructured part holds no triangle. Physical groups: surfaces rock, soil_low, soil_mid,
-// soil (the top sublayer within 16 m of the block's centre), soil_far (the rest of it), block;
+// soil (the window), soil_far (the rest of the top sublayer), block;
 // curves bottom, left, right. config/scenes/default.msh is this file's output (gmsh -2
 // default.geo -format msh41 -o default.msh; tests/cases/default_mesh.sh checks it); another
 // finest size: gmsh ... -setnumber fine 0.1.
@@ -51,9 +51,9 @@ q6 = 2 / (lo6 + hi6); // ratios along a line run from its coarse end to its fine
 q3 = 2 / (lo3 + hi3);
 nb = Max(1, Round(5 / f)); // the block's height, 10 m (rigid: its cells carry its mass only)
 // Outside the top sublayer's middle, structured cells of 2 f m (1 f m once split): nf across
-// x = -62..-16 and 16..62, nr across -16..16 (the region soil's width), n20 and n10 over the
-// rock's and the sublayers' depths, n8 along the surface from x = +-16 to the window. Only the
-// ring of region soil around the window is unstructured (its boundary counts sum to an even
+// x = -62..-16 and 16..62, nr across -16..16, n20 and n10 over the rock's and the sublayers'
+// depths, n8 along the surface from x = +-16 to the window. Only the ring x = -16..16 around
+// the window is unstructured (its boundary counts sum to an even
 // number at every factor, so that it can be all quadrilaterals): 16 % fewer cells than an
 // unstructured far field, and the structured cells share one element matrix.
 nf = Max(1, Round(46 / (2 * f)));
@@ -121,8 +121,8 @@ Recombine Surface{1 : 12};
 Physical Surface("rock") = {1};
 Physical Surface("soil_low") = {2};
 Physical Surface("soil_mid") = {3};
-Physical Surface("soil_far") = {4, 5};
-Physical Surface("soil") = {6, 7, 8, 9, 10};
+Physical Surface("soil_far") = {4, 5, 6}; // the far field and the ring around the window
+Physical Surface("soil") = {7, 8, 9, 10}; // the window
 Physical Surface("block") = {11, 12};
 Physical Curve("bottom") = {1};
 Physical Curve("left") = {7, 8, 9, 10};
