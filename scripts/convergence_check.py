@@ -29,11 +29,10 @@ level from that file, `gmsh -2 FILE.geo -clscale 2^-k -setnumber N V ... -format
 main run 1, the coarse level 2, a finer level 1/2: Gmsh scales every size the file sets,
 its size fields included; a structured file can scale its counts by Mesh.MeshSizeFactor,
 tests/data/column.geo) into DIR/<level>.msh, and runs it as the level's -mesh_file; r = 2,
-the size factor's ratio (the cell counts, printed, show how the file followed it). A scene
-whose mesh_file has its .geo beside it (config/scenes/default.msh and default.geo) takes that
-file without --geo. --geo-set
+the size factor's ratio (the cell counts, printed, show how the file followed it). --geo-set
 sets the file's numbers, --geo-dim the mesh's dimension (default 2); the companion is then
-coarser unless --companion says finer.
+coarser unless --companion says finer. A scene whose mesh_file has its .geo beside it
+(config/scenes/default.msh and default.geo) takes that file without --geo.
 
 Answers. scripts/scene_metrics.py on every level. The low-passed peaks are all taken at the
 coarsest level's resolved frequency, so that the levels low-pass alike and their peaks are
