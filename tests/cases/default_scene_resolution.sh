@@ -28,7 +28,8 @@
 #     docs/convergence-study.md, "Which limit"; measured here 0.0-1.1 %), and the free
 #     field's the same to 1 % (0.0-0.5 %: its cells, 34 m from the window, are the same at both
 #     levels; what reaches it from the block is the scattered field, about 3 % of its motion by
-#     the L2 check of default_scene.sh (2.7 %), so a 5 % change there is 0.15 % of it). The tilt after shaking of a 2.8 s run is the mean of
+#     the L2 check of default_scene.sh (2.7 %), so a 5 % change there is 0.15 % of it).
+#     The tilt after shaking of a 2.8 s run is the mean of
 #     a block still swinging (-0.10 mrad against a half range of 4.1 mrad): its change is judged
 #     against the swing, within 5 % of it (measured 0.2 %; as a fraction of itself 7.5 %; the
 #     full 15 s tilt, 0.44 mrad after the strong motion, is make run's answer, with its band).
